@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Install the build and test dependencies of lfem on Debian 12 (bookworm).
+#
+# Idempotent and non-interactive: only packages that are not installed yet are installed, and
+# `apt-get update` runs only when something is missing. Runs apt-get directly as root, through
+# sudo otherwise. Prints one summary line on success; on failure, apt-get's output.
+#
+# To add a dependency, add its Debian package name to PACKAGES below (nothing else to change).
+set -euo pipefail
+
+PACKAGES=(
+  # C/C++ toolchain and build system
+  g++
+  cmake
+  make
+  pkg-config
+  # libraries the library itself builds against (linked privately into liblfem.so)
+  libeigen3-dev
+  libccd-dev
+  # test framework
+  libgtest-dev
+)
+
+export DEBIAN_FRONTEND=noninteractive
+me="install-deps"
+
+if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+  echo "$me: error: dpkg-query/apt-get not found; this script supports Debian 12 only." >&2
+  exit 1
+fi
+
+is_installed() {
+  local status
+  status=$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null) || return 1
+  # "<want> <flag> <status>": the status word must be exactly "installed"
+  # (not "half-installed", "not-installed", "config-files", ...).
+  [[ "$status" == *" installed" ]]
+}
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  is_installed "$pkg" || missing+=("$pkg")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "$me: all ${#PACKAGES[@]} packages already installed"
+  exit 0
+fi
+
+# Root runs apt-get directly; anyone else needs sudo (passwordless in CI; a password prompt is
+# only allowed when a terminal is attached).
+if [[ $(id -u) -eq 0 ]]; then
+  as_root=()
+elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+  as_root=(sudo -n DEBIAN_FRONTEND=noninteractive)
+elif command -v sudo >/dev/null 2>&1 && [[ -t 0 ]]; then
+  as_root=(sudo DEBIAN_FRONTEND=noninteractive)
+else
+  echo "$me: error: missing packages: ${missing[*]}" >&2
+  echo "$me: error: installing them needs root or sudo (passwordless when not on a terminal);" \
+       "run this script as root, or install them yourself:" >&2
+  echo "  apt-get update && apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi
+
+log=$(mktemp "${TMPDIR:-/tmp}/install-deps.XXXXXX")
+trap 'rm -f "$log"' EXIT
+
+run() {
+  if ! "${as_root[@]}" "$@" >>"$log" 2>&1; then
+    cat "$log" >&2
+    echo "$me: error: '$*' failed (output above)" >&2
+    exit 1
+  fi
+}
+
+# --no-install-recommends keeps fresh images lean; every package listed above builds and runs
+# without its recommends (list a recommended package explicitly if it is ever needed).
+run apt-get update -q
+run apt-get install -y -q --no-install-recommends "${missing[@]}"
+
+still_missing=()
+for pkg in "${missing[@]}"; do
+  is_installed "$pkg" || still_missing+=("$pkg")
+done
+if [[ ${#still_missing[@]} -ne 0 ]]; then
+  cat "$log" >&2
+  echo "$me: error: still not installed after apt-get: ${still_missing[*]}" >&2
+  exit 1
+fi
+
+echo "$me: installed ${#missing[@]} of ${#PACKAGES[@]} packages: ${missing[*]}"

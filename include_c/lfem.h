@@ -1,0 +1,362 @@
+/*
+ * lfem.h - the one public header of lfem: deformable bodies that collide, simulated by an
+ * explicit local finite element method (no global matrix anywhere) with contact by forward
+ * increment Lagrange multipliers.
+ *
+ * Plain C99; usable from C++ (everything is inside extern "C"). No C++ type, exception or STL
+ * object crosses this boundary.
+ *
+ * Conventions used by every function below
+ * - Units are SI throughout: metres, seconds, kilograms, newtons, pascals, joules, radians.
+ * - Every call that can fail returns an lfem_status. On failure nothing changes: the world, the
+ *   body and every output argument are left exactly as they were, and lfem_last_error() holds a
+ *   message for the calling thread.
+ * - Pointers are non-null unless the comment says "nullable". A null pointer where one is
+ *   required is answered with LFEM_INVALID_ARGUMENT, never a crash.
+ * - Arrays of vectors are flat: node i's position is positions[3*i+0..2]. Indices are 0-based.
+ * - Ownership: lfem never keeps a pointer the caller passed in (definitions and arrays are
+ *   copied). Objects it creates (world, mesh, series) are owned by the caller until the matching
+ *   *_destroy call. Returned strings are owned by lfem and must not be freed.
+ * - Thread safety: distinct worlds (and meshes and series) may be used from distinct threads at
+ *   the same time. One world must not be used by two threads at once (no internal locking).
+ *   lfem_last_error() is per thread. The *_default, lfem_status_string and lfem_version*
+ *   functions may be called from any thread at any time.
+ */
+#ifndef LFEM_H
+#define LFEM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#  if defined(LFEM_BUILDING_LIBRARY)
+#    define LFEM_API __declspec(dllexport)
+#  else
+#    define LFEM_API __declspec(dllimport)
+#  endif
+#else
+#  define LFEM_API __attribute__((visibility("default")))
+#endif
+
+#define LFEM_VERSION_MAJOR 0
+#define LFEM_VERSION_MINOR 1
+#define LFEM_VERSION_PATCH 0
+
+/* ---------------------------------------------------------------------------------------- */
+/* Status and errors                                                                          */
+/* ---------------------------------------------------------------------------------------- */
+
+typedef enum lfem_status {
+    LFEM_OK = 0,
+    LFEM_INVALID_ARGUMENT = 1, /* a null pointer, a NaN, a number out of its range */
+    LFEM_INVALID_MESH = 2,     /* bad indices, inverted or zero-volume tets, unused nodes */
+    LFEM_INVALID_HANDLE = 3,   /* a stale, foreign or null body handle */
+    LFEM_BUFFER_TOO_SMALL = 4, /* the caller's capacity is below what the answer needs */
+    LFEM_UNSTABLE = 5,         /* the state blew up; the world was rolled back */
+    LFEM_IO_ERROR = 6,         /* a file could not be read or written, or is malformed */
+    LFEM_OUT_OF_MEMORY = 7,
+    LFEM_INTERNAL_ERROR = 8,   /* a bug in lfem: please report it with the message */
+    LFEM_STATUS_FORCE32 = 0x7fffffff
+} lfem_status;
+
+/* A fixed English name and meaning of a status, e.g. "LFEM_INVALID_MESH: invalid mesh".
+ * Never NULL; unknown values give "unknown status". */
+LFEM_API const char* lfem_status_string(lfem_status status);
+
+/* The message of the most recent failed call made on this thread, e.g.
+ * "lfem_body_add_mesh: tet 17 is inverted (volume -2.1e-09 m^3)". Never NULL ("" before any
+ * failure). Valid until the next lfem call on this thread. */
+LFEM_API const char* lfem_last_error(void);
+
+/* (major << 16) | (minor << 8) | patch of the library actually loaded. Compare with
+ * LFEM_VERSION_* to detect a header/library mismatch. */
+LFEM_API uint32_t lfem_version(void);
+/* "major.minor.patch". Never NULL. */
+LFEM_API const char* lfem_version_string(void);
+
+/* ---------------------------------------------------------------------------------------- */
+/* World                                                                                      */
+/* ---------------------------------------------------------------------------------------- */
+
+typedef struct lfem_world lfem_world; /* opaque */
+
+typedef struct lfem_world_def {
+    double gravity[3];          /* m/s^2, default (0, 0, -9.81) */
+    double time_step;           /* s; 0 (default) = automatic: step_safety * stable limit.
+                                   > 0 = fixed sub-step; refused by lfem_world_step when above
+                                   the stable limit unless allow_unstable_step is set */
+    double step_safety;         /* fraction of the stable limit used by the automatic step,
+                                   in (0, 1); default 0.9 */
+    uint32_t contact_iterations; /* cap on contact solver sweeps per step, default 200 */
+    double contact_tolerance;   /* relative stopping tolerance of the contact solve, default 1e-3 */
+    uint32_t max_substeps;      /* a call of lfem_world_step needing more sub-steps than this is
+                                   refused up front, default 1000000 */
+    uint8_t allow_unstable_step; /* 1 = skip the up-front stability check of a fixed time_step
+                                    (for experiments; instability is still caught), default 0 */
+    uint8_t padding[3];
+    uint32_t internal_value;    /* set by lfem_world_def_default; do not change */
+} lfem_world_def;
+
+/* A definition filled with the defaults above. Always start from it. */
+LFEM_API lfem_world_def lfem_world_def_default(void);
+
+/* Create an empty world. *out receives the world (unchanged on failure). */
+LFEM_API lfem_status lfem_world_create(const lfem_world_def* def, lfem_world** out);
+
+/* Destroy a world and everything in it. Nullable (NULL is a no-op). */
+LFEM_API void lfem_world_destroy(lfem_world* world);
+
+/* Advance the world by dt seconds (dt > 0, finite). The interval is split into equal sub-steps
+ * no larger than the allowed step (automatic or fixed). If the state blows up, the call returns
+ * LFEM_UNSTABLE and the world is rolled back, bitwise, to its state before the call. */
+LFEM_API lfem_status lfem_world_step(lfem_world* world, double dt);
+
+/* Change gravity (m/s^2) or the fixed time step (s, 0 = automatic) of an existing world. */
+LFEM_API lfem_status lfem_world_set_gravity(lfem_world* world, const double gravity[3]);
+LFEM_API lfem_status lfem_world_set_time_step(lfem_world* world, double time_step);
+
+/* The stable limit of the central difference step, in seconds: 2/omega_max of the stiffest
+ * deformable body (power iteration on the element-by-element operator, capped by a proven
+ * Gershgorin bound). Infinity (HUGE_VAL) when the world has no deformable body. */
+LFEM_API lfem_status lfem_world_get_stable_step(const lfem_world* world, double* out);
+
+typedef struct lfem_world_stats {
+    double time;              /* s, simulated time */
+    uint64_t steps;           /* sub-steps taken since creation */
+    double step_size;         /* s, size of the last sub-step (0 before the first) */
+    double stable_step;       /* s, the stable limit (see lfem_world_get_stable_step) */
+    uint32_t substeps_last_call; /* sub-steps taken by the last lfem_world_step */
+    uint32_t body_count;      /* live bodies of every type */
+    /* Energies and momenta of the moving (deformable) bodies; static and kinematic bodies
+     * carry none. Velocities are the synchronized ones (lfem_body_get_velocities). */
+    double kinetic_energy;    /* J */
+    double strain_energy;     /* J */
+    double external_work;     /* J, work done since creation by gravity, node forces and
+                                 prescribed node velocities */
+    double dissipated_energy; /* J, removed since creation by damping (and contact) */
+    double energy_error;      /* J, kinetic + strain + dissipated - external_work - initial
+                                 energy: a run-time error indicator, ideally 0 */
+    double linear_momentum[3];  /* kg m/s */
+    double angular_momentum[3]; /* kg m^2/s, about the world origin */
+    uint32_t contact_count;   /* active contacts after the last step */
+    uint32_t solver_iterations; /* contact solver sweeps in the last sub-step */
+    double solver_residual;   /* m, largest remaining constraint violation, last sub-step */
+    double max_penetration;   /* m, largest penetration after the last sub-step */
+    double rotation_drift;    /* rad, largest angle between the global rotation integrated by
+                                 eq. (2) and the one re-fitted to the nodes, last sub-step
+                                 ("paper" model only, else 0) */
+} lfem_world_stats;
+
+LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_stats* out);
+
+/* ---------------------------------------------------------------------------------------- */
+/* Bodies                                                                                     */
+/* ---------------------------------------------------------------------------------------- */
+
+/* A body handle: a value, not a pointer. {0, 0} is the null handle. A handle of a destroyed
+ * body (stale) or of another world (foreign) is answered with LFEM_INVALID_HANDLE. */
+typedef struct lfem_body {
+    uint32_t index;
+    uint32_t generation;
+} lfem_body;
+
+typedef enum lfem_body_type {
+    LFEM_BODY_DEFORMABLE = 0, /* finite elements, moves and deforms */
+    LFEM_BODY_STATIC = 1,     /* never moves (a floor, a wall) */
+    LFEM_BODY_KINEMATIC = 2,  /* moves rigidly with a prescribed velocity, unaffected by forces */
+    LFEM_BODY_TYPE_FORCE32 = 0x7fffffff
+} lfem_body_type;
+
+typedef enum lfem_model {
+    LFEM_MODEL_PAPER = 0,        /* floating frame: one global rotation per body integrated by
+                                    Lagrangian dynamics (eq. 2) and re-fitted to the nodes;
+                                    linear elasticity in that frame. Moderate local rotations. */
+    LFEM_MODEL_COROTATIONAL = 1, /* one rotation per tet: large local rotations (bending) */
+    LFEM_MODEL_NEO_HOOKEAN = 2,  /* stable neo-Hookean hyperelasticity: large strains */
+    LFEM_MODEL_LINEAR = 3,       /* small-strain linear elasticity, no rotation at all: the
+                                    cheapest, only right for tiny rotations (waves, impacts) */
+    LFEM_MODEL_FORCE32 = 0x7fffffff
+} lfem_model;
+
+typedef struct lfem_body_def {
+    lfem_body_type type;      /* default LFEM_BODY_DEFORMABLE */
+    lfem_model model;         /* default LFEM_MODEL_PAPER */
+    double young_modulus;     /* Pa, > 0, default 1e6 */
+    double poisson_ratio;     /* in [0, 0.5), default 0.3 */
+    double density;           /* kg/m^3, > 0, default 1000 */
+    double damping;           /* 1/s, mass-proportional damping alpha (force -alpha m v), >= 0,
+                                 default 0 */
+    double friction;          /* Coulomb coefficient mu = tan(friction angle), >= 0, default 0.5 */
+    double linear_velocity[3];  /* m/s, initial velocity given to the nodes of each added mesh
+                                   (kinematic bodies: their constant velocity) */
+    double angular_velocity[3]; /* rad/s, initial spin about the centre of mass of the body as
+                                   it is when a mesh is added */
+    void* user_data;          /* nullable, returned by lfem_body_get_user_data */
+    uint32_t internal_value;  /* set by lfem_body_def_default; do not change */
+    uint32_t padding;
+} lfem_body_def;
+
+LFEM_API lfem_body_def lfem_body_def_default(void);
+
+/* Create a body without nodes; give it a mesh with lfem_body_add_mesh. */
+LFEM_API lfem_status lfem_body_create(lfem_world* world, const lfem_body_def* def,
+                                      lfem_body* out);
+
+/* Destroy a body; its handle (and copies of it) become stale. */
+LFEM_API lfem_status lfem_body_destroy(lfem_world* world, lfem_body body);
+
+/* 1 if the handle names a live body of this world, else 0. world is nullable (gives 0). */
+LFEM_API int lfem_body_is_valid(const lfem_world* world, lfem_body body);
+
+/* Add a tetrahedral mesh to a body. positions: 3*node_count doubles (m); tets: 4*tet_count
+ * node indices into this mesh (0-based), each tet with positive volume
+ * (det[x1-x0, x2-x0, x3-x0] > 0). Every node must belong to a tet, no tet may repeat a node,
+ * and no triangle may be shared by more than two tets. The boundary triangles are extracted
+ * automatically. A body may receive several meshes; node and tet indices of a later mesh
+ * continue after the earlier ones. The body def's velocities are given to the new nodes. */
+LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body,
+                                        const double* positions, uint32_t node_count,
+                                        const uint32_t* tets, uint32_t tet_count);
+
+LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body body,
+                                              uint32_t* out);
+LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body,
+                                             uint32_t* out);
+LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body,
+                                             void** out);
+
+/* Copy the current node positions (m) into out[3*node_capacity]. LFEM_BUFFER_TOO_SMALL when
+ * node_capacity < node count (nothing written). */
+LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body body,
+                                             double* out, uint32_t node_capacity);
+
+/* Copy the node velocities (m/s) at the current time into out[3*node_capacity]. These are
+ * the synchronized central-difference velocities (the mid-step velocity advanced by half a
+ * step of the current acceleration). */
+LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body body,
+                                              double* out, uint32_t node_capacity);
+
+/* Overwrite the velocities (m/s, 3 per node, node_count must equal the body's). */
+LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
+                                              const double* velocities, uint32_t node_count);
+
+/* Boundary triangles (3 node indices each, counter-clockwise seen from outside). */
+LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* world,
+                                                           lfem_body body, uint32_t* out);
+LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, lfem_body body,
+                                                      uint32_t* out,
+                                                      uint32_t triangle_capacity);
+
+/* Von Mises equivalent of the Cauchy stress in each tet (Pa), into out[tet_capacity]. */
+LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
+                                                    double* out, uint32_t tet_capacity);
+
+/* The body's global rotation (row-major 3x3) of the "paper" model: the rotation of the
+ * floating frame, re-fitted to the nodes. Identity for the other models. */
+LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body body,
+                                            double out[9]);
+
+/* The nodes whose current position lies inside the axis-aligned box [lo, hi] (m). *count is
+ * always the total found; LFEM_BUFFER_TOO_SMALL when it exceeds capacity (out untouched).
+ * out is nullable when capacity is 0 (to ask for the count). */
+LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_body body,
+                                                 const double lo[3], const double hi[3],
+                                                 uint32_t* out, uint32_t capacity,
+                                                 uint32_t* count);
+
+/* Fix nodes in place (velocity 0 from now on). Indices must be in range and distinct. */
+LFEM_API lfem_status lfem_body_fix_nodes(lfem_world* world, lfem_body body,
+                                         const uint32_t* nodes, uint32_t count);
+/* Prescribe a constant velocity (m/s) for nodes: they move at it, whatever the forces. */
+LFEM_API lfem_status lfem_body_prescribe_node_velocity(lfem_world* world, lfem_body body,
+                                                       const uint32_t* nodes, uint32_t count,
+                                                       const double velocity[3]);
+/* Give fixed or prescribed nodes back to the dynamics. */
+LFEM_API lfem_status lfem_body_release_nodes(lfem_world* world, lfem_body body,
+                                             const uint32_t* nodes, uint32_t count);
+
+/* Set a constant external force (N, 3 per listed node) that acts on every following step
+ * until changed; it replaces any earlier force on those nodes. Added to gravity. */
+LFEM_API lfem_status lfem_body_set_node_forces(lfem_world* world, lfem_body body,
+                                               const uint32_t* nodes, uint32_t count,
+                                               const double* forces);
+/* Remove every external node force of the body. */
+LFEM_API lfem_status lfem_body_clear_node_forces(lfem_world* world, lfem_body body);
+
+/* The velocity of a kinematic body: linear (m/s) of its centre and angular (rad/s) about it. */
+LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_body body,
+                                                      const double linear[3],
+                                                      const double angular[3]);
+
+/* ---------------------------------------------------------------------------------------- */
+/* Meshes: builders and Gmsh import                                                           */
+/* ---------------------------------------------------------------------------------------- */
+
+typedef struct lfem_mesh lfem_mesh; /* opaque: node positions and tets, owned by the caller */
+
+/* A box [0,size[0]] x [0,size[1]] x [0,size[2]] (m) of cells[0]*cells[1]*cells[2] hexahedra,
+ * each split into 6 tets (all cells >= 1). */
+LFEM_API lfem_status lfem_mesh_create_box(const double size[3], const uint32_t cells[3],
+                                          lfem_mesh** out);
+/* A solid cylinder along +z from z = 0 to height, radius (m); segments around (>= 3),
+ * rings across the radius (>= 1), layers along the height (>= 1). */
+LFEM_API lfem_status lfem_mesh_create_cylinder(double radius, double height, uint32_t segments,
+                                               uint32_t rings, uint32_t layers,
+                                               lfem_mesh** out);
+/* A hollow cup with a bottom, open at the top: outer radius, height (m, along +z from z = 0),
+ * wall thickness and bottom thickness (m); segments around (>= 3), layers along the wall
+ * (>= 1). */
+LFEM_API lfem_status lfem_mesh_create_cup(double outer_radius, double height, double wall,
+                                          double bottom, uint32_t segments, uint32_t layers,
+                                          lfem_mesh** out);
+/* A hammer: a square handle of side handle_width along +z from z = 0 to handle_length, and a
+ * head (head_length along x, head_width in y and z) centred on the handle's top end, one
+ * conforming mesh of cells of about cell_size (m). */
+LFEM_API lfem_status lfem_mesh_create_hammer(double handle_length, double handle_width,
+                                             double head_length, double head_width,
+                                             double cell_size, lfem_mesh** out);
+
+/* Read the tetrahedra of a Gmsh .msh file (ASCII format 2.2 or 4.1); other cell types are
+ * skipped, unused nodes dropped, negatively oriented tets reordered. A missing or malformed
+ * file gives LFEM_IO_ERROR with the line number in the message. */
+LFEM_API lfem_status lfem_mesh_load_gmsh(const char* path, lfem_mesh** out);
+
+/* Nullable. */
+LFEM_API void lfem_mesh_destroy(lfem_mesh* mesh);
+
+/* Read-only views, valid until the mesh is changed or destroyed. NULL / 0 for a NULL mesh. */
+LFEM_API uint32_t lfem_mesh_get_node_count(const lfem_mesh* mesh);
+LFEM_API uint32_t lfem_mesh_get_tet_count(const lfem_mesh* mesh);
+LFEM_API const double* lfem_mesh_get_positions(const lfem_mesh* mesh);
+LFEM_API const uint32_t* lfem_mesh_get_tets(const lfem_mesh* mesh);
+
+/* Move a mesh by offset (m), or rotate it about the origin by angle (rad) around axis. */
+LFEM_API lfem_status lfem_mesh_translate(lfem_mesh* mesh, const double offset[3]);
+LFEM_API lfem_status lfem_mesh_rotate(lfem_mesh* mesh, const double axis[3], double angle);
+
+/* ---------------------------------------------------------------------------------------- */
+/* Output: a VTK time series that ParaView opens                                              */
+/* ---------------------------------------------------------------------------------------- */
+
+typedef struct lfem_vtk_series lfem_vtk_series; /* opaque */
+
+/* Start a series: pvd_path names the .pvd collection file; frames go beside it as
+ * <stem>_<frame>.vtu. Nothing is written yet: a folder that does not exist or cannot be written
+ * is reported (LFEM_IO_ERROR) by the first lfem_vtk_series_write_frame. */
+LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_series** out);
+/* Write every body of the world (positions, velocities, von Mises stress, body index) as the
+ * next frame at the world's time, and rewrite the .pvd so it is valid after every frame. */
+LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series,
+                                                 const lfem_world* world);
+/* Nullable. */
+LFEM_API void lfem_vtk_series_destroy(lfem_vtk_series* series);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* LFEM_H */

@@ -1,0 +1,321 @@
+// C shim of bodies: every pointer, number, index and handle is checked here before
+// lfem::World sees it; nothing changes unless every check passed.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "api/handles.h"
+#include "fem/internal_forces.h"
+#include "fem/tet_element.h"
+
+using namespace lfem;
+using namespace lfem::api;
+
+namespace {
+
+void check_body_def(const lfem_body_def& d) {
+    require(d.internal_value == body_def_cookie,
+            "def was not initialised by lfem_body_def_default()");
+    require(d.type == LFEM_BODY_DEFORMABLE || d.type == LFEM_BODY_STATIC ||
+                d.type == LFEM_BODY_KINEMATIC,
+            "def->type " + std::to_string(int(d.type)) + " is not a body type");
+    require(d.model == LFEM_MODEL_PAPER || d.model == LFEM_MODEL_COROTATIONAL ||
+                d.model == LFEM_MODEL_NEO_HOOKEAN || d.model == LFEM_MODEL_LINEAR,
+            "def->model " + std::to_string(int(d.model)) + " is not a material model");
+    require(std::isfinite(d.young_modulus) && d.young_modulus > 0.0,
+            "def->young_modulus must be finite and > 0 Pa");
+    require(std::isfinite(d.poisson_ratio) && d.poisson_ratio > -1.0 && d.poisson_ratio < 0.5,
+            "def->poisson_ratio must lie in (-1, 0.5)");
+    require(std::isfinite(d.density) && d.density > 0.0, "def->density must be finite and > 0 kg/m^3");
+    require(std::isfinite(d.damping) && d.damping >= 0.0, "def->damping must be finite and >= 0 1/s");
+    require(std::isfinite(d.friction) && d.friction >= 0.0, "def->friction must be finite and >= 0");
+    require_finite(d.linear_velocity, 3, "def->linear_velocity");
+    require_finite(d.angular_velocity, 3, "def->angular_velocity");
+}
+
+void require_capacity(uint32_t capacity, uint32_t needed, const char* what) {
+    if (capacity < needed)
+        throw Error(LFEM_BUFFER_TOO_SMALL, std::string(what) + " capacity " + std::to_string(capacity) +
+                                               " is below the " + std::to_string(needed) + " needed");
+}
+
+// A list of node indices: in range and without repeats (O(count + nodes)).
+void check_node_list(const Body& b, const uint32_t* nodes, uint32_t count) {
+    require(count == 0 || nodes != nullptr, "nodes is NULL");
+    std::vector<uint8_t> seen(b.ref.node_count(), 0);
+    for (uint32_t i = 0; i < count; ++i) {
+        require(nodes[i] < b.ref.node_count(), "nodes[" + std::to_string(i) + "] = " +
+                                                   std::to_string(nodes[i]) + " is out of range (" +
+                                                   std::to_string(b.ref.node_count()) + " nodes)");
+        require(!seen[nodes[i]], "node " + std::to_string(nodes[i]) + " is listed twice");
+        seen[nodes[i]] = 1;
+    }
+}
+
+void require_deformable(const Body& b, const char* what) {
+    require(b.is_deformable(), std::string(what) + " needs a deformable body");
+}
+
+}  // namespace
+
+extern "C" {
+
+LFEM_API lfem_body_def lfem_body_def_default(void) {
+    lfem_body_def d{};
+    d.type = LFEM_BODY_DEFORMABLE;
+    d.model = LFEM_MODEL_PAPER;
+    d.young_modulus = 1e6;
+    d.poisson_ratio = 0.3;
+    d.density = 1000.0;
+    d.damping = 0.0;
+    d.friction = 0.5;
+    d.user_data = nullptr;
+    d.internal_value = body_def_cookie;
+    return d;
+}
+
+LFEM_API lfem_status lfem_body_create(lfem_world* world, const lfem_body_def* def, lfem_body* out) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        require_pointer(def, "def");
+        require_pointer(out, "out");
+        check_body_def(*def);
+        *out = w.create_body(*def);
+    });
+}
+
+LFEM_API lfem_status lfem_body_destroy(lfem_world* world, lfem_body body) {
+    return guard(__func__, [&] { world_of(world).destroy_body(body); });
+}
+
+LFEM_API int lfem_body_is_valid(const lfem_world* world, lfem_body body) {
+    return world != nullptr && world->world.is_valid(body) ? 1 : 0;
+}
+
+LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body, const double* positions,
+                                        uint32_t node_count, const uint32_t* tets, uint32_t tet_count) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        Body& b = w.body(body);
+        require_pointer(positions, "positions");
+        require_pointer(tets, "tets");
+        require(node_count >= 4, "node_count must be >= 4");
+        require(tet_count >= 1, "tet_count must be >= 1");
+        require_finite(positions, 3 * std::size_t(node_count), "positions");
+        w.add_mesh(b, positions, node_count, tets, tet_count);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body body, uint32_t* out) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        *out = b.ref.node_count();
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body, uint32_t* out) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        *out = b.ref.tet_count();
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body, void** out) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        *out = b.def.user_data;
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body body, double* out,
+                                             uint32_t node_capacity) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        require_capacity(node_capacity, b.ref.node_count(), "node");
+        std::copy(b.state.x.begin(), b.state.x.end(), out);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body body, double* out,
+                                              uint32_t node_capacity) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        const Body& b = w.body(body);
+        require_pointer(out, "out");
+        require_capacity(node_capacity, b.ref.node_count(), "node");
+        w.synchronized_velocities(b, out);
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body, const double* velocities,
+                                              uint32_t node_count) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        Body& b = w.body(body);
+        require_deformable(b, "setting node velocities");
+        require_pointer(velocities, "velocities");
+        require(node_count == b.ref.node_count(),
+                "node_count " + std::to_string(node_count) + " differs from the body's " +
+                    std::to_string(b.ref.node_count()));
+        require_finite(velocities, 3 * std::size_t(node_count), "velocities");
+        w.set_velocities(b, velocities);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* world, lfem_body body,
+                                                           uint32_t* out) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        *out = uint32_t(b.ref.boundary.size() / 3);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, lfem_body body,
+                                                      uint32_t* out, uint32_t triangle_capacity) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        require_capacity(triangle_capacity, uint32_t(b.ref.boundary.size() / 3), "triangle");
+        std::copy(b.ref.boundary.begin(), b.ref.boundary.end(), out);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
+                                                    double* out, uint32_t tet_capacity) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        require_capacity(tet_capacity, b.ref.tet_count(), "tet");
+        if (b.is_deformable()) {
+            std::vector<double> stress(b.ref.tet_count());  // all or nothing for out
+            compute_von_mises(b, b.state, stress.data());
+            std::copy(stress.begin(), stress.end(), out);
+        } else {
+            std::fill(out, out + b.ref.tet_count(), 0.0);  // rigid: no strain is modelled
+        }
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body body, double out[9]) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        const double* q = b.state.rotation;
+        const Mat3 R = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) out[3 * r + c] = b.def.model == LFEM_MODEL_PAPER ? R(r, c) : (r == c);
+    });
+}
+
+LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_body body, const double lo[3],
+                                                 const double hi[3], uint32_t* out, uint32_t capacity,
+                                                 uint32_t* count) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(lo, "lo");
+        require_pointer(hi, "hi");
+        require_pointer(count, "count");
+        require(capacity == 0 || out != nullptr, "out is NULL with a non-zero capacity");
+        require_finite(lo, 3, "lo");
+        require_finite(hi, 3, "hi");
+        auto inside = [&](uint32_t i) {
+            for (int k = 0; k < 3; ++k) {
+                const double x = b.state.x[3 * i + k];
+                if (x < lo[k] || x > hi[k]) return false;
+            }
+            return true;
+        };
+        uint32_t found = 0;
+        for (uint32_t i = 0; i < b.ref.node_count(); ++i) found += inside(i);
+        if (found > capacity) {
+            *count = found;
+            throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) + " is below the " +
+                                                   std::to_string(found) + " nodes found");
+        }
+        uint32_t k = 0;
+        for (uint32_t i = 0; i < b.ref.node_count(); ++i)
+            if (inside(i)) out[k++] = i;
+        *count = found;
+    });
+}
+
+LFEM_API lfem_status lfem_body_fix_nodes(lfem_world* world, lfem_body body, const uint32_t* nodes,
+                                         uint32_t count) {
+    return guard(__func__, [&] {
+        Body& b = world_of(world).body(body);
+        require_deformable(b, "fixing nodes");
+        check_node_list(b, nodes, count);
+        for (uint32_t i = 0; i < count; ++i) b.node_mode[nodes[i]] = NodeMode::fixed;
+    });
+}
+
+LFEM_API lfem_status lfem_body_prescribe_node_velocity(lfem_world* world, lfem_body body,
+                                                       const uint32_t* nodes, uint32_t count,
+                                                       const double velocity[3]) {
+    return guard(__func__, [&] {
+        Body& b = world_of(world).body(body);
+        require_deformable(b, "prescribing node velocities");
+        check_node_list(b, nodes, count);
+        require_pointer(velocity, "velocity");
+        require_finite(velocity, 3, "velocity");
+        if (b.prescribed_velocity.empty()) b.prescribed_velocity.assign(3 * std::size_t(b.ref.node_count()), 0.0);
+        for (uint32_t i = 0; i < count; ++i) {
+            b.node_mode[nodes[i]] = NodeMode::prescribed;
+            for (int k = 0; k < 3; ++k) b.prescribed_velocity[3 * nodes[i] + k] = velocity[k];
+        }
+    });
+}
+
+LFEM_API lfem_status lfem_body_release_nodes(lfem_world* world, lfem_body body, const uint32_t* nodes,
+                                             uint32_t count) {
+    return guard(__func__, [&] {
+        Body& b = world_of(world).body(body);
+        require_deformable(b, "releasing nodes");
+        check_node_list(b, nodes, count);
+        for (uint32_t i = 0; i < count; ++i) b.node_mode[nodes[i]] = NodeMode::free;
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_node_forces(lfem_world* world, lfem_body body, const uint32_t* nodes,
+                                               uint32_t count, const double* forces) {
+    return guard(__func__, [&] {
+        Body& b = world_of(world).body(body);
+        require_deformable(b, "node forces");
+        check_node_list(b, nodes, count);
+        require(count == 0 || forces != nullptr, "forces is NULL");
+        require_finite(forces, 3 * std::size_t(count), "forces");
+        if (b.node_force.empty()) b.node_force.assign(3 * std::size_t(b.ref.node_count()), 0.0);
+        for (uint32_t i = 0; i < count; ++i)
+            for (int k = 0; k < 3; ++k) b.node_force[3 * nodes[i] + k] = forces[3 * i + k];
+    });
+}
+
+LFEM_API lfem_status lfem_body_clear_node_forces(lfem_world* world, lfem_body body) {
+    return guard(__func__, [&] {
+        Body& b = world_of(world).body(body);
+        std::vector<double>().swap(b.node_force);  // unused features hold no memory
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_body body,
+                                                      const double linear[3], const double angular[3]) {
+    return guard(__func__, [&] {
+        Body& b = world_of(world).body(body);
+        require(b.def.type == LFEM_BODY_KINEMATIC, "the body is not kinematic");
+        require_pointer(linear, "linear");
+        require_pointer(angular, "angular");
+        require_finite(linear, 3, "linear");
+        require_finite(angular, 3, "angular");
+        for (int k = 0; k < 3; ++k) {
+            b.def.linear_velocity[k] = linear[k];
+            b.def.angular_velocity[k] = angular[k];
+        }
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,54 @@
+// The one place where C++ failures become C statuses. Every exported function runs its body
+// through guard(): lfem::Error keeps its status and message, std::bad_alloc becomes
+// LFEM_OUT_OF_MEMORY, anything else LFEM_INTERNAL_ERROR. No exception leaves the library.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <new>
+#include <string>
+
+#include "common/error.h"
+#include "lfem.h"
+
+namespace lfem::api {
+
+// Records the message of a failed call for lfem_last_error() on this thread.
+void set_last_error(const char* function, const std::string& message);
+
+template <class Body>
+lfem_status guard(const char* function, Body&& body) noexcept {
+    try {
+        body();
+        return LFEM_OK;
+    } catch (const Error& e) {
+        set_last_error(function, e.what());
+        return e.status();
+    } catch (const std::bad_alloc&) {
+        set_last_error(function, "out of memory");
+        return LFEM_OUT_OF_MEMORY;
+    } catch (const std::exception& e) {
+        set_last_error(function, std::string("internal error: ") + e.what());
+        return LFEM_INTERNAL_ERROR;
+    } catch (...) {
+        set_last_error(function, "internal error: unknown exception");
+        return LFEM_INTERNAL_ERROR;
+    }
+}
+
+// Argument checks shared by every entry point: each throws lfem::Error(LFEM_INVALID_ARGUMENT)
+// naming the argument, so the shim reads as a list of requirements.
+inline void require(bool condition, const std::string& message) {
+    if (!condition) throw Error(LFEM_INVALID_ARGUMENT, message);
+}
+inline void require_pointer(const void* p, const char* name) {
+    require(p != nullptr, std::string(name) + " is NULL");
+}
+inline void require_finite(const double* v, std::size_t n, const char* name) {
+    for (std::size_t i = 0; i < n; ++i)
+        if (!std::isfinite(v[i]))
+            throw Error(LFEM_INVALID_ARGUMENT,
+                        std::string(name) + "[" + std::to_string(i) + "] is not finite");
+}
+
+}  // namespace lfem::api

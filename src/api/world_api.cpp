@@ -1,0 +1,98 @@
+// C shim of the world: validates, translates, and leaves the work to lfem::World.
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "api/handles.h"
+
+using namespace lfem;
+using namespace lfem::api;
+
+namespace {
+
+void check_world_def(const lfem_world_def& d) {
+    require(d.internal_value == world_def_cookie,
+            "def was not initialised by lfem_world_def_default()");
+    require_finite(d.gravity, 3, "def->gravity");
+    require(std::isfinite(d.time_step) && d.time_step >= 0.0,
+            "def->time_step must be finite and >= 0 (0 = automatic)");
+    require(std::isfinite(d.step_safety) && d.step_safety > 0.0 && d.step_safety < 1.0,
+            "def->step_safety must lie in (0, 1)");
+    require(d.contact_iterations >= 1, "def->contact_iterations must be >= 1");
+    require(std::isfinite(d.contact_tolerance) && d.contact_tolerance > 0.0,
+            "def->contact_tolerance must be finite and > 0");
+    require(d.max_substeps >= 1, "def->max_substeps must be >= 1");
+    require(d.allow_unstable_step <= 1, "def->allow_unstable_step must be 0 or 1");
+}
+
+}  // namespace
+
+extern "C" {
+
+LFEM_API lfem_world_def lfem_world_def_default(void) {
+    lfem_world_def d{};
+    d.gravity[2] = -9.81;
+    d.time_step = 0.0;
+    d.step_safety = 0.9;
+    d.contact_iterations = 200;
+    d.contact_tolerance = 1e-3;
+    d.max_substeps = 1000000;
+    d.allow_unstable_step = 0;
+    d.internal_value = world_def_cookie;
+    return d;
+}
+
+LFEM_API lfem_status lfem_world_create(const lfem_world_def* def, lfem_world** out) {
+    return guard(__func__, [&] {
+        require_pointer(def, "def");
+        require_pointer(out, "out");
+        check_world_def(*def);
+        *out = new lfem_world(*def);
+    });
+}
+
+LFEM_API void lfem_world_destroy(lfem_world* world) { delete world; }
+
+LFEM_API lfem_status lfem_world_step(lfem_world* world, double dt) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        require(std::isfinite(dt) && dt > 0.0, "dt must be finite and > 0, got " + std::to_string(dt));
+        w.step(dt);
+    });
+}
+
+LFEM_API lfem_status lfem_world_set_gravity(lfem_world* world, const double gravity[3]) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        require_pointer(gravity, "gravity");
+        require_finite(gravity, 3, "gravity");
+        w.set_gravity(gravity);
+    });
+}
+
+LFEM_API lfem_status lfem_world_set_time_step(lfem_world* world, double time_step) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        require(std::isfinite(time_step) && time_step >= 0.0,
+                "time_step must be finite and >= 0 (0 = automatic)");
+        w.set_time_step(time_step);
+    });
+}
+
+LFEM_API lfem_status lfem_world_get_stable_step(const lfem_world* world, double* out) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(out, "out");
+        *out = w.stable_step();
+    });
+}
+
+LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_stats* out) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(out, "out");
+        *out = w.stats();
+    });
+}
+
+}  // extern "C"

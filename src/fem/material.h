@@ -1,0 +1,25 @@
+// Isotropic elastic constants and the wave speed that sets the explicit step.
+#pragma once
+
+#include <cmath>
+
+namespace lfem {
+
+struct Lame {
+    double mu = 0;      // shear modulus (Pa)
+    double lambda = 0;  // first Lame parameter (Pa)
+};
+
+inline Lame lame_from_young_poisson(double young, double poisson) {
+    Lame l;
+    l.mu = young / (2.0 * (1.0 + poisson));
+    l.lambda = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
+    return l;
+}
+
+// Dilatational (P-wave) speed c_d = sqrt((lambda + 2 mu) / rho): the fastest wave in the body.
+inline double dilatational_wave_speed(const Lame& l, double density) {
+    return std::sqrt((l.lambda + 2.0 * l.mu) / density);
+}
+
+}  // namespace lfem

@@ -1,0 +1,22 @@
+// The stable step of central differences, h < 2 / omega_max, with omega_max^2 the largest
+// eigenvalue of M^-1 K (lumped mass, stiffness at the reference state). K is never formed: it
+// is applied element by element.
+#pragma once
+
+#include "world/body.h"
+
+namespace lfem {
+
+struct StableStepEstimate {
+    double omega_max = 0;       // rad/s, the value used: min(power iteration * (1 + margin),
+                                // Gershgorin bound)
+    double omega_power = 0;     // rad/s, Rayleigh quotient of the power iteration (lower bound)
+    double omega_gershgorin = 0;// rad/s, proven upper bound from nodal row sums of |K_e|
+    int iterations = 0;
+};
+
+// Largest natural frequency of a body from its reference data (X, masses, tets, Dm_inv,
+// volumes) and elastic constants.
+StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame);
+
+}  // namespace lfem

@@ -1,0 +1,68 @@
+// check_tet_mesh: one pass over the tets (indices, repeated nodes, volume sign and size) and
+// one over the nodes (each used by some tet). Stops at the first problem so the message can
+// name it exactly.
+#include "mesh/mesh_check.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/error.h"
+#include "mesh/tet_geometry.h"
+
+namespace lfem {
+namespace {
+
+[[noreturn]] void invalid_mesh(const std::string& message) {
+    throw Error(LFEM_INVALID_MESH, message);
+}
+
+std::string format_volume(double volume) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", volume);
+    return text;
+}
+
+}  // namespace
+
+void check_tet_mesh(const double* positions, uint32_t node_count, const uint32_t* tets,
+                    uint32_t tet_count) {
+    if (tet_count == 0) invalid_mesh("the mesh has no tets");
+
+    std::vector<unsigned char> used(node_count, 0);
+    for (uint32_t t = 0; t < tet_count; ++t) {
+        const uint32_t* tet = tets + 4 * std::size_t(t);
+        // Built only on failure: the happy path allocates nothing per tet.
+        const auto name = [t] { return "tet " + std::to_string(t); };
+        for (int i = 0; i < 4; ++i) {
+            if (tet[i] >= node_count)
+                invalid_mesh(name() + " refers to node " + std::to_string(tet[i]) +
+                             " but the mesh has " + std::to_string(node_count) + " nodes");
+            for (int j = 0; j < i; ++j)
+                if (tet[i] == tet[j])
+                    invalid_mesh(name() + " repeats node " + std::to_string(tet[i]));
+        }
+        const double* x0 = positions + 3 * std::size_t(tet[0]);
+        const double* x1 = positions + 3 * std::size_t(tet[1]);
+        const double* x2 = positions + 3 * std::size_t(tet[2]);
+        const double* x3 = positions + 3 * std::size_t(tet[3]);
+        const double six_vol = tet_geometry::six_volume(x0, x1, x2, x3);
+        const double longest = tet_geometry::longest_edge(x0, x1, x2, x3);
+        if (!std::isfinite(six_vol))
+            invalid_mesh(name() + " is too large: its volume overflows a double");
+        // Flatness first: a nearly flat tet with a negative sign is degenerate rather than
+        // inverted (its sign is rounding noise), and saying so points at the real problem.
+        if (tet_geometry::is_flat(six_vol, longest))
+            invalid_mesh(name() + " has zero volume (volume " + format_volume(six_vol / 6.0) +
+                         " m^3, longest edge " + format_volume(longest) + " m)");
+        if (six_vol < 0.0)
+            invalid_mesh(name() + " is inverted (volume " + format_volume(six_vol / 6.0) +
+                         " m^3); list its nodes so that det[x1-x0, x2-x0, x3-x0] > 0");
+        for (int i = 0; i < 4; ++i) used[tet[i]] = 1;
+    }
+    for (uint32_t n = 0; n < node_count; ++n)
+        if (!used[n]) invalid_mesh("node " + std::to_string(n) + " belongs to no tet");
+}
+
+}  // namespace lfem

@@ -1,0 +1,14 @@
+// Validation of a caller's tetrahedral mesh before it becomes part of a body.
+#pragma once
+
+#include <cstdint>
+
+namespace lfem {
+
+// Throws Error(LFEM_INVALID_MESH, message naming the first offending tet or node) when an
+// index is out of range, a tet repeats a node, a tet is inverted or has (relatively) zero
+// volume, or a node belongs to no tet. Positions are assumed finite (checked by the shim).
+void check_tet_mesh(const double* positions, uint32_t node_count, const uint32_t* tets,
+                    uint32_t tet_count);
+
+}  // namespace lfem

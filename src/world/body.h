@@ -1,0 +1,58 @@
+// A body as flat arrays. Split as in MuJoCo's model/data: BodyReference is fixed once the mesh
+// is added (reference nodes, masses, element gradients), BodyState is everything a step
+// changes (and so everything a rollback restores).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fem/material.h"
+#include "lfem.h"
+
+namespace lfem {
+
+enum class NodeMode : uint8_t { free = 0, fixed = 1, prescribed = 2 };
+
+struct BodyReference {
+    std::vector<double> X;          // 3 per node: reference positions (m)
+    std::vector<double> mass;       // lumped node masses, sum of rho V_e / 4 (kg)
+    std::vector<uint32_t> tets;     // 4 node indices per tet
+    std::vector<double> Dm_inv;     // 9 per tet: inverse reference edge matrix (column-major)
+    std::vector<double> volume;     // reference volume per tet (m^3)
+    std::vector<uint32_t> boundary; // 3 per outward boundary triangle
+    double total_mass = 0;
+    double com[3] = {0, 0, 0};      // reference centre of mass
+    double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
+
+    uint32_t node_count() const { return uint32_t(mass.size()); }
+    uint32_t tet_count() const { return uint32_t(volume.size()); }
+};
+
+struct BodyState {
+    std::vector<double> x;         // 3 per node: positions at the current time (m)
+    std::vector<double> v_half;    // 3 per node: velocity of the last step, (x^n - x^n-1)/h;
+                                   // the synchronized velocity itself when h_last == 0
+    std::vector<double> elastic;   // 3 per node: elastic force -f_int at x (N)
+    std::vector<double> tet_rotation; // 4 per tet (w,x,y,z): corotational warm start
+    double h_last = 0;             // size of the last step (s); 0 = no step since a reset
+    double strain_energy = 0;      // J, at x
+    double rotation[4] = {1, 0, 0, 0}; // paper model: global rotation (quaternion w,x,y,z)
+    double angular_momentum[3] = {0, 0, 0}; // paper model: L of eq. (2) about the COM
+    double center[3] = {0, 0, 0};  // kinematic bodies: current centre
+};
+
+struct Body {
+    uint32_t generation = 0;
+    lfem_body_def def{};
+    Lame lame;
+    BodyReference ref;
+    BodyState state;
+    std::vector<NodeMode> node_mode;          // per node
+    std::vector<double> prescribed_velocity;  // 3 per node, empty until first prescribed
+    std::vector<double> node_force;           // 3 per node, empty until a force is set
+
+    bool is_deformable() const { return def.type == LFEM_BODY_DEFORMABLE; }
+    bool has_mesh() const { return !ref.mass.empty(); }
+};
+
+}  // namespace lfem

@@ -1,0 +1,283 @@
+// Body slots, mesh insertion and the statistics of a world. The step itself is in step.cpp.
+#include "world/world.h"
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "common/error.h"
+#include "fem/internal_forces.h"
+#include "fem/stable_step.h"
+#include "fem/tet_element.h"
+#include "mesh/boundary.h"
+#include "mesh/mesh_check.h"
+#include "rigid/global_rotation.h"
+
+namespace lfem {
+namespace {
+
+// Generations come from one process-wide counter, so a handle of another world (foreign) can
+// never match a slot's generation in this one: it is detected like a stale handle.
+std::atomic<uint32_t> g_next_generation{1};
+
+uint32_t next_generation() {
+    uint32_t g = g_next_generation.fetch_add(1, std::memory_order_relaxed);
+    if (g == 0) g = g_next_generation.fetch_add(1, std::memory_order_relaxed);  // wrapped
+    return g;
+}
+
+}  // namespace
+
+void World::set_gravity(const double g[3]) {
+    for (int k = 0; k < 3; ++k) def_.gravity[k] = g[k];
+}
+
+lfem_body World::create_body(const lfem_body_def& def) {
+    uint32_t index;
+    if (!free_slots_.empty()) {
+        index = free_slots_.back();
+    } else {
+        slots_.emplace_back();  // may throw bad_alloc before anything changed
+        index = uint32_t(slots_.size() - 1);
+    }
+    Body body;
+    body.def = def;
+    body.lame = lame_from_young_poisson(def.young_modulus, def.poisson_ratio);
+    body.generation = next_generation();
+    if (!free_slots_.empty() && free_slots_.back() == index) free_slots_.pop_back();
+    slots_[index].body = std::move(body);
+    return lfem_body{index, slots_[index].body.generation};
+}
+
+bool World::is_valid(lfem_body h) const {
+    return h.generation != 0 && h.index < slots_.size() &&
+           slots_[h.index].body.generation == h.generation;
+}
+
+Body& World::body(lfem_body h) {
+    return const_cast<Body&>(static_cast<const World&>(*this).body(h));
+}
+
+const Body& World::body(lfem_body h) const {
+    if (h.generation == 0 && h.index == 0) throw Error(LFEM_INVALID_HANDLE, "null body handle");
+    if (!is_valid(h))
+        throw Error(LFEM_INVALID_HANDLE, "body handle {" + std::to_string(h.index) + ", " +
+                                             std::to_string(h.generation) +
+                                             "} is stale or belongs to another world");
+    return slots_[h.index].body;
+}
+
+void World::destroy_body(lfem_body h) {
+    Body& b = body(h);
+    free_slots_.reserve(free_slots_.size() + 1);  // the only allocation: before any change
+    b = Body{};                                   // generation 0: the slot is free
+    free_slots_.push_back(h.index);
+}
+
+uint32_t World::body_count() const {
+    uint32_t n = 0;
+    for_each_body([&](const Body&, uint32_t) { ++n; });
+    return n;
+}
+
+void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
+                     const uint32_t* tets, uint32_t tet_count) {
+    check_tet_mesh(positions, node_count, tets, tet_count);
+    const uint32_t old_nodes = body.ref.node_count();
+    const uint32_t old_tets = body.ref.tet_count();
+    if (uint64_t(old_nodes) + node_count > 0xFFFFFFF0ull ||
+        uint64_t(old_tets) + tet_count > 0xFFFFFFF0ull)
+        throw Error(LFEM_INVALID_ARGUMENT, "the body would exceed 2^32 nodes or tets");
+
+    // Build the new reference and state beside the old ones; swap them in only at the end, so
+    // any failure (a bad mesh, out of memory) leaves the body untouched.
+    BodyReference ref = body.ref;
+    ref.X.insert(ref.X.end(), positions, positions + 3 * std::size_t(node_count));
+    ref.mass.resize(ref.X.size() / 3, 0.0);
+    for (uint32_t i = 0; i < 4 * tet_count; ++i) ref.tets.push_back(tets[i] + old_nodes);
+    std::vector<uint32_t> boundary = extract_boundary_triangles(tets, tet_count);
+    for (uint32_t& v : boundary) v += old_nodes;
+    ref.boundary.insert(ref.boundary.end(), boundary.begin(), boundary.end());
+    ref.Dm_inv.resize(9 * std::size_t(old_tets + tet_count));
+    ref.volume.resize(old_tets + tet_count);
+    const double rho = body.def.density;
+    for (uint32_t e = old_tets; e < old_tets + tet_count; ++e) {
+        const uint32_t* t = &ref.tets[4 * e];
+        const double* X = ref.X.data();
+        const Mat3 Dm = edge_matrix(X + 3 * t[0], X + 3 * t[1], X + 3 * t[2], X + 3 * t[3]);
+        const double V = Dm.determinant() / 6.0;
+        Eigen::Map<Mat3>(&ref.Dm_inv[9 * std::size_t(e)]) = Dm.inverse();
+        ref.volume[e] = V;
+        for (int a = 0; a < 4; ++a) ref.mass[t[a]] += rho * V / 4.0;  // lumped mass
+    }
+    const uint32_t n = ref.node_count();
+    ref.total_mass = 0.0;
+    for (double m : ref.mass) ref.total_mass += m;
+    const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
+    for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
+    if (body.is_deformable()) ref.stable_step = 2.0 / estimate_stable_step(ref, body.lame).omega_max;
+
+    BodyState state = body.state;
+    // Existing nodes continue from their synchronized velocities; new ones get the def's.
+    std::vector<double> v(3 * std::size_t(n), 0.0);
+    if (old_nodes) synchronized_velocities(body, v.data());
+    state.x.insert(state.x.end(), positions, positions + 3 * std::size_t(node_count));
+    const Vec3 c = center_of_mass(ref.mass.data(), state.x.data(), n);
+    double added_kinetic = 0.0;
+    const Vec3 lin(body.def.linear_velocity), ang(body.def.angular_velocity);
+    for (uint32_t i = old_nodes; i < n; ++i) {
+        const Vec3 r = Vec3(&state.x[3 * i]) - c;
+        const Vec3 vi = lin + ang.cross(r);
+        for (int k = 0; k < 3; ++k) v[3 * i + k] = vi[k];
+        added_kinetic += 0.5 * ref.mass[i] * vi.squaredNorm();
+    }
+    state.v_half = std::move(v);
+    state.h_last = 0.0;
+    state.elastic.assign(3 * std::size_t(n), 0.0);
+    state.tet_rotation.resize(4 * std::size_t(ref.tet_count()), 0.0);
+    for (uint32_t e = old_tets; e < ref.tet_count(); ++e) state.tet_rotation[4 * e] = 1.0;
+    for (int k = 0; k < 3; ++k) state.center[k] = c[k];
+
+    std::vector<NodeMode> modes = body.node_mode;
+    modes.resize(n, NodeMode::free);
+    std::vector<double> prescribed = body.prescribed_velocity;
+    if (!prescribed.empty()) prescribed.resize(3 * std::size_t(n), 0.0);
+    std::vector<double> forces = body.node_force;
+    if (!forces.empty()) forces.resize(3 * std::size_t(n), 0.0);
+
+    Body candidate;
+    candidate.def = body.def;
+    candidate.lame = body.lame;
+    candidate.ref = std::move(ref);
+    candidate.node_mode = std::move(modes);
+    if (candidate.is_deformable()) {
+        if (candidate.def.model == LFEM_MODEL_PAPER) {
+            // Frame: fit to the current nodes (identity for an undeformed new body); L of
+            // eq. (2) from the nodes' velocities.
+            Eigen::Quaterniond q(state.rotation[0], state.rotation[1], state.rotation[2],
+                                 state.rotation[3]);
+            fit_global_rotation(candidate.ref.mass.data(), state.x.data(), candidate.ref.X.data(),
+                                n, c, C, q);
+            state.rotation[0] = q.w(), state.rotation[1] = q.x(), state.rotation[2] = q.y(),
+            state.rotation[3] = q.z();
+            const Vec3 L =
+                angular_momentum(candidate.ref.mass.data(), state.x.data(), state.v_half.data(), n, c);
+            for (int k = 0; k < 3; ++k) state.angular_momentum[k] = L[k];
+        }
+        compute_elastic_forces(candidate, state);
+    }
+    // Commit: moves only from here on (no allocation, nothing can fail).
+    body.ref = std::move(candidate.ref);
+    body.state = std::move(state);
+    body.node_mode = std::move(candidate.node_mode);
+    body.prescribed_velocity = std::move(prescribed);
+    body.node_force = std::move(forces);
+    if (body.is_deformable()) counters_.initial_energy += added_kinetic;
+}
+
+void World::set_velocities(Body& body, const double* v) {
+    const uint32_t n = body.ref.node_count();
+    double before = 0.0, after = 0.0;
+    if (body.is_deformable()) {
+        std::vector<double> old(3 * std::size_t(n));
+        synchronized_velocities(body, old.data());
+        for (uint32_t i = 0; i < n; ++i) {
+            const double m = body.ref.mass[i];
+            for (int k = 0; k < 3; ++k) {
+                before += 0.5 * m * old[3 * i + k] * old[3 * i + k];
+                after += 0.5 * m * v[3 * i + k] * v[3 * i + k];
+            }
+        }
+    }
+    std::copy(v, v + 3 * std::size_t(n), body.state.v_half.begin());
+    body.state.h_last = 0.0;  // v_half now holds synchronized velocities
+    if (body.is_deformable() && body.def.model == LFEM_MODEL_PAPER) {
+        const Vec3 c = center_of_mass(body.ref.mass.data(), body.state.x.data(), n);
+        const Vec3 L = angular_momentum(body.ref.mass.data(), body.state.x.data(), v, n, c);
+        for (int k = 0; k < 3; ++k) body.state.angular_momentum[k] = L[k];
+    }
+    counters_.external_work += after - before;
+}
+
+double World::stable_step() const {
+    double h = std::numeric_limits<double>::infinity();
+    for_each_body([&](const Body& b, uint32_t) {
+        if (b.is_deformable() && b.has_mesh()) h = std::min(h, b.ref.stable_step);
+    });
+    return h;
+}
+
+void World::synchronized_velocities(const Body& body, double* out) const {
+    const BodyState& s = body.state;
+    const uint32_t n = body.ref.node_count();
+    if (!body.is_deformable()) {
+        // Static: at rest. Kinematic: rigid motion about the moving centre.
+        const Vec3 lin(body.def.linear_velocity), ang(body.def.angular_velocity);
+        for (uint32_t i = 0; i < n; ++i) {
+            Vec3 v = Vec3::Zero();
+            if (body.def.type == LFEM_BODY_KINEMATIC)
+                v = lin + ang.cross(Vec3(&s.x[3 * i]) - Vec3(s.center));
+            for (int k = 0; k < 3; ++k) out[3 * i + k] = v[k];
+        }
+        return;
+    }
+    const double h = s.h_last;
+    const double* g = def_.gravity;
+    for (uint32_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            double v = s.v_half[3 * i + k];
+            switch (body.node_mode[i]) {
+                case NodeMode::fixed: v = 0.0; break;
+                case NodeMode::prescribed: v = body.prescribed_velocity[3 * i + k]; break;
+                case NodeMode::free:
+                    if (h > 0.0) {
+                        // v^n = v^{n-1/2} + h/2 a^n with m a^n = R^n - c v^n (central difference)
+                        const double m = body.ref.mass[i];
+                        double R = m * g[k] + s.elastic[3 * i + k];
+                        if (!body.node_force.empty()) R += body.node_force[3 * i + k];
+                        v = (2.0 * m / h * v + R) / (2.0 * m / h + body.def.damping * m);
+                    }
+                    break;
+            }
+            out[3 * i + k] = v;
+        }
+    }
+}
+
+lfem_world_stats World::stats() const {
+    lfem_world_stats st{};
+    st.time = counters_.time;
+    st.steps = counters_.steps;
+    st.step_size = counters_.step_size;
+    st.stable_step = stable_step();
+    st.substeps_last_call = counters_.substeps_last_call;
+    st.body_count = body_count();
+    st.external_work = counters_.external_work;
+    st.dissipated_energy = counters_.dissipated_energy;
+    st.rotation_drift = counters_.rotation_drift;
+    Vec3 P = Vec3::Zero(), L = Vec3::Zero();
+    std::vector<double> v;
+    for_each_body([&](const Body& b, uint32_t) {
+        if (!b.is_deformable() || !b.has_mesh()) return;
+        v.resize(b.state.v_half.size());
+        synchronized_velocities(b, v.data());
+        for (uint32_t i = 0; i < b.ref.node_count(); ++i) {
+            const Vec3 vi(&v[3 * i]), xi(&b.state.x[3 * i]);
+            const double m = b.ref.mass[i];
+            st.kinetic_energy += 0.5 * m * vi.squaredNorm();
+            P += m * vi;
+            L += m * xi.cross(vi);
+        }
+        st.strain_energy += b.state.strain_energy;
+    });
+    for (int k = 0; k < 3; ++k) {
+        st.linear_momentum[k] = P[k];
+        st.angular_momentum[k] = L[k];
+    }
+    st.energy_error = st.kinetic_energy + st.strain_energy + st.dissipated_energy -
+                      st.external_work - counters_.initial_energy;
+    return st;
+}
+
+}  // namespace lfem

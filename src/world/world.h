@@ -1,0 +1,77 @@
+// The world: bodies in generation-checked slots, the step pipeline and its statistics. This is
+// the C++ object behind the opaque lfem_world; only src/api talks to it from the outside, after
+// validating every argument.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lfem.h"
+#include "world/body.h"
+
+namespace lfem {
+
+// The world's own scalars that a step changes (rolled back with the bodies).
+struct WorldCounters {
+    double time = 0;
+    uint64_t steps = 0;
+    double step_size = 0;
+    uint32_t substeps_last_call = 0;
+    double external_work = 0;      // J, since creation
+    double dissipated_energy = 0;  // J, since creation
+    double initial_energy = 0;     // J, kinetic energy given with meshes and by set_velocities
+    double rotation_drift = 0;     // rad, last sub-step
+};
+
+class World {
+public:
+    explicit World(const lfem_world_def& def) : def_(def) {}
+
+    const lfem_world_def& def() const { return def_; }
+    void set_gravity(const double g[3]);
+    void set_time_step(double h) { def_.time_step = h; }
+
+    // Bodies. body() throws Error(LFEM_INVALID_HANDLE) for a stale, foreign or null handle.
+    lfem_body create_body(const lfem_body_def& def);
+    void destroy_body(lfem_body handle);
+    bool is_valid(lfem_body handle) const;
+    Body& body(lfem_body handle);
+    const Body& body(lfem_body handle) const;
+    uint32_t body_count() const;
+    // Live bodies in slot order (the order every loop uses, so results are deterministic).
+    template <class F>
+    void for_each_body(F&& f) const {
+        for (const Slot& s : slots_)
+            if (s.body.generation != 0) f(s.body, uint32_t(&s - slots_.data()));
+    }
+
+    // Appends a checked mesh to a body (see lfem_body_add_mesh). All or nothing.
+    void add_mesh(Body& body, const double* positions, uint32_t node_count, const uint32_t* tets,
+                  uint32_t tet_count);
+    // Overwrites velocities; the change of kinetic energy is booked as external work.
+    void set_velocities(Body& body, const double* v);
+
+    // Stable limit 2/omega_max over the deformable bodies; +inf without any.
+    double stable_step() const;
+    // Advance by dt (see lfem_world_step). Throws Error: LFEM_INVALID_ARGUMENT when refused up
+    // front, LFEM_UNSTABLE after rolling back to the state before the call.
+    void step(double dt);
+
+    lfem_world_stats stats() const;
+    // Synchronized velocities of a body at the current time, 3 per node.
+    void synchronized_velocities(const Body& body, double* out) const;
+    const WorldCounters& counters() const { return counters_; }
+
+private:
+    struct Slot {
+        Body body;  // generation 0 = free slot
+    };
+    void substep(double h, double& kinetic, double& strain, double& work);
+
+    lfem_world_def def_;
+    std::vector<Slot> slots_;
+    std::vector<uint32_t> free_slots_;
+    WorldCounters counters_;
+};
+
+}  // namespace lfem

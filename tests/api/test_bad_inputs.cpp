@@ -1,0 +1,204 @@
+// Bad input through the C API: every case returns the right status with a message, and the
+// world is bit-for-bit what it was (fingerprint of everything a user can read back).
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "physics/lfem_test_util.h"
+
+using namespace lfem_test;
+
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A world with one deformable body that has already taken a few steps (so velocities, stress
+// and stats are non-trivial) and one static body.
+class BadInput : public ::testing::Test {
+protected:
+    void SetUp() override {
+        make_box_mesh(mesh, 0.2, 0.1, 0.1, 4, 2, 2);
+        lfem_body_def def = lfem_body_def_default();
+        def.linear_velocity[0] = 0.3;
+        body = add_body(world, def, mesh);
+        lfem_body_def ground = lfem_body_def_default();
+        ground.type = LFEM_BODY_STATIC;
+        floor = add_body(world, ground, mesh);
+        ASSERT_EQ(lfem_world_step(world, 0.01), LFEM_OK) << lfem_last_error();
+        before = fingerprint(world, {body, floor});
+    }
+    // The call's status is `expected`, it left a message, and the world is unchanged.
+    void expect_refused(lfem_status got, lfem_status expected, const char* what) {
+        EXPECT_EQ(got, expected) << what << ": " << lfem_last_error();
+        EXPECT_STRNE(lfem_last_error(), "") << what;
+        EXPECT_EQ(before, fingerprint(world, {body, floor})) << what << " changed the world";
+        ++cases;
+    }
+    void TearDown() override { std::printf("%d bad inputs refused cleanly\n", cases); }
+
+    World world;
+    Mesh mesh;
+    lfem_body body{}, floor{};
+    std::vector<unsigned char> before;
+    int cases = 0;
+};
+
+}  // namespace
+
+TEST_F(BadInput, NullPointers) {
+    lfem_world_def wd = lfem_world_def_default();
+    expect_refused(lfem_world_create(nullptr, nullptr), LFEM_INVALID_ARGUMENT, "world_create(NULL)");
+    expect_refused(lfem_world_create(&wd, nullptr), LFEM_INVALID_ARGUMENT, "world_create(out NULL)");
+    expect_refused(lfem_world_step(nullptr, 0.01), LFEM_INVALID_ARGUMENT, "step(NULL world)");
+    expect_refused(lfem_body_get_positions(world, body, nullptr, 1000), LFEM_INVALID_ARGUMENT,
+                   "get_positions(out NULL)");
+    expect_refused(lfem_body_add_mesh(world, body, nullptr, 4, lfem_mesh_get_tets(mesh.m), 1),
+                   LFEM_INVALID_ARGUMENT, "add_mesh(positions NULL)");
+    lfem_body out{};
+    expect_refused(lfem_body_create(world, nullptr, &out), LFEM_INVALID_ARGUMENT, "body_create(def NULL)");
+    expect_refused(lfem_world_get_stats(world, nullptr), LFEM_INVALID_ARGUMENT, "get_stats(NULL)");
+    expect_refused(lfem_mesh_load_gmsh(nullptr, &mesh.m), LFEM_INVALID_ARGUMENT, "load_gmsh(NULL path)");
+}
+
+TEST_F(BadInput, BadNumbers) {
+    expect_refused(lfem_world_step(world, kNaN), LFEM_INVALID_ARGUMENT, "step(NaN)");
+    expect_refused(lfem_world_step(world, 0.0), LFEM_INVALID_ARGUMENT, "step(0)");
+    expect_refused(lfem_world_step(world, -1e-3), LFEM_INVALID_ARGUMENT, "step(-1e-3)");
+    expect_refused(lfem_world_step(world, std::numeric_limits<double>::infinity()),
+                   LFEM_INVALID_ARGUMENT, "step(inf)");
+    const double g[3] = {0, kNaN, 0};
+    expect_refused(lfem_world_set_gravity(world, g), LFEM_INVALID_ARGUMENT, "set_gravity(NaN)");
+    expect_refused(lfem_world_set_time_step(world, -1.0), LFEM_INVALID_ARGUMENT, "set_time_step(-1)");
+
+    lfem_body out{};
+    const auto bad_def = [&](void (*edit)(lfem_body_def&), const char* what) {
+        lfem_body_def d = lfem_body_def_default();
+        edit(d);
+        expect_refused(lfem_body_create(world, &d, &out), LFEM_INVALID_ARGUMENT, what);
+    };
+    bad_def([](lfem_body_def& d) { d.young_modulus = 0.0; }, "E = 0");
+    bad_def([](lfem_body_def& d) { d.young_modulus = -5.0; }, "E < 0");
+    bad_def([](lfem_body_def& d) { d.young_modulus = kNaN; }, "E = NaN");
+    bad_def([](lfem_body_def& d) { d.density = 0.0; }, "density = 0");
+    bad_def([](lfem_body_def& d) { d.density = -1000.0; }, "density < 0");
+    bad_def([](lfem_body_def& d) { d.poisson_ratio = 0.5; }, "nu = 0.5");
+    bad_def([](lfem_body_def& d) { d.poisson_ratio = 0.7; }, "nu = 0.7");
+    bad_def([](lfem_body_def& d) { d.damping = -1.0; }, "damping < 0");
+    bad_def([](lfem_body_def& d) { d.linear_velocity[1] = kNaN; }, "velocity NaN");
+    bad_def([](lfem_body_def& d) { d.type = lfem_body_type(17); }, "unknown body type");
+    bad_def([](lfem_body_def& d) { d.model = lfem_model(9); }, "unknown model");
+    bad_def([](lfem_body_def& d) { d.internal_value = 0; }, "def not from lfem_body_def_default");
+    EXPECT_FALSE(lfem_body_is_valid(world, out));
+
+    lfem_world_def wd = lfem_world_def_default();
+    wd.step_safety = 1.5;
+    lfem_world* w2 = nullptr;
+    expect_refused(lfem_world_create(&wd, &w2), LFEM_INVALID_ARGUMENT, "step_safety 1.5");
+    EXPECT_EQ(w2, nullptr);
+}
+
+TEST_F(BadInput, BadMeshes) {
+    const double X[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    const auto bad_mesh = [&](std::vector<uint32_t> tets, const double* x, uint32_t nodes,
+                              lfem_status expected, const char* what) {
+        lfem_body_def d = lfem_body_def_default();
+        lfem_body fresh{};
+        // add_mesh to the existing body: must leave it exactly as it was.
+        expect_refused(lfem_body_add_mesh(world, body, x, nodes, tets.data(), uint32_t(tets.size() / 4)),
+                       expected, what);
+        (void)d;
+        (void)fresh;
+    };
+    bad_mesh({0, 1, 2, 7}, X, 4, LFEM_INVALID_MESH, "index out of range");
+    bad_mesh({0, 1, 1, 3}, X, 4, LFEM_INVALID_MESH, "repeated index");
+    bad_mesh({0, 2, 1, 3}, X, 4, LFEM_INVALID_MESH, "inverted tet");
+    const double flat[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+    bad_mesh({0, 1, 2, 3}, flat, 4, LFEM_INVALID_MESH, "zero-volume tet");
+    bad_mesh({0, 1, 2, 3}, X, 5, LFEM_INVALID_MESH, "unused node");
+    const double nan_x[] = {0, 0, 0, 1, 0, 0, 0, kNaN, 0, 0, 0, 1};
+    bad_mesh({0, 1, 2, 3}, nan_x, 4, LFEM_INVALID_ARGUMENT, "NaN position");
+    bad_mesh({0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3}, X, 4, LFEM_INVALID_MESH,
+             "face shared by three tets");
+}
+
+TEST_F(BadInput, StaleForeignAndNullHandles) {
+    // Stale: a destroyed body's handle.
+    lfem_body_def d = lfem_body_def_default();
+    lfem_body doomed{};
+    ASSERT_EQ(lfem_body_create(world, &d, &doomed), LFEM_OK);
+    ASSERT_EQ(lfem_body_destroy(world, doomed), LFEM_OK);
+    before = fingerprint(world, {body, floor});
+    uint32_t n = 0;
+    expect_refused(lfem_body_get_node_count(world, doomed, &n), LFEM_INVALID_HANDLE, "stale handle");
+    expect_refused(lfem_body_destroy(world, doomed), LFEM_INVALID_HANDLE, "double destroy");
+    // A new body reuses the slot: the old handle must still be refused.
+    lfem_body reborn{};
+    ASSERT_EQ(lfem_body_create(world, &d, &reborn), LFEM_OK);
+    EXPECT_EQ(reborn.index, doomed.index);
+    EXPECT_FALSE(lfem_body_is_valid(world, doomed));
+    ASSERT_EQ(lfem_body_destroy(world, reborn), LFEM_OK);
+    before = fingerprint(world, {body, floor});
+
+    // Foreign: a handle from another world, same slot index.
+    World other;
+    Mesh m2;
+    make_box_mesh(m2, 0.1, 0.1, 0.1, 1, 1, 1);
+    const lfem_body alien = add_body(other, d, m2);
+    EXPECT_EQ(alien.index, body.index);
+    double x[3 * 64];
+    expect_refused(lfem_body_get_positions(world, alien, x, 64), LFEM_INVALID_HANDLE, "foreign handle");
+    // Null handle and a made-up one.
+    expect_refused(lfem_body_fix_nodes(world, lfem_body{0, 0}, nullptr, 0), LFEM_INVALID_HANDLE, "null handle");
+    expect_refused(lfem_body_destroy(world, lfem_body{999, 1}), LFEM_INVALID_HANDLE, "index out of range");
+}
+
+TEST_F(BadInput, TooSmallBuffersAndBadIndices) {
+    const uint32_t n = node_count(world, body);
+    std::vector<double> x(3 * n);
+    expect_refused(lfem_body_get_positions(world, body, x.data(), n - 1), LFEM_BUFFER_TOO_SMALL,
+                   "positions buffer one node short");
+    expect_refused(lfem_body_get_velocities(world, body, x.data(), 0), LFEM_BUFFER_TOO_SMALL,
+                   "velocities buffer empty");
+    uint32_t tris = 0;
+    ASSERT_EQ(lfem_body_get_boundary_triangle_count(world, body, &tris), LFEM_OK);
+    std::vector<uint32_t> t(3 * tris);
+    expect_refused(lfem_body_get_boundary_triangles(world, body, t.data(), tris - 1),
+                   LFEM_BUFFER_TOO_SMALL, "triangle buffer short");
+    const uint32_t bad[2] = {0, n};
+    expect_refused(lfem_body_fix_nodes(world, body, bad, 2), LFEM_INVALID_ARGUMENT, "fix node out of range");
+    const uint32_t twice[2] = {3, 3};
+    expect_refused(lfem_body_fix_nodes(world, body, twice, 2), LFEM_INVALID_ARGUMENT, "fix node twice");
+    const double f[6] = {0, 0, kNaN, 0, 0, 0};
+    const uint32_t ok[2] = {0, 1};
+    expect_refused(lfem_body_set_node_forces(world, body, ok, 2, f), LFEM_INVALID_ARGUMENT, "NaN force");
+    std::vector<double> v(3 * n, 0.0);
+    expect_refused(lfem_body_set_velocities(world, body, v.data(), n + 1), LFEM_INVALID_ARGUMENT,
+                   "velocities for the wrong node count");
+    expect_refused(lfem_body_fix_nodes(world, floor, ok, 2), LFEM_INVALID_ARGUMENT, "fix nodes of a static body");
+    uint32_t count = 0, one = 0;
+    const double lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    expect_refused(lfem_body_find_nodes_in_box(world, body, lo, hi, &one, 1, &count), LFEM_BUFFER_TOO_SMALL,
+                   "find_nodes buffer short");
+    EXPECT_EQ(count, n);  // the total is still reported
+}
+
+TEST_F(BadInput, MissingAndMalformedFiles) {
+    lfem_mesh* m = nullptr;
+    expect_refused(lfem_mesh_load_gmsh("/nonexistent/dir/mesh.msh", &m), LFEM_IO_ERROR, "missing file");
+    EXPECT_EQ(m, nullptr);
+    const std::string path = ::testing::TempDir() + "lfem_bad_input.msh";
+    {
+        std::ofstream f(path);
+        f << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 zero\n";
+    }
+    expect_refused(lfem_mesh_load_gmsh(path.c_str(), &m), LFEM_IO_ERROR, "malformed file");
+    EXPECT_NE(std::string(lfem_last_error()).find(":7"), std::string::npos)
+        << "message should name line 7: " << lfem_last_error();
+    EXPECT_EQ(m, nullptr);
+    lfem_vtk_series* s = nullptr;
+    ASSERT_EQ(lfem_vtk_series_create("/nonexistent/dir/out.pvd", &s), LFEM_OK);
+    expect_refused(lfem_vtk_series_write_frame(s, world), LFEM_IO_ERROR, "unwritable series");
+    lfem_vtk_series_destroy(s);
+}

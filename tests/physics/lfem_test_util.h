@@ -1,0 +1,139 @@
+// Small C++ conveniences over the C API for the tests: a world that frees itself, a box body,
+// positions as vectors, and a fingerprint of everything a user can read (to prove a failed
+// call changed nothing, bit for bit).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "lfem.h"
+
+namespace lfem_test {
+
+struct World {
+    lfem_world* w = nullptr;
+    explicit World(const lfem_world_def& def) {
+        EXPECT_EQ(lfem_world_create(&def, &w), LFEM_OK) << lfem_last_error();
+    }
+    World() : World(lfem_world_def_default()) {}
+    ~World() { lfem_world_destroy(w); }
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+    operator lfem_world*() const { return w; }
+};
+
+struct Mesh {
+    lfem_mesh* m = nullptr;
+    ~Mesh() { lfem_mesh_destroy(m); }
+    uint32_t nodes() const { return lfem_mesh_get_node_count(m); }
+    uint32_t tets() const { return lfem_mesh_get_tet_count(m); }
+};
+
+inline void make_box_mesh(Mesh& mesh, double sx, double sy, double sz, uint32_t nx, uint32_t ny,
+                          uint32_t nz, double ox = 0, double oy = 0, double oz = 0) {
+    const double size[3] = {sx, sy, sz};
+    const uint32_t cells[3] = {nx, ny, nz};
+    ASSERT_EQ(lfem_mesh_create_box(size, cells, &mesh.m), LFEM_OK) << lfem_last_error();
+    const double offset[3] = {ox, oy, oz};
+    ASSERT_EQ(lfem_mesh_translate(mesh.m, offset), LFEM_OK) << lfem_last_error();
+}
+
+inline lfem_body add_body(lfem_world* w, const lfem_body_def& def, const Mesh& mesh) {
+    lfem_body b{};
+    EXPECT_EQ(lfem_body_create(w, &def, &b), LFEM_OK) << lfem_last_error();
+    EXPECT_EQ(lfem_body_add_mesh(w, b, lfem_mesh_get_positions(mesh.m), mesh.nodes(),
+                                 lfem_mesh_get_tets(mesh.m), mesh.tets()),
+              LFEM_OK)
+        << lfem_last_error();
+    return b;
+}
+
+inline uint32_t node_count(lfem_world* w, lfem_body b) {
+    uint32_t n = 0;
+    EXPECT_EQ(lfem_body_get_node_count(w, b, &n), LFEM_OK);
+    return n;
+}
+
+inline std::vector<double> positions(lfem_world* w, lfem_body b) {
+    std::vector<double> x(3 * node_count(w, b));
+    EXPECT_EQ(lfem_body_get_positions(w, b, x.data(), uint32_t(x.size() / 3)), LFEM_OK);
+    return x;
+}
+
+inline std::vector<double> velocities(lfem_world* w, lfem_body b) {
+    std::vector<double> v(3 * node_count(w, b));
+    EXPECT_EQ(lfem_body_get_velocities(w, b, v.data(), uint32_t(v.size() / 3)), LFEM_OK);
+    return v;
+}
+
+inline lfem_world_stats stats(lfem_world* w) {
+    lfem_world_stats s{};
+    EXPECT_EQ(lfem_world_get_stats(w, &s), LFEM_OK);
+    return s;
+}
+
+inline double stable_step(lfem_world* w) {
+    double h = 0;
+    EXPECT_EQ(lfem_world_get_stable_step(w, &h), LFEM_OK);
+    return h;
+}
+
+// Nodes of a body within a box.
+inline std::vector<uint32_t> nodes_in_box(lfem_world* w, lfem_body b, const double lo[3],
+                                          const double hi[3]) {
+    uint32_t count = 0;
+    lfem_body_find_nodes_in_box(w, b, lo, hi, nullptr, 0, &count);
+    std::vector<uint32_t> nodes(count);
+    EXPECT_EQ(lfem_body_find_nodes_in_box(w, b, lo, hi, nodes.data(), count, &count), LFEM_OK);
+    return nodes;
+}
+
+// Every byte a user can read back about the given bodies and the world.
+inline std::vector<unsigned char> fingerprint(lfem_world* w, const std::vector<lfem_body>& bodies) {
+    std::vector<unsigned char> out;
+    auto append = [&](const void* p, size_t n) {
+        const unsigned char* c = static_cast<const unsigned char*>(p);
+        out.insert(out.end(), c, c + n);
+    };
+    const lfem_world_stats s = stats(w);
+    append(&s, sizeof s);
+    for (lfem_body b : bodies) {
+        const int valid = lfem_body_is_valid(w, b);
+        append(&valid, sizeof valid);
+        if (!valid) continue;
+        const std::vector<double> x = positions(w, b), v = velocities(w, b);
+        append(x.data(), x.size() * sizeof(double));
+        append(v.data(), v.size() * sizeof(double));
+        uint32_t tets = 0, tris = 0;
+        lfem_body_get_tet_count(w, b, &tets);
+        lfem_body_get_boundary_triangle_count(w, b, &tris);
+        append(&tets, sizeof tets);
+        append(&tris, sizeof tris);
+        std::vector<double> vm(tets);
+        if (tets) lfem_body_get_von_mises_stress(w, b, vm.data(), tets);
+        append(vm.data(), vm.size() * sizeof(double));
+    }
+    return out;
+}
+
+// Sum of signed tet volumes of a body's current configuration (m^3).
+inline double volume(const std::vector<double>& x, const uint32_t* tets, uint32_t tet_count) {
+    double v = 0;
+    for (uint32_t e = 0; e < tet_count; ++e) {
+        const double* a = &x[3 * tets[4 * e]];
+        const double* b = &x[3 * tets[4 * e + 1]];
+        const double* c = &x[3 * tets[4 * e + 2]];
+        const double* d = &x[3 * tets[4 * e + 3]];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double p[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double q[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+        v += (u[0] * (p[1] * q[2] - p[2] * q[1]) - u[1] * (p[0] * q[2] - p[2] * q[0]) +
+              u[2] * (p[0] * q[1] - p[1] * q[0])) / 6.0;
+    }
+    return v;
+}
+
+}  // namespace lfem_test
