@@ -1,4 +1,4 @@
-/* The smallest complete lfem program: a soft beam clamped at one end swings down under
+/* The smallest complete lfem program: a rubber beam clamped at one end swings down under
  * gravity; every 0.05 s it prints the position of the middle of the free end. */
 #include <stdio.h>
 
@@ -18,7 +18,7 @@ int main(void) {
     lfem_world* world = NULL;
     CHECK(lfem_world_create(&world_def, &world));
 
-    /* A 1 m x 0.1 m x 0.1 m beam of soft rubber, 20 x 2 x 2 cells of 6 tets. */
+    /* A 1 m x 0.1 m x 0.1 m beam of stiff rubber, 20 x 2 x 2 cells of 6 tets. */
     const double size[3] = {1.0, 0.1, 0.1};
     const uint32_t cells[3] = {20, 2, 2};
     lfem_mesh* mesh = NULL;
@@ -26,7 +26,7 @@ int main(void) {
 
     lfem_body_def body_def = lfem_body_def_default();
     body_def.model = LFEM_MODEL_COROTATIONAL; /* large bending rotations */
-    body_def.young_modulus = 2e6;             /* Pa */
+    body_def.young_modulus = 5e7;             /* Pa: a stiff rubber */
     body_def.density = 1100;                  /* kg/m^3 */
     body_def.damping = 2.0;                   /* 1/s */
     lfem_body beam;
