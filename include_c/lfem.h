@@ -293,6 +293,34 @@ LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_bo
                                                       const double angular[3]);
 
 /* ---------------------------------------------------------------------------------------- */
+/* Contacts                                                                                   */
+/* ---------------------------------------------------------------------------------------- */
+
+/* One active node-to-triangle contact of the last step (DESIGN.md section 3). The contact point
+ * on body_b's triangle (a, b, c) is (1 - t1 - t2) a + t2 b + t1 c with (t1, t2) = barycentric. */
+typedef struct lfem_contact {
+    lfem_body body_a;        /* the body that owns the node */
+    lfem_body body_b;        /* the body that owns the triangle */
+    uint32_t node;           /* node index in body_a */
+    uint32_t triangle[3];    /* node indices a, b, c in body_b */
+    double barycentric[2];   /* t1, t2 */
+    double position[3];      /* m, the contact point on the triangle */
+    double normal[3];        /* unit, out of body_b's surface (towards body_a) */
+    double force[3];         /* N, the contact force on the node, normal and friction; the
+                                triangle's nodes receive its opposite, split by barycentric
+                                weights */
+    uint8_t sliding;         /* 1 when friction is on the Coulomb cone (slipping), else 0 */
+    uint8_t padding[7];
+} lfem_contact;
+
+/* Copy the active contacts of the last step into out[capacity]. *count is always the total;
+ * LFEM_BUFFER_TOO_SMALL (nothing copied) when it exceeds capacity. out is nullable when
+ * capacity is 0 (to ask for the count). Contacts are listed in a fixed order (by body_a, then
+ * node), so repeated runs give the same list. */
+LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
+                                               size_t capacity, size_t* count);
+
+/* ---------------------------------------------------------------------------------------- */
 /* Meshes: builders and Gmsh import                                                           */
 /* ---------------------------------------------------------------------------------------- */
 

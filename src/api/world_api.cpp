@@ -96,3 +96,19 @@ LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_st
 }
 
 }  // extern "C"
+
+extern "C" LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
+                                                          size_t capacity, size_t* count) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(count, "count");
+        require(capacity == 0 || out != nullptr, "out is NULL with a non-zero capacity");
+        const std::vector<ContactRecord>& contacts = w.contacts();
+        *count = contacts.size();
+        if (contacts.size() > capacity)
+            throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) +
+                                                   " is below the " + std::to_string(contacts.size()) +
+                                                   " active contacts");
+        for (std::size_t i = 0; i < contacts.size(); ++i) out[i] = w.contact_as_c(contacts[i]);
+    });
+}

@@ -281,3 +281,27 @@ lfem_world_stats World::stats() const {
 }
 
 }  // namespace lfem
+
+namespace lfem {
+
+lfem_contact World::contact_as_c(const ContactRecord& c) const {
+    lfem_contact out{};
+    const Body& a = slots_[c.body_a].body;
+    const Body& b = slots_[c.body_b].body;
+    out.body_a = lfem_body{c.body_a, a.generation};
+    out.body_b = lfem_body{c.body_b, b.generation};
+    out.node = c.node;
+    const double w[3] = {1.0 - c.t1 - c.t2, c.t2, c.t1};
+    for (int k = 0; k < 3; ++k) {
+        out.triangle[k] = c.triangle[k];
+        out.normal[k] = c.normal[k];
+        out.force[k] = c.lambda_n * c.normal[k] + c.lambda_t[k];
+        for (int v = 0; v < 3; ++v) out.position[k] += w[v] * b.state.x[3 * c.triangle[v] + k];
+    }
+    out.barycentric[0] = c.t1;
+    out.barycentric[1] = c.t2;
+    out.sliding = c.sliding ? 1 : 0;
+    return out;
+}
+
+}  // namespace lfem

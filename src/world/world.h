@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "contact/contact_record.h"
 #include "lfem.h"
 #include "world/body.h"
 
@@ -61,6 +62,10 @@ public:
     // Synchronized velocities of a body at the current time, 3 per node.
     void synchronized_velocities(const Body& body, double* out) const;
     const WorldCounters& counters() const { return counters_; }
+    // Active contacts after the last sub-step, in a fixed order (body_a, then node).
+    const std::vector<ContactRecord>& contacts() const { return contacts_; }
+    // The C record of a contact (handles, contact point, force).
+    lfem_contact contact_as_c(const ContactRecord& c) const;
 
 private:
     struct Slot {
@@ -72,6 +77,7 @@ private:
     std::vector<Slot> slots_;
     std::vector<uint32_t> free_slots_;
     WorldCounters counters_;
+    std::vector<ContactRecord> contacts_;
 };
 
 }  // namespace lfem

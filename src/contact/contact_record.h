@@ -1,0 +1,22 @@
+// An active node-to-triangle constraint of the forward increment Lagrange multiplier method:
+// node `node` of body `body_a` against triangle `triangle` of body `body_b`, with the
+// barycentric weights of eq. (6) and the multiplier (the contact force, newtons).
+#pragma once
+
+#include <cstdint>
+
+namespace lfem {
+
+struct ContactRecord {
+    uint32_t body_a = 0, node = 0;       // slot index of the node's body, node index
+    uint32_t body_b = 0;                 // slot index of the triangle's body
+    uint32_t triangle[3] = {0, 0, 0};    // node indices a, b, c in body_b
+    double t1 = 0, t2 = 0;               // barycentric: point = (1-t1-t2) a + t2 b + t1 c
+    double normal[3] = {0, 0, 0};        // unit, out of body_b
+    double lambda_n = 0;                 // N, normal multiplier (>= 0: tension release)
+    double lambda_t[3] = {0, 0, 0};      // N, friction multiplier (tangential)
+    double offset = 0;                   // m, initial overlap kept as an offset (>= 0)
+    bool sliding = false;
+};
+
+}  // namespace lfem
