@@ -195,6 +195,10 @@ typedef struct lfem_body_def {
                                    (kinematic bodies: their constant velocity) */
     double angular_velocity[3]; /* rad/s, initial spin about the centre of mass of the body as
                                    it is when a mesh is added */
+    uint32_t category_bits;   /* collision filter: what this body is, default 1 */
+    uint32_t mask_bits;       /* collision filter: what it collides with, default all bits.
+                                 Two bodies touch only if each one's category is in the
+                                 other's mask */
     void* user_data;          /* nullable, returned by lfem_body_get_user_data */
     uint32_t internal_value;  /* set by lfem_body_def_default; do not change */
     uint32_t padding;

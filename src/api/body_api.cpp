@@ -69,6 +69,8 @@ LFEM_API lfem_body_def lfem_body_def_default(void) {
     d.density = 1000.0;
     d.damping = 0.0;
     d.friction = 0.5;
+    d.category_bits = 1u;
+    d.mask_bits = 0xFFFFFFFFu;
     d.user_data = nullptr;
     d.internal_value = body_def_cookie;
     return d;
