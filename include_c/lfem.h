@@ -233,6 +233,15 @@ LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body 
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body,
                                              void** out);
 
+/* Total mass of the body (kg): the sum of its lumped node masses, rho V. */
+LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body, double* out);
+
+/* Linear momentum (kg m/s) and angular momentum about the world origin (kg m^2/s) of the
+ * body, from its synchronized velocities. Static and kinematic bodies report zero. Either
+ * output is nullable. */
+LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body,
+                                            double linear[3], double angular[3]);
+
 /* Copy the current node positions (m) into out[3*node_capacity]. LFEM_BUFFER_TOO_SMALL when
  * node_capacity < node count (nothing written). */
 LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body body,

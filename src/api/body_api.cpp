@@ -132,6 +132,27 @@ LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body 
     });
 }
 
+LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body, double* out) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        *out = b.ref.total_mass;
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body, double linear[3],
+                                            double angular[3]) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        double P[3], L[3];
+        w.body_momentum(w.body(body), P, L);
+        for (int k = 0; k < 3; ++k) {
+            if (linear) linear[k] = P[k];
+            if (angular) angular[k] = L[k];
+        }
+    });
+}
+
 LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body body, double* out,
                                              uint32_t node_capacity) {
     return guard(__func__, [&] {

@@ -20,6 +20,8 @@ struct BodyReference {
     std::vector<double> Dm_inv;     // 9 per tet: inverse reference edge matrix (column-major)
     std::vector<double> volume;     // reference volume per tet (m^3)
     std::vector<uint32_t> boundary; // 3 per outward boundary triangle
+    std::vector<uint32_t> boundary_nodes; // nodes of the boundary, ascending (contact slaves)
+    double edge_length = 0;         // mean boundary edge length (m): contact tolerances
     double total_mass = 0;
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
@@ -34,6 +36,8 @@ struct BodyState {
                                    // the synchronized velocity itself when h_last == 0
     std::vector<double> elastic;   // 3 per node: elastic force -f_int at x (N)
     std::vector<double> tet_rotation; // 4 per tet (w,x,y,z): corotational warm start
+    std::vector<double> contact_force; // 3 per node: contact force of the last step (N);
+                                       // empty while the body touches nothing
     double h_last = 0;             // size of the last step (s); 0 = no step since a reset
     double strain_energy = 0;      // J, at x
     double rotation[4] = {1, 0, 0, 0}; // paper model: global rotation (quaternion w,x,y,z)

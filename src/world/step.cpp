@@ -1,13 +1,19 @@
-// The step pipeline (DESIGN.md section 1): per sub-step, for every moving body,
-//   predictor (central difference, eqs. 1 and 3), [contact: detect and solve multipliers],
-//   global rotation (eq. 2, "paper" model), internal forces at the new positions (commit).
+// The step pipeline (DESIGN.md section 1). Per sub-step:
+//   1. move kinematic bodies; predictor for every deformable body (central difference,
+//      eqs. 1 and 3, with the elastic forces computed element by element at x^n);
+//   2. contact: detect node-triangle pairs between x^n and x* (eqs. 5, 6) and solve the
+//      forward increment multipliers (friction by eq. 7);
+//   3. commit: velocities, global rotation (eq. 2, "paper" model), elastic forces at x^{n+1}.
 // A call is split into equal sub-steps; if the state blows up the world is restored from a
 // snapshot taken at the start of the call.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "common/error.h"
+#include "contact/solve_contact_multipliers.h"
 #include "fem/internal_forces.h"
 #include "fem/material.h"
 #include "fem/tet_element.h"
@@ -23,71 +29,115 @@ std::string seconds(double s) {
     return buf;
 }
 
-// What one body's sub-step adds to the world's energy bookkeeping.
+// What the sub-step adds to the world's energy bookkeeping.
 struct SubstepTally {
-    double kinetic = 0;   // J, of the new mid-step velocities
-    double work = 0;      // J, of gravity, node forces and prescribed nodes over the step
-    double dissipated = 0;// J, by damping over the step
-    double drift = 0;     // rad, eq. (2) rotation against the re-fitted one
+    double kinetic = 0;    // J, of the new mid-step velocities
+    double work = 0;       // J, of gravity, node forces and supports over the step
+    double contact_work = 0; // J, of the contact forces on moving nodes (<= 0 when passive)
+    double damping = 0;    // J, removed by damping over the step
+    double drift = 0;      // rad, eq. (2) rotation against the re-fitted one
 };
 
 Eigen::Quaterniond load_q(const double* q) { return {q[0], q[1], q[2], q[3]}; }
 
-// Central difference predictor (eqs. 1 and 3) written with the mid-step velocity
+double external_force(const Body& b, const double g[3], uint32_t i, int k) {
+    return b.ref.mass[i] * g[k] + (b.node_force.empty() ? 0.0 : b.node_force[3 * i + k]);
+}
+
+// Predictor, central difference (eqs. 1 and 3) written with the mid-step velocity
 // v^{n+1/2} = (x^{n+1} - x^n)/h, which also handles a change of step size:
 //   (m/h_mid + c/2) v^{n+1/2} = (m/h_mid - c/2) v^{n-1/2} + R^n,  h_mid = (h_prev + h)/2,
 // R^n = gravity + node forces + elastic forces at x^n, c = alpha m. With constant h this is
-// exactly x^{n+1} = (R + 2m/h^2 x^n - (m/h^2 - c/2h) x^{n-1}) / (m/h^2 + c/2h). After a reset
+// exactly x* = (R + 2m/h^2 x^n - (m/h^2 - c/2h) x^{n-1}) / (m/h^2 + c/2h). After a reset
 // (h_prev = 0, v^{n-1/2} holds the synchronized velocity) it is the velocity-Verlet start,
-// exact for a constant force.
-void advance_deformable(Body& body, const double gravity[3], double h, SubstepTally& tally) {
+// exact for a constant force. Also records 1/mhat per node for the contact solve.
+template <class Scratch>
+void predict_positions(Body& body, const double gravity[3], double h, Scratch& scratch) {
     BodyState& s = body.state;
     const BodyReference& ref = body.ref;
     const uint32_t n = ref.node_count();
     const double h_mid = s.h_last > 0.0 ? 0.5 * (s.h_last + h) : 0.5 * h;
     const double alpha = body.def.damping;
     const bool paper = body.def.model == LFEM_MODEL_PAPER;
-    const bool has_forces = !body.node_force.empty();
-
-    Vec3 c_old = Vec3::Zero();
-    Eigen::Matrix3d inertia;
-    if (paper) {
-        c_old = center_of_mass(ref.mass.data(), s.x.data(), n);
-        inertia = inertia_tensor(ref.mass.data(), s.x.data(), n, c_old);
-    }
-    Vec3 torque = Vec3::Zero();
-
+    scratch.x_start.assign(s.x.begin(), s.x.end());
+    scratch.v_old.assign(s.v_half.begin(), s.v_half.end());
+    scratch.inv_mass.resize(n);
+    scratch.support_work = 0.0;
+    Vec3 torque = Vec3::Zero(), c = Vec3::Zero();
+    if (paper) c = center_of_mass(ref.mass.data(), s.x.data(), n);
     for (uint32_t i = 0; i < n; ++i) {
         const double m = ref.mass[i];
         const double lhs = m / h_mid + 0.5 * alpha * m, rhs = m / h_mid - 0.5 * alpha * m;
-        double external[3], reaction[3], dx[3];
-        double* x = &s.x[3 * i];
-        double* v = &s.v_half[3 * i];
+        const NodeMode mode = body.node_mode[i];
+        scratch.inv_mass[i] = mode == NodeMode::free ? h / lhs : 0.0;  // dx = (h/lhs) lambda
+        Vec3 reaction;
         for (int k = 0; k < 3; ++k) {
-            external[k] = m * gravity[k] + (has_forces ? body.node_force[3 * i + k] : 0.0);
-            const double R = external[k] + s.elastic[3 * i + k];
+            const double R = external_force(body, gravity, i, k) + s.elastic[3 * i + k];
             double v_new;
-            switch (body.node_mode[i]) {
-                case NodeMode::free: v_new = (rhs * v[k] + R) / lhs; break;
+            switch (mode) {
+                case NodeMode::free: v_new = (rhs * s.v_half[3 * i + k] + R) / lhs; break;
                 case NodeMode::fixed: v_new = 0.0; break;
                 default: v_new = body.prescribed_velocity[3 * i + k]; break;
             }
-            // The support force that makes a fixed or prescribed node follow its motion
-            // (zero for free nodes): it does work and exerts torque like an external force.
-            reaction[k] = lhs * v_new - rhs * v[k] - R;
-            dx[k] = h * v_new;
-            tally.kinetic += 0.5 * m * v_new * v_new;
-            tally.work += (external[k] + reaction[k]) * dx[k];
-            tally.dissipated += alpha * m * 0.5 * (v_new + v[k]) * v_new * h;
-            v[k] = v_new;
-            x[k] += dx[k];
+            // The support force that makes a fixed or prescribed node follow its motion (zero
+            // for free nodes): it does work and exerts torque like an external force.
+            reaction[k] = lhs * v_new - rhs * s.v_half[3 * i + k] - R;
+            s.v_half[3 * i + k] = v_new;
+            s.x[3 * i + k] += h * v_new;
         }
-        if (paper) {
-            const Vec3 r(x[0] - dx[0] - c_old[0], x[1] - dx[1] - c_old[1], x[2] - dx[2] - c_old[2]);
-            torque += r.cross(Vec3(external[0] + reaction[0], external[1] + reaction[1],
-                                   external[2] + reaction[2]));
+        if (mode != NodeMode::free) {
+            const Vec3 dx = Vec3(&s.x[3 * i]) - Vec3(&scratch.x_start[3 * i]);
+            scratch.support_work += reaction.dot(dx);
+            if (paper) torque += (Vec3(&scratch.x_start[3 * i]) - c).cross(reaction);
         }
     }
+    for (int k = 0; k < 3; ++k) scratch.support_torque[k] = torque[k];
+}
+
+// Commit: velocities from the corrected positions, energy bookkeeping, eq. (2) and the
+// re-fit of the global rotation ("paper"), elastic forces at x^{n+1} for the next step.
+template <class Scratch>
+void commit_step(Body& body, const double gravity[3], double h, const Scratch& scratch,
+                 bool touched, SubstepTally& tally) {
+    BodyState& s = body.state;
+    const BodyReference& ref = body.ref;
+    const uint32_t n = ref.node_count();
+    const double alpha = body.def.damping;
+    const bool paper = body.def.model == LFEM_MODEL_PAPER;
+    Vec3 c_old = Vec3::Zero(), torque(scratch.support_torque);
+    Eigen::Matrix3d inertia;
+    if (paper) {
+        c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n);
+        inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old);
+    }
+    if (touched) s.contact_force.assign(3 * std::size_t(n), 0.0);
+    else std::vector<double>().swap(s.contact_force);  // nothing held while not touching
+    double kinetic = 0.0, work = scratch.support_work, contact_work = 0.0, damping = 0.0;
+    for (uint32_t i = 0; i < n; ++i) {
+        const double m = ref.mass[i];
+        Vec3 f_ext, f_contact = Vec3::Zero(), dx;
+        for (int k = 0; k < 3; ++k) {
+            dx[k] = s.x[3 * i + k] - scratch.x_start[3 * i + k];
+            f_ext[k] = external_force(body, gravity, i, k);
+            if (touched && scratch.inv_mass[i] > 0.0) {
+                // The solve moved the node by (x - x*) = lambda / mhat: its contact force.
+                const double correction = dx[k] - h * s.v_half[3 * i + k];
+                f_contact[k] = correction / scratch.inv_mass[i];
+                s.contact_force[3 * i + k] = f_contact[k];
+                s.v_half[3 * i + k] = dx[k] / h;
+            }
+            const double v = s.v_half[3 * i + k];
+            kinetic += 0.5 * m * v * v;
+            damping += alpha * m * 0.5 * (v + scratch.v_old[3 * i + k]) * v * h;
+        }
+        work += f_ext.dot(dx);
+        contact_work += f_contact.dot(dx);
+        if (paper) torque += (Vec3(&scratch.x_start[3 * i]) - c_old).cross(f_ext + f_contact);
+    }
+    tally.kinetic += kinetic;
+    tally.work += work;
+    tally.contact_work += contact_work;
+    tally.damping += damping;
 
     if (paper) {
         // Eq. (2) predicts the frame's rotation; re-fitting it to the nodes keeps it free of
@@ -125,29 +175,105 @@ void advance_kinematic(Body& body, double h) {
 
 }  // namespace
 
+// Contact stage: detection between x^n and x*, then the multiplier solve, which moves the
+// predicted positions to x^{n+1}. Warm start from the last sub-step's multipliers of the same
+// (node, body) pair.
+void World::solve_contacts() {
+    contact_bodies_.clear();
+    contact_body_of_slot_.assign(slots_.size(), UINT32_MAX);
+    uint32_t movable = 0;
+    for (uint32_t i = 0; i < slots_.size(); ++i) {
+        Body& b = slots_[i].body;
+        if (b.generation == 0 || !b.has_mesh()) continue;
+        ContactBody cb;
+        cb.slot = i;
+        cb.triangles = b.ref.boundary.data();
+        cb.triangle_count = uint32_t(b.ref.boundary.size() / 3);
+        cb.nodes = b.ref.boundary_nodes.data();
+        cb.node_count = uint32_t(b.ref.boundary_nodes.size());
+        cb.x = b.state.x.data();
+        cb.x_start = b.def.type == LFEM_BODY_STATIC ? b.state.x.data() : scratch_[i].x_start.data();
+        cb.inv_mass = b.is_deformable() ? scratch_[i].inv_mass.data() : nullptr;
+        cb.friction = b.def.friction;
+        cb.category = b.def.category_bits;
+        cb.mask = b.def.mask_bits;
+        cb.edge_length = b.ref.edge_length;
+        contact_body_of_slot_[i] = uint32_t(contact_bodies_.size());
+        contact_bodies_.push_back(cb);
+        movable += b.is_deformable();
+    }
+    detected_.clear();
+    counters_.solver_iterations = 0;
+    counters_.solver_residual = 0.0;
+    counters_.max_penetration = 0.0;
+    if (movable > 0 && contact_bodies_.size() > 1) detect_node_triangle(contact_bodies_, detection_, detected_);
+    // Warm start: both lists are ordered by (body_a, node, body_b).
+    std::size_t k = 0;
+    double motion = 0.0, length = HUGE_VAL;
+    for (ContactRecord& r : detected_) {
+        while (k < contacts_.size() &&
+               std::tie(contacts_[k].body_a, contacts_[k].node, contacts_[k].body_b) <
+                   std::tie(r.body_a, r.node, r.body_b))
+            ++k;
+        if (k < contacts_.size() && contacts_[k].body_a == r.body_a && contacts_[k].node == r.node &&
+            contacts_[k].body_b == r.body_b) {
+            r.lambda_n = contacts_[k].lambda_n;
+            for (int d = 0; d < 3; ++d) r.lambda_t[d] = contacts_[k].lambda_t[d];
+        }
+        // The scale of this step's relative motion sets the stopping tolerance.
+        const ContactBody& a = contact_bodies_[contact_body_of_slot_[r.body_a]];
+        for (int d = 0; d < 3; ++d)
+            motion = std::max(motion, std::fabs(a.x[3 * r.node + d] - a.x_start[3 * r.node + d]));
+        length = std::min(length, a.edge_length);
+    }
+    if (!detected_.empty()) {
+        // Stop when a sweep moves no node by more than contact_tolerance times this step's
+        // motion, or 1e-9 of the finest boundary edge when nothing moves (resting contact).
+        const double tolerance = std::max(def_.contact_tolerance * motion, 1e-9 * length);
+        const ContactSolveResult res = solve_contact_multipliers(
+            contact_bodies_, contact_body_of_slot_, detected_, def_.contact_iterations, tolerance);
+        counters_.solver_iterations = res.iterations;
+        counters_.solver_residual = res.residual;
+        counters_.max_penetration = res.max_penetration;
+    }
+    // Keep only the pairs that carry force: they are the active contacts.
+    contacts_.clear();
+    for (const ContactRecord& r : detected_)
+        if (r.lambda_n > 0.0) contacts_.push_back(r);
+}
+
 void World::substep(double h, double& kinetic, double& strain, double& work) {
     SubstepTally tally;
-    for (Slot& slot : slots_) {
-        Body& b = slot.body;
+    scratch_.resize(slots_.size());
+    for (uint32_t i = 0; i < slots_.size(); ++i) {
+        Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_mesh()) continue;
         if (b.is_deformable()) {
-            advance_deformable(b, def_.gravity, h, tally);
-            strain += b.state.strain_energy;
+            predict_positions(b, def_.gravity, h, scratch_[i]);
         } else if (b.def.type == LFEM_BODY_KINEMATIC) {
+            scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
             advance_kinematic(b, h);
         }
         // Static bodies: nothing to do.
     }
+    solve_contacts();
+    std::vector<uint8_t> touched(slots_.size(), 0);
+    for (const ContactRecord& r : contacts_) touched[r.body_a] = touched[r.body_b] = 1;
+    for (uint32_t i = 0; i < slots_.size(); ++i) {
+        Body& b = slots_[i].body;
+        if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;
+        commit_step(b, def_.gravity, h, scratch_[i], touched[i] != 0, tally);
+        strain += b.state.strain_energy;
+    }
     kinetic = tally.kinetic;
-    work += tally.work;
+    work += tally.work + tally.contact_work;
     counters_.external_work += tally.work;
-    counters_.dissipated_energy += tally.dissipated;
+    counters_.dissipated_energy += tally.damping - tally.contact_work;
     counters_.rotation_drift = tally.drift;
     counters_.time += h;
     counters_.steps += 1;
     counters_.step_size = h;
 }
-
 void World::step(double dt) {
     const double limit = stable_step();
     double h_allowed;
@@ -177,6 +303,7 @@ void World::step(double dt) {
     saved.reserve(slots_.size());
     for (const Slot& s : slots_) saved.push_back(s.body.state);
     const WorldCounters saved_counters = counters_;
+    const std::vector<ContactRecord> saved_contacts = contacts_;
 
     // Energy of the moving bodies at the start, for the blow-up test below.
     double start_energy = 0.0, scale = 0.0;
@@ -204,6 +331,7 @@ void World::step(double dt) {
         if (!std::isfinite(balance) || balance > 2.0 * start_energy + scale) {
             for (std::size_t i = 0; i < slots_.size(); ++i) slots_[i].body.state = std::move(saved[i]);
             counters_ = saved_counters;
+            contacts_ = saved_contacts;
             throw Error(LFEM_UNSTABLE,
                         "the state blew up at sub-step " + std::to_string(k + 1) + " of " +
                             std::to_string(substeps) + " (step " + seconds(h) +

@@ -99,6 +99,20 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     std::vector<uint32_t> boundary = extract_boundary_triangles(tets, tet_count);
     for (uint32_t& v : boundary) v += old_nodes;
     ref.boundary.insert(ref.boundary.end(), boundary.begin(), boundary.end());
+    {
+        std::vector<uint8_t> on_boundary(ref.X.size() / 3, 0);
+        double edges = 0.0;
+        for (std::size_t t = 0; t < ref.boundary.size(); t += 3)
+            for (int v = 0; v < 3; ++v) {
+                const uint32_t i = ref.boundary[t + v], j = ref.boundary[t + (v + 1) % 3];
+                on_boundary[i] = 1;
+                edges += (Vec3(&ref.X[3 * i]) - Vec3(&ref.X[3 * j])).norm();
+            }
+        ref.edge_length = edges / double(ref.boundary.size());
+        ref.boundary_nodes.clear();
+        for (uint32_t i = 0; i < on_boundary.size(); ++i)
+            if (on_boundary[i]) ref.boundary_nodes.push_back(i);
+    }
     ref.Dm_inv.resize(9 * std::size_t(old_tets + tet_count));
     ref.volume.resize(old_tets + tet_count);
     const double rho = body.def.density;
@@ -236,6 +250,9 @@ void World::synchronized_velocities(const Body& body, double* out) const {
                         const double m = body.ref.mass[i];
                         double R = m * g[k] + s.elastic[3 * i + k];
                         if (!body.node_force.empty()) R += body.node_force[3 * i + k];
+                        // The last step's contact force is the best estimate of this one's
+                        // (forward increment): a body at rest on a floor reports 0, not g h/2.
+                        if (!s.contact_force.empty()) R += s.contact_force[3 * i + k];
                         v = (2.0 * m / h * v + R) / (2.0 * m / h + body.def.damping * m);
                     }
                     break;
@@ -256,25 +273,25 @@ lfem_world_stats World::stats() const {
     st.external_work = counters_.external_work;
     st.dissipated_energy = counters_.dissipated_energy;
     st.rotation_drift = counters_.rotation_drift;
-    Vec3 P = Vec3::Zero(), L = Vec3::Zero();
+    st.contact_count = uint32_t(contacts_.size());
+    st.solver_iterations = counters_.solver_iterations;
+    st.solver_residual = counters_.solver_residual;
+    st.max_penetration = counters_.max_penetration;
     std::vector<double> v;
     for_each_body([&](const Body& b, uint32_t) {
         if (!b.is_deformable() || !b.has_mesh()) return;
         v.resize(b.state.v_half.size());
         synchronized_velocities(b, v.data());
-        for (uint32_t i = 0; i < b.ref.node_count(); ++i) {
-            const Vec3 vi(&v[3 * i]), xi(&b.state.x[3 * i]);
-            const double m = b.ref.mass[i];
-            st.kinetic_energy += 0.5 * m * vi.squaredNorm();
-            P += m * vi;
-            L += m * xi.cross(vi);
+        for (uint32_t i = 0; i < b.ref.node_count(); ++i)
+            st.kinetic_energy += 0.5 * b.ref.mass[i] * Vec3(&v[3 * i]).squaredNorm();
+        double P[3], L[3];
+        body_momentum(b, P, L);
+        for (int k = 0; k < 3; ++k) {
+            st.linear_momentum[k] += P[k];
+            st.angular_momentum[k] += L[k];
         }
         st.strain_energy += b.state.strain_energy;
     });
-    for (int k = 0; k < 3; ++k) {
-        st.linear_momentum[k] = P[k];
-        st.angular_momentum[k] = L[k];
-    }
     st.energy_error = st.kinetic_energy + st.strain_energy + st.dissipated_energy -
                       st.external_work - counters_.initial_energy;
     return st;
@@ -283,6 +300,20 @@ lfem_world_stats World::stats() const {
 }  // namespace lfem
 
 namespace lfem {
+
+void World::body_momentum(const Body& b, double linear[3], double angular[3]) const {
+    Vec3 P = Vec3::Zero(), L = Vec3::Zero();
+    if (b.is_deformable() && b.has_mesh()) {
+        std::vector<double> v(b.state.v_half.size());
+        synchronized_velocities(b, v.data());
+        for (uint32_t i = 0; i < b.ref.node_count(); ++i) {
+            const Vec3 vi(&v[3 * i]);
+            P += b.ref.mass[i] * vi;
+            L += b.ref.mass[i] * Vec3(&b.state.x[3 * i]).cross(vi);
+        }
+    }
+    for (int k = 0; k < 3; ++k) linear[k] = P[k], angular[k] = L[k];
+}
 
 lfem_contact World::contact_as_c(const ContactRecord& c) const {
     lfem_contact out{};

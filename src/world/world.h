@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "contact/contact_body.h"
 #include "contact/contact_record.h"
+#include "contact/detect_node_triangle.h"
 #include "lfem.h"
 #include "world/body.h"
 
@@ -22,6 +24,9 @@ struct WorldCounters {
     double dissipated_energy = 0;  // J, since creation
     double initial_energy = 0;     // J, kinetic energy given with meshes and by set_velocities
     double rotation_drift = 0;     // rad, last sub-step
+    uint32_t solver_iterations = 0;  // contact solve of the last sub-step
+    double solver_residual = 0;      // m
+    double max_penetration = 0;      // m
 };
 
 class World {
@@ -59,6 +64,8 @@ public:
     void step(double dt);
 
     lfem_world_stats stats() const;
+    // Linear momentum and angular momentum about the origin of one body.
+    void body_momentum(const Body& body, double linear[3], double angular[3]) const;
     // Synchronized velocities of a body at the current time, 3 per node.
     void synchronized_velocities(const Body& body, double* out) const;
     const WorldCounters& counters() const { return counters_; }
@@ -71,13 +78,26 @@ private:
     struct Slot {
         Body body;  // generation 0 = free slot
     };
+    // Per-slot arrays a sub-step needs beside the body state (not rolled back: rebuilt
+    // every sub-step).
+    struct StepScratch {
+        std::vector<double> x_start, v_old, inv_mass;
+        double support_work = 0;
+        double support_torque[3] = {0, 0, 0};
+    };
     void substep(double h, double& kinetic, double& strain, double& work);
+    void solve_contacts();
 
     lfem_world_def def_;
     std::vector<Slot> slots_;
     std::vector<uint32_t> free_slots_;
     WorldCounters counters_;
     std::vector<ContactRecord> contacts_;
+    std::vector<StepScratch> scratch_;
+    std::vector<ContactBody> contact_bodies_;
+    std::vector<uint32_t> contact_body_of_slot_;
+    std::vector<ContactRecord> detected_;
+    DetectionScratch detection_;
 };
 
 }  // namespace lfem

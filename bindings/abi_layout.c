@@ -1,0 +1,91 @@
+/* The C layout of every struct of lfem.h that the bindings mirror. The bindings hard-code these
+ * numbers (Rust: const assertions on size_of plus offset tests; C#: Marshal.SizeOf/OffsetOf;
+ * Python: ctypes.sizeof and field offsets); the static assertions below make the build fail if
+ * the header ever changes a layout, so the numbers cannot go stale silently. Run, it prints the
+ * table. Built as C11 (for _Static_assert), against the unchanged C99 header. */
+#include <stddef.h>
+#include <stdio.h>
+
+#include "lfem.h"
+
+#define CHECK_SIZE(type, n) _Static_assert(sizeof(type) == (n), "sizeof(" #type ") != " #n)
+#define CHECK_OFFSET(type, field, n) \
+    _Static_assert(offsetof(type, field) == (n), "offsetof(" #type ", " #field ") != " #n)
+
+/* enums are 32-bit */
+CHECK_SIZE(lfem_status, 4);
+CHECK_SIZE(lfem_body_type, 4);
+CHECK_SIZE(lfem_model, 4);
+
+CHECK_SIZE(lfem_body, 8);
+CHECK_OFFSET(lfem_body, index, 0);
+CHECK_OFFSET(lfem_body, generation, 4);
+
+CHECK_SIZE(lfem_world_def, 72);
+CHECK_OFFSET(lfem_world_def, gravity, 0);
+CHECK_OFFSET(lfem_world_def, time_step, 24);
+CHECK_OFFSET(lfem_world_def, step_safety, 32);
+CHECK_OFFSET(lfem_world_def, contact_iterations, 40);
+CHECK_OFFSET(lfem_world_def, contact_tolerance, 48);
+CHECK_OFFSET(lfem_world_def, max_substeps, 56);
+CHECK_OFFSET(lfem_world_def, allow_unstable_step, 60);
+CHECK_OFFSET(lfem_world_def, internal_value, 64);
+
+CHECK_SIZE(lfem_world_stats, 160);
+CHECK_OFFSET(lfem_world_stats, time, 0);
+CHECK_OFFSET(lfem_world_stats, steps, 8);
+CHECK_OFFSET(lfem_world_stats, step_size, 16);
+CHECK_OFFSET(lfem_world_stats, stable_step, 24);
+CHECK_OFFSET(lfem_world_stats, substeps_last_call, 32);
+CHECK_OFFSET(lfem_world_stats, body_count, 36);
+CHECK_OFFSET(lfem_world_stats, kinetic_energy, 40);
+CHECK_OFFSET(lfem_world_stats, strain_energy, 48);
+CHECK_OFFSET(lfem_world_stats, external_work, 56);
+CHECK_OFFSET(lfem_world_stats, dissipated_energy, 64);
+CHECK_OFFSET(lfem_world_stats, energy_error, 72);
+CHECK_OFFSET(lfem_world_stats, linear_momentum, 80);
+CHECK_OFFSET(lfem_world_stats, angular_momentum, 104);
+CHECK_OFFSET(lfem_world_stats, contact_count, 128);
+CHECK_OFFSET(lfem_world_stats, solver_iterations, 132);
+CHECK_OFFSET(lfem_world_stats, solver_residual, 136);
+CHECK_OFFSET(lfem_world_stats, max_penetration, 144);
+CHECK_OFFSET(lfem_world_stats, rotation_drift, 152);
+
+/* 64-bit targets (8-byte pointers), which every binding test runs on */
+CHECK_SIZE(void*, 8);
+CHECK_SIZE(lfem_body_def, 120);
+CHECK_OFFSET(lfem_body_def, type, 0);
+CHECK_OFFSET(lfem_body_def, model, 4);
+CHECK_OFFSET(lfem_body_def, young_modulus, 8);
+CHECK_OFFSET(lfem_body_def, poisson_ratio, 16);
+CHECK_OFFSET(lfem_body_def, density, 24);
+CHECK_OFFSET(lfem_body_def, damping, 32);
+CHECK_OFFSET(lfem_body_def, friction, 40);
+CHECK_OFFSET(lfem_body_def, linear_velocity, 48);
+CHECK_OFFSET(lfem_body_def, angular_velocity, 72);
+CHECK_OFFSET(lfem_body_def, category_bits, 96);
+CHECK_OFFSET(lfem_body_def, mask_bits, 100);
+CHECK_OFFSET(lfem_body_def, user_data, 104);
+CHECK_OFFSET(lfem_body_def, internal_value, 112);
+CHECK_OFFSET(lfem_body_def, padding, 116);
+
+CHECK_SIZE(lfem_contact, 128);
+CHECK_OFFSET(lfem_contact, body_a, 0);
+CHECK_OFFSET(lfem_contact, body_b, 8);
+CHECK_OFFSET(lfem_contact, node, 16);
+CHECK_OFFSET(lfem_contact, triangle, 20);
+CHECK_OFFSET(lfem_contact, barycentric, 32);
+CHECK_OFFSET(lfem_contact, position, 48);
+CHECK_OFFSET(lfem_contact, normal, 72);
+CHECK_OFFSET(lfem_contact, force, 96);
+CHECK_OFFSET(lfem_contact, sliding, 120);
+CHECK_OFFSET(lfem_contact, padding, 121);
+
+int main(void) {
+    printf("lfem_status %zu\nlfem_body_type %zu\nlfem_model %zu\n", sizeof(lfem_status),
+           sizeof(lfem_body_type), sizeof(lfem_model));
+    printf("lfem_body %zu\nlfem_world_def %zu\nlfem_world_stats %zu\n", sizeof(lfem_body),
+           sizeof(lfem_world_def), sizeof(lfem_world_stats));
+    printf("lfem_body_def %zu\nlfem_contact %zu\n", sizeof(lfem_body_def), sizeof(lfem_contact));
+    return 0;
+}

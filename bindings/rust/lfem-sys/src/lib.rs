@@ -1,0 +1,321 @@
+//! Raw declarations of `lfem.h`, the C ABI of lfem, written by hand: one `extern "C"` item per
+//! function, `#[repr(C)]` structs with the C layout (checked at compile time against the sizes
+//! that `bindings/abi_layout.c` asserts in C), enums as 32-bit integers with constants.
+//!
+//! Everything here is `unsafe` and follows the C contract documented in `lfem.h`. Use the `lfem`
+//! crate for a safe API.
+#![allow(non_camel_case_types)]
+
+use std::marker::{PhantomData, PhantomPinned};
+use std::mem::size_of;
+use std::os::raw::{c_char, c_double, c_int, c_void};
+
+pub const LFEM_VERSION_MAJOR: u32 = 0;
+pub const LFEM_VERSION_MINOR: u32 = 1;
+pub const LFEM_VERSION_PATCH: u32 = 0;
+
+// ---- enums: 32-bit integers in C; kept as integers here (an unknown value is not UB) ---------
+
+pub type lfem_status = c_int;
+pub const LFEM_OK: lfem_status = 0;
+pub const LFEM_INVALID_ARGUMENT: lfem_status = 1;
+pub const LFEM_INVALID_MESH: lfem_status = 2;
+pub const LFEM_INVALID_HANDLE: lfem_status = 3;
+pub const LFEM_BUFFER_TOO_SMALL: lfem_status = 4;
+pub const LFEM_UNSTABLE: lfem_status = 5;
+pub const LFEM_IO_ERROR: lfem_status = 6;
+pub const LFEM_OUT_OF_MEMORY: lfem_status = 7;
+pub const LFEM_INTERNAL_ERROR: lfem_status = 8;
+
+pub type lfem_body_type = c_int;
+pub const LFEM_BODY_DEFORMABLE: lfem_body_type = 0;
+pub const LFEM_BODY_STATIC: lfem_body_type = 1;
+pub const LFEM_BODY_KINEMATIC: lfem_body_type = 2;
+
+pub type lfem_model = c_int;
+pub const LFEM_MODEL_PAPER: lfem_model = 0;
+pub const LFEM_MODEL_COROTATIONAL: lfem_model = 1;
+pub const LFEM_MODEL_NEO_HOOKEAN: lfem_model = 2;
+pub const LFEM_MODEL_LINEAR: lfem_model = 3;
+
+// ---- opaque objects ------------------------------------------------------------------------
+
+/// Opaque world (`lfem_world*`).
+#[repr(C)]
+pub struct lfem_world {
+    _data: [u8; 0],
+    _marker: PhantomData<(*mut u8, PhantomPinned)>,
+}
+
+/// Opaque mesh (`lfem_mesh*`).
+#[repr(C)]
+pub struct lfem_mesh {
+    _data: [u8; 0],
+    _marker: PhantomData<(*mut u8, PhantomPinned)>,
+}
+
+/// Opaque VTK time series (`lfem_vtk_series*`).
+#[repr(C)]
+pub struct lfem_vtk_series {
+    _data: [u8; 0],
+    _marker: PhantomData<(*mut u8, PhantomPinned)>,
+}
+
+// ---- structs ---------------------------------------------------------------------------------
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct lfem_world_def {
+    pub gravity: [c_double; 3],
+    pub time_step: c_double,
+    pub step_safety: c_double,
+    pub contact_iterations: u32,
+    pub contact_tolerance: c_double,
+    pub max_substeps: u32,
+    pub allow_unstable_step: u8,
+    pub padding: [u8; 3],
+    pub internal_value: u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_world_stats {
+    pub time: c_double,
+    pub steps: u64,
+    pub step_size: c_double,
+    pub stable_step: c_double,
+    pub substeps_last_call: u32,
+    pub body_count: u32,
+    pub kinetic_energy: c_double,
+    pub strain_energy: c_double,
+    pub external_work: c_double,
+    pub dissipated_energy: c_double,
+    pub energy_error: c_double,
+    pub linear_momentum: [c_double; 3],
+    pub angular_momentum: [c_double; 3],
+    pub contact_count: u32,
+    pub solver_iterations: u32,
+    pub solver_residual: c_double,
+    pub max_penetration: c_double,
+    pub rotation_drift: c_double,
+}
+
+/// A body handle: a value, `{0, 0}` is the null handle.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct lfem_body {
+    pub index: u32,
+    pub generation: u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct lfem_body_def {
+    pub type_: lfem_body_type,
+    pub model: lfem_model,
+    pub young_modulus: c_double,
+    pub poisson_ratio: c_double,
+    pub density: c_double,
+    pub damping: c_double,
+    pub friction: c_double,
+    pub linear_velocity: [c_double; 3],
+    pub angular_velocity: [c_double; 3],
+    pub category_bits: u32,
+    pub mask_bits: u32,
+    pub user_data: *mut c_void,
+    pub internal_value: u32,
+    pub padding: u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_contact {
+    pub body_a: lfem_body,
+    pub body_b: lfem_body,
+    pub node: u32,
+    pub triangle: [u32; 3],
+    pub barycentric: [c_double; 2],
+    pub position: [c_double; 3],
+    pub normal: [c_double; 3],
+    pub force: [c_double; 3],
+    pub sliding: u8,
+    pub padding: [u8; 7],
+}
+
+// The C sizes (bindings/abi_layout.c asserts the same numbers with _Static_assert).
+const _: () = assert!(size_of::<lfem_status>() == 4);
+const _: () = assert!(size_of::<lfem_body_type>() == 4);
+const _: () = assert!(size_of::<lfem_model>() == 4);
+const _: () = assert!(size_of::<lfem_body>() == 8);
+const _: () = assert!(size_of::<lfem_world_def>() == 72);
+const _: () = assert!(size_of::<lfem_world_stats>() == 160);
+const _: () = assert!(size_of::<lfem_contact>() == 128);
+#[cfg(target_pointer_width = "64")]
+const _: () = assert!(size_of::<lfem_body_def>() == 120);
+
+// ---- functions -------------------------------------------------------------------------------
+// Linked by build.rs (cargo:rustc-link-lib=dylib=lfem).
+
+extern "C" {
+    // status and errors
+    pub fn lfem_status_string(status: lfem_status) -> *const c_char;
+    pub fn lfem_last_error() -> *const c_char;
+    pub fn lfem_version() -> u32;
+    pub fn lfem_version_string() -> *const c_char;
+
+    // world
+    pub fn lfem_world_def_default() -> lfem_world_def;
+    pub fn lfem_world_create(def: *const lfem_world_def, out: *mut *mut lfem_world) -> lfem_status;
+    pub fn lfem_world_destroy(world: *mut lfem_world);
+    pub fn lfem_world_step(world: *mut lfem_world, dt: c_double) -> lfem_status;
+    pub fn lfem_world_set_gravity(world: *mut lfem_world, gravity: *const c_double) -> lfem_status;
+    pub fn lfem_world_set_time_step(world: *mut lfem_world, time_step: c_double) -> lfem_status;
+    pub fn lfem_world_get_stable_step(world: *const lfem_world, out: *mut c_double) -> lfem_status;
+    pub fn lfem_world_get_stats(world: *const lfem_world, out: *mut lfem_world_stats) -> lfem_status;
+
+    // bodies
+    pub fn lfem_body_def_default() -> lfem_body_def;
+    pub fn lfem_body_create(
+        world: *mut lfem_world,
+        def: *const lfem_body_def,
+        out: *mut lfem_body,
+    ) -> lfem_status;
+    pub fn lfem_body_destroy(world: *mut lfem_world, body: lfem_body) -> lfem_status;
+    pub fn lfem_body_is_valid(world: *const lfem_world, body: lfem_body) -> c_int;
+    pub fn lfem_body_add_mesh(
+        world: *mut lfem_world,
+        body: lfem_body,
+        positions: *const c_double,
+        node_count: u32,
+        tets: *const u32,
+        tet_count: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_node_count(world: *const lfem_world, body: lfem_body, out: *mut u32) -> lfem_status;
+    pub fn lfem_body_get_tet_count(world: *const lfem_world, body: lfem_body, out: *mut u32) -> lfem_status;
+    pub fn lfem_body_get_user_data(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut *mut c_void,
+    ) -> lfem_status;
+
+    // state
+    pub fn lfem_body_get_positions(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut c_double,
+        node_capacity: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_velocities(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut c_double,
+        node_capacity: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_set_velocities(
+        world: *mut lfem_world,
+        body: lfem_body,
+        velocities: *const c_double,
+        node_count: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_boundary_triangle_count(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_boundary_triangles(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut u32,
+        triangle_capacity: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_von_mises_stress(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut c_double,
+        tet_capacity: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_rotation(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
+    pub fn lfem_body_find_nodes_in_box(
+        world: *const lfem_world,
+        body: lfem_body,
+        lo: *const c_double,
+        hi: *const c_double,
+        out: *mut u32,
+        capacity: u32,
+        count: *mut u32,
+    ) -> lfem_status;
+
+    // loads and supports
+    pub fn lfem_body_fix_nodes(world: *mut lfem_world, body: lfem_body, nodes: *const u32, count: u32) -> lfem_status;
+    pub fn lfem_body_prescribe_node_velocity(
+        world: *mut lfem_world,
+        body: lfem_body,
+        nodes: *const u32,
+        count: u32,
+        velocity: *const c_double,
+    ) -> lfem_status;
+    pub fn lfem_body_release_nodes(world: *mut lfem_world, body: lfem_body, nodes: *const u32, count: u32) -> lfem_status;
+    pub fn lfem_body_set_node_forces(
+        world: *mut lfem_world,
+        body: lfem_body,
+        nodes: *const u32,
+        count: u32,
+        forces: *const c_double,
+    ) -> lfem_status;
+    pub fn lfem_body_clear_node_forces(world: *mut lfem_world, body: lfem_body) -> lfem_status;
+    pub fn lfem_body_set_kinematic_velocity(
+        world: *mut lfem_world,
+        body: lfem_body,
+        linear: *const c_double,
+        angular: *const c_double,
+    ) -> lfem_status;
+
+    // contacts
+    pub fn lfem_world_query_contacts(
+        world: *const lfem_world,
+        out: *mut lfem_contact,
+        capacity: usize,
+        count: *mut usize,
+    ) -> lfem_status;
+
+    // meshes
+    pub fn lfem_mesh_create_box(size: *const c_double, cells: *const u32, out: *mut *mut lfem_mesh) -> lfem_status;
+    pub fn lfem_mesh_create_cylinder(
+        radius: c_double,
+        height: c_double,
+        segments: u32,
+        rings: u32,
+        layers: u32,
+        out: *mut *mut lfem_mesh,
+    ) -> lfem_status;
+    pub fn lfem_mesh_create_cup(
+        outer_radius: c_double,
+        height: c_double,
+        wall: c_double,
+        bottom: c_double,
+        segments: u32,
+        layers: u32,
+        out: *mut *mut lfem_mesh,
+    ) -> lfem_status;
+    pub fn lfem_mesh_create_hammer(
+        handle_length: c_double,
+        handle_width: c_double,
+        head_length: c_double,
+        head_width: c_double,
+        cell_size: c_double,
+        out: *mut *mut lfem_mesh,
+    ) -> lfem_status;
+    pub fn lfem_mesh_load_gmsh(path: *const c_char, out: *mut *mut lfem_mesh) -> lfem_status;
+    pub fn lfem_mesh_destroy(mesh: *mut lfem_mesh);
+    pub fn lfem_mesh_get_node_count(mesh: *const lfem_mesh) -> u32;
+    pub fn lfem_mesh_get_tet_count(mesh: *const lfem_mesh) -> u32;
+    pub fn lfem_mesh_get_positions(mesh: *const lfem_mesh) -> *const c_double;
+    pub fn lfem_mesh_get_tets(mesh: *const lfem_mesh) -> *const u32;
+    pub fn lfem_mesh_translate(mesh: *mut lfem_mesh, offset: *const c_double) -> lfem_status;
+    pub fn lfem_mesh_rotate(mesh: *mut lfem_mesh, axis: *const c_double, angle: c_double) -> lfem_status;
+
+    // output
+    pub fn lfem_vtk_series_create(pvd_path: *const c_char, out: *mut *mut lfem_vtk_series) -> lfem_status;
+    pub fn lfem_vtk_series_write_frame(series: *mut lfem_vtk_series, world: *const lfem_world) -> lfem_status;
+    pub fn lfem_vtk_series_destroy(series: *mut lfem_vtk_series);
+}

@@ -1,0 +1,104 @@
+//! Field offsets of the #[repr(C)] structs against the C ones (the numbers asserted by
+//! bindings/abi_layout.c), and the C default functions returning what lfem.h documents.
+use lfem_sys::*;
+use std::mem::{align_of, size_of, MaybeUninit};
+use std::ptr::addr_of;
+
+macro_rules! offset {
+    ($t:ty, $f:ident) => {{
+        let v = MaybeUninit::<$t>::uninit();
+        let base = v.as_ptr();
+        // SAFETY: addr_of! takes the field's address without reading it.
+        let field = unsafe { addr_of!((*base).$f) };
+        field as usize - base as usize
+    }};
+}
+
+#[test]
+fn sizes_match_c() {
+    assert_eq!(size_of::<lfem_body>(), 8);
+    assert_eq!(size_of::<lfem_world_def>(), 72);
+    assert_eq!(size_of::<lfem_world_stats>(), 160);
+    assert_eq!(size_of::<lfem_body_def>(), 120);
+    assert_eq!(size_of::<lfem_contact>(), 128);
+    assert_eq!(align_of::<lfem_world_def>(), 8);
+    assert_eq!(align_of::<lfem_body>(), 4);
+}
+
+#[test]
+fn offsets_match_c() {
+    assert_eq!(offset!(lfem_body, generation), 4);
+
+    assert_eq!(offset!(lfem_world_def, time_step), 24);
+    assert_eq!(offset!(lfem_world_def, step_safety), 32);
+    assert_eq!(offset!(lfem_world_def, contact_iterations), 40);
+    assert_eq!(offset!(lfem_world_def, contact_tolerance), 48);
+    assert_eq!(offset!(lfem_world_def, max_substeps), 56);
+    assert_eq!(offset!(lfem_world_def, allow_unstable_step), 60);
+    assert_eq!(offset!(lfem_world_def, internal_value), 64);
+
+    assert_eq!(offset!(lfem_world_stats, steps), 8);
+    assert_eq!(offset!(lfem_world_stats, substeps_last_call), 32);
+    assert_eq!(offset!(lfem_world_stats, body_count), 36);
+    assert_eq!(offset!(lfem_world_stats, kinetic_energy), 40);
+    assert_eq!(offset!(lfem_world_stats, energy_error), 72);
+    assert_eq!(offset!(lfem_world_stats, linear_momentum), 80);
+    assert_eq!(offset!(lfem_world_stats, angular_momentum), 104);
+    assert_eq!(offset!(lfem_world_stats, contact_count), 128);
+    assert_eq!(offset!(lfem_world_stats, solver_iterations), 132);
+    assert_eq!(offset!(lfem_world_stats, solver_residual), 136);
+    assert_eq!(offset!(lfem_world_stats, rotation_drift), 152);
+
+    assert_eq!(offset!(lfem_body_def, model), 4);
+    assert_eq!(offset!(lfem_body_def, young_modulus), 8);
+    assert_eq!(offset!(lfem_body_def, friction), 40);
+    assert_eq!(offset!(lfem_body_def, linear_velocity), 48);
+    assert_eq!(offset!(lfem_body_def, angular_velocity), 72);
+    assert_eq!(offset!(lfem_body_def, category_bits), 96);
+    assert_eq!(offset!(lfem_body_def, mask_bits), 100);
+    assert_eq!(offset!(lfem_body_def, user_data), 104);
+    assert_eq!(offset!(lfem_body_def, internal_value), 112);
+
+    assert_eq!(offset!(lfem_contact, body_b), 8);
+    assert_eq!(offset!(lfem_contact, node), 16);
+    assert_eq!(offset!(lfem_contact, triangle), 20);
+    assert_eq!(offset!(lfem_contact, barycentric), 32);
+    assert_eq!(offset!(lfem_contact, position), 48);
+    assert_eq!(offset!(lfem_contact, normal), 72);
+    assert_eq!(offset!(lfem_contact, force), 96);
+    assert_eq!(offset!(lfem_contact, sliding), 120);
+}
+
+#[test]
+fn defaults_are_the_documented_ones() {
+    // SAFETY: plain value-returning C functions, callable from any thread.
+    let (w, b) = unsafe { (lfem_world_def_default(), lfem_body_def_default()) };
+    assert_eq!(w.gravity, [0.0, 0.0, -9.81]);
+    assert_eq!(w.time_step, 0.0);
+    assert_eq!(w.step_safety, 0.9);
+    assert_eq!(w.contact_iterations, 200);
+    assert_eq!(w.contact_tolerance, 1e-3);
+    assert_eq!(w.max_substeps, 1_000_000);
+    assert_eq!(w.allow_unstable_step, 0);
+    assert_eq!(b.type_, LFEM_BODY_DEFORMABLE);
+    assert_eq!(b.model, LFEM_MODEL_PAPER);
+    assert_eq!(b.young_modulus, 1e6);
+    assert_eq!(b.poisson_ratio, 0.3);
+    assert_eq!(b.density, 1000.0);
+    assert_eq!(b.damping, 0.0);
+    assert_eq!(b.friction, 0.5);
+    assert_eq!(b.category_bits, 1);
+    assert_eq!(b.mask_bits, u32::MAX);
+    assert!(b.user_data.is_null());
+}
+
+#[test]
+fn version_matches_header() {
+    // SAFETY: no arguments; the returned string is static and NUL-terminated.
+    let (v, s) = unsafe { (lfem_version(), std::ffi::CStr::from_ptr(lfem_version_string())) };
+    assert_eq!(v, (LFEM_VERSION_MAJOR << 16) | (LFEM_VERSION_MINOR << 8) | LFEM_VERSION_PATCH);
+    assert_eq!(
+        s.to_str().unwrap(),
+        format!("{}.{}.{}", LFEM_VERSION_MAJOR, LFEM_VERSION_MINOR, LFEM_VERSION_PATCH)
+    );
+}

@@ -1,0 +1,916 @@
+//! Safe Rust API of lfem: deformable bodies simulated by an explicit local finite element method.
+//!
+//! ```no_run
+//! use lfem::{BodyDef, Mesh, Model, World, WorldDef};
+//!
+//! let mut world = World::new(&WorldDef::default())?;        // gravity (0, 0, -9.81) m/s^2
+//! let mut mesh = Mesh::new_box([0.3, 0.2, 0.1], [3, 2, 1])?; // m, cells
+//! mesh.translate([0.0, 0.0, 2.0])?;
+//! let mut def = BodyDef::default();
+//! def.model = Model::NeoHookean;
+//! let block = world.create_body(&def)?;
+//! world.add_mesh(block, &mesh)?;
+//! world.step(0.5)?;
+//! println!("{:?}", world.positions(block)?[0]);
+//! # Ok::<(), lfem::Error>(())
+//! ```
+//!
+//! Every fallible call returns [`Result`]; an [`Error`] carries the [`Status`] and the message
+//! of `lfem_last_error`. A failed call changes nothing. [`World`] and [`Mesh`] free themselves
+//! when dropped. [`Body`] is a plain value handle: a handle of a destroyed body (or of another
+//! world) is answered with [`Status::InvalidHandle`], never undefined behaviour.
+
+use std::ffi::{CStr, CString};
+use std::fmt;
+use std::mem::{align_of, size_of};
+use std::os::raw::c_char;
+use std::path::Path;
+use std::ptr::{self, NonNull};
+
+pub use lfem_sys as sys;
+
+// ---- errors ----------------------------------------------------------------------------------
+
+/// Why a call failed (`lfem_status` without `LFEM_OK`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Status {
+    /// A null pointer, a NaN, a number out of its range.
+    InvalidArgument,
+    /// Bad indices, inverted or zero-volume tets, unused nodes.
+    InvalidMesh,
+    /// A stale, foreign or null body handle.
+    InvalidHandle,
+    /// The caller's capacity is below what the answer needs.
+    BufferTooSmall,
+    /// The state blew up; the world was rolled back.
+    Unstable,
+    /// A file could not be read or written, or is malformed.
+    IoError,
+    OutOfMemory,
+    /// A bug in lfem: please report it with the message.
+    InternalError,
+    /// A status this binding does not know (a newer library).
+    Unknown(i32),
+}
+
+impl Status {
+    /// The status of a raw value; `None` for `LFEM_OK`.
+    pub fn from_raw(raw: sys::lfem_status) -> Option<Status> {
+        Some(match raw {
+            sys::LFEM_OK => return None,
+            sys::LFEM_INVALID_ARGUMENT => Status::InvalidArgument,
+            sys::LFEM_INVALID_MESH => Status::InvalidMesh,
+            sys::LFEM_INVALID_HANDLE => Status::InvalidHandle,
+            sys::LFEM_BUFFER_TOO_SMALL => Status::BufferTooSmall,
+            sys::LFEM_UNSTABLE => Status::Unstable,
+            sys::LFEM_IO_ERROR => Status::IoError,
+            sys::LFEM_OUT_OF_MEMORY => Status::OutOfMemory,
+            sys::LFEM_INTERNAL_ERROR => Status::InternalError,
+            other => Status::Unknown(other),
+        })
+    }
+
+    /// The C value.
+    pub fn raw(self) -> sys::lfem_status {
+        match self {
+            Status::InvalidArgument => sys::LFEM_INVALID_ARGUMENT,
+            Status::InvalidMesh => sys::LFEM_INVALID_MESH,
+            Status::InvalidHandle => sys::LFEM_INVALID_HANDLE,
+            Status::BufferTooSmall => sys::LFEM_BUFFER_TOO_SMALL,
+            Status::Unstable => sys::LFEM_UNSTABLE,
+            Status::IoError => sys::LFEM_IO_ERROR,
+            Status::OutOfMemory => sys::LFEM_OUT_OF_MEMORY,
+            Status::InternalError => sys::LFEM_INTERNAL_ERROR,
+            Status::Unknown(raw) => raw,
+        }
+    }
+
+    /// lfem's fixed name and meaning, e.g. "LFEM_INVALID_MESH: invalid mesh".
+    pub fn description(self) -> String {
+        // SAFETY: lfem_status_string never returns NULL and its strings are static.
+        unsafe { c_string(sys::lfem_status_string(self.raw())) }
+    }
+}
+
+impl fmt::Display for Status {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.description())
+    }
+}
+
+/// A failed lfem call: its status and the message of `lfem_last_error`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Error {
+    status: Status,
+    message: String,
+}
+
+impl Error {
+    /// The error of a call that just returned `raw` (not `LFEM_OK`) on this thread.
+    fn last(status: Status) -> Error {
+        // SAFETY: lfem_last_error never returns NULL; the string is copied at once, on the
+        // thread that made the failing call.
+        let message = unsafe { c_string(sys::lfem_last_error()) };
+        Error { status, message }
+    }
+
+    /// An error found by this binding before reaching the library.
+    fn local(status: Status, message: String) -> Error {
+        Error { status, message }
+    }
+
+    pub fn status(&self) -> Status {
+        self.status
+    }
+
+    /// The message, e.g. "lfem_world_step: dt must be finite and > 0, got -1.000000".
+    pub fn message(&self) -> &str {
+        &self.message
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} ({})", self.message, self.status.description())
+    }
+}
+
+impl std::error::Error for Error {}
+
+pub type Result<T> = std::result::Result<T, Error>;
+
+fn check(raw: sys::lfem_status) -> Result<()> {
+    match Status::from_raw(raw) {
+        None => Ok(()),
+        Some(status) => Err(Error::last(status)),
+    }
+}
+
+/// Copies a NUL-terminated string owned by lfem. `ptr` must be non-null and valid.
+unsafe fn c_string(ptr: *const c_char) -> String {
+    CStr::from_ptr(ptr).to_string_lossy().into_owned()
+}
+
+fn to_u32(n: usize, what: &str) -> Result<u32> {
+    u32::try_from(n).map_err(|_| {
+        Error::local(Status::InvalidArgument, format!("lfem (Rust): {} = {} does not fit in 32 bits", what, n))
+    })
+}
+
+fn to_c_path(path: &Path) -> Result<CString> {
+    let bytes = {
+        #[cfg(unix)]
+        {
+            use std::os::unix::ffi::OsStrExt;
+            path.as_os_str().as_bytes().to_vec()
+        }
+        #[cfg(not(unix))]
+        {
+            path.to_string_lossy().into_owned().into_bytes()
+        }
+    };
+    CString::new(bytes).map_err(|_| {
+        Error::local(Status::InvalidArgument, format!("lfem (Rust): path {:?} contains a NUL byte", path))
+    })
+}
+
+/// `(major, minor, patch)` of the library actually loaded.
+pub fn version() -> (u32, u32, u32) {
+    // SAFETY: no arguments.
+    let v = unsafe { sys::lfem_version() };
+    (v >> 16, (v >> 8) & 0xff, v & 0xff)
+}
+
+/// "major.minor.patch" of the library actually loaded.
+pub fn version_string() -> String {
+    // SAFETY: never NULL, static.
+    unsafe { c_string(sys::lfem_version_string()) }
+}
+
+// ---- definitions -----------------------------------------------------------------------------
+
+/// How a world is set up. Start from `WorldDef::default()` (lfem_world_def_default) and edit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorldDef {
+    /// m/s^2, default (0, 0, -9.81).
+    pub gravity: [f64; 3],
+    /// s; 0 (default) = automatic, > 0 = fixed sub-step.
+    pub time_step: f64,
+    /// Fraction of the stable limit used by the automatic step, in (0, 1); default 0.9.
+    pub step_safety: f64,
+    /// Cap on contact solver sweeps per step, default 200.
+    pub contact_iterations: u32,
+    /// Relative stopping tolerance of the contact solve, default 1e-3.
+    pub contact_tolerance: f64,
+    /// A step needing more sub-steps than this is refused up front, default 1000000.
+    pub max_substeps: u32,
+    /// Skip the up-front stability check of a fixed time step, default false.
+    pub allow_unstable_step: bool,
+    internal_value: u32,
+}
+
+impl Default for WorldDef {
+    fn default() -> WorldDef {
+        // SAFETY: returns a value.
+        let d = unsafe { sys::lfem_world_def_default() };
+        WorldDef {
+            gravity: d.gravity,
+            time_step: d.time_step,
+            step_safety: d.step_safety,
+            contact_iterations: d.contact_iterations,
+            contact_tolerance: d.contact_tolerance,
+            max_substeps: d.max_substeps,
+            allow_unstable_step: d.allow_unstable_step != 0,
+            internal_value: d.internal_value,
+        }
+    }
+}
+
+impl WorldDef {
+    fn to_raw(self) -> sys::lfem_world_def {
+        sys::lfem_world_def {
+            gravity: self.gravity,
+            time_step: self.time_step,
+            step_safety: self.step_safety,
+            contact_iterations: self.contact_iterations,
+            contact_tolerance: self.contact_tolerance,
+            max_substeps: self.max_substeps,
+            allow_unstable_step: u8::from(self.allow_unstable_step),
+            padding: [0; 3],
+            internal_value: self.internal_value,
+        }
+    }
+}
+
+/// What a body is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BodyType {
+    /// Finite elements, moves and deforms.
+    Deformable,
+    /// Never moves (a floor, a wall).
+    Static,
+    /// Moves rigidly with a prescribed velocity, unaffected by forces.
+    Kinematic,
+}
+
+/// The material model of a deformable body.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Model {
+    /// Floating frame: one global rotation per body (the paper's eq. 2), linear elasticity in it.
+    Paper,
+    /// One rotation per tet: large local rotations (bending).
+    Corotational,
+    /// Stable neo-Hookean hyperelasticity: large strains.
+    NeoHookean,
+    /// Small-strain linear elasticity, no rotation at all.
+    Linear,
+}
+
+/// How a body is set up. Start from `BodyDef::default()` (lfem_body_def_default) and edit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BodyDef {
+    /// Default `BodyType::Deformable`.
+    pub body_type: BodyType,
+    /// Default `Model::Paper`.
+    pub model: Model,
+    /// Pa, > 0, default 1e6.
+    pub young_modulus: f64,
+    /// In [0, 0.5), default 0.3.
+    pub poisson_ratio: f64,
+    /// kg/m^3, > 0, default 1000.
+    pub density: f64,
+    /// 1/s, mass-proportional damping, >= 0, default 0.
+    pub damping: f64,
+    /// Coulomb coefficient, >= 0, default 0.5.
+    pub friction: f64,
+    /// m/s, initial velocity of the nodes of each added mesh (kinematic: constant velocity).
+    pub linear_velocity: [f64; 3],
+    /// rad/s, initial spin about the centre of mass when a mesh is added.
+    pub angular_velocity: [f64; 3],
+    /// Collision filter: what this body is, default 1.
+    pub category_bits: u32,
+    /// Collision filter: what it collides with, default all bits.
+    pub mask_bits: u32,
+    internal_value: u32,
+}
+
+impl Default for BodyDef {
+    fn default() -> BodyDef {
+        // SAFETY: returns a value.
+        let d = unsafe { sys::lfem_body_def_default() };
+        BodyDef {
+            body_type: match d.type_ {
+                sys::LFEM_BODY_STATIC => BodyType::Static,
+                sys::LFEM_BODY_KINEMATIC => BodyType::Kinematic,
+                _ => BodyType::Deformable,
+            },
+            model: match d.model {
+                sys::LFEM_MODEL_COROTATIONAL => Model::Corotational,
+                sys::LFEM_MODEL_NEO_HOOKEAN => Model::NeoHookean,
+                sys::LFEM_MODEL_LINEAR => Model::Linear,
+                _ => Model::Paper,
+            },
+            young_modulus: d.young_modulus,
+            poisson_ratio: d.poisson_ratio,
+            density: d.density,
+            damping: d.damping,
+            friction: d.friction,
+            linear_velocity: d.linear_velocity,
+            angular_velocity: d.angular_velocity,
+            category_bits: d.category_bits,
+            mask_bits: d.mask_bits,
+            internal_value: d.internal_value,
+        }
+    }
+}
+
+impl BodyDef {
+    fn to_raw(self) -> sys::lfem_body_def {
+        sys::lfem_body_def {
+            type_: match self.body_type {
+                BodyType::Deformable => sys::LFEM_BODY_DEFORMABLE,
+                BodyType::Static => sys::LFEM_BODY_STATIC,
+                BodyType::Kinematic => sys::LFEM_BODY_KINEMATIC,
+            },
+            model: match self.model {
+                Model::Paper => sys::LFEM_MODEL_PAPER,
+                Model::Corotational => sys::LFEM_MODEL_COROTATIONAL,
+                Model::NeoHookean => sys::LFEM_MODEL_NEO_HOOKEAN,
+                Model::Linear => sys::LFEM_MODEL_LINEAR,
+            },
+            young_modulus: self.young_modulus,
+            poisson_ratio: self.poisson_ratio,
+            density: self.density,
+            damping: self.damping,
+            friction: self.friction,
+            linear_velocity: self.linear_velocity,
+            angular_velocity: self.angular_velocity,
+            category_bits: self.category_bits,
+            mask_bits: self.mask_bits,
+            user_data: ptr::null_mut(),
+            internal_value: self.internal_value,
+            padding: 0,
+        }
+    }
+}
+
+// ---- handles and records -----------------------------------------------------------------------
+
+/// A body handle: a value (copy it freely), valid while the body lives. `Body::NULL` is
+/// `{0, 0}`. Same layout as `lfem_body`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Body {
+    pub index: u32,
+    pub generation: u32,
+}
+
+impl Body {
+    pub const NULL: Body = Body { index: 0, generation: 0 };
+
+    fn raw(self) -> sys::lfem_body {
+        sys::lfem_body { index: self.index, generation: self.generation }
+    }
+}
+
+/// One active node-to-triangle contact of the last step. Same layout as `lfem_contact`, so
+/// [`World::contacts_into`] fills a slice of them directly.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Contact {
+    /// The body that owns the node.
+    pub body_a: Body,
+    /// The body that owns the triangle.
+    pub body_b: Body,
+    /// Node index in body_a.
+    pub node: u32,
+    /// Node indices a, b, c in body_b.
+    pub triangle: [u32; 3],
+    /// t1, t2: the point is (1 - t1 - t2) a + t2 b + t1 c.
+    pub barycentric: [f64; 2],
+    /// m, the contact point on the triangle.
+    pub position: [f64; 3],
+    /// Unit, out of body_b's surface.
+    pub normal: [f64; 3],
+    /// N, the contact force on the node.
+    pub force: [f64; 3],
+    /// 1 when friction is on the Coulomb cone, else 0 (see [`Contact::is_sliding`]).
+    pub sliding: u8,
+    padding: [u8; 7],
+}
+
+impl Contact {
+    pub fn is_sliding(&self) -> bool {
+        self.sliding != 0
+    }
+}
+
+const _: () = assert!(size_of::<Body>() == size_of::<sys::lfem_body>());
+const _: () = assert!(align_of::<Body>() == align_of::<sys::lfem_body>());
+const _: () = assert!(size_of::<Contact>() == size_of::<sys::lfem_contact>());
+const _: () = assert!(align_of::<Contact>() == align_of::<sys::lfem_contact>());
+const _: () = assert!(size_of::<Contact>() == 128);
+
+/// Statistics of a world (lfem_world_stats): time, energies, momenta, solver figures.
+pub type WorldStats = sys::lfem_world_stats;
+
+// ---- world -------------------------------------------------------------------------------------
+
+/// A simulation world; destroyed (with all its bodies) when dropped.
+///
+/// `Send` (a world may move to another thread) but not `Sync`: lfem does no internal locking.
+pub struct World {
+    raw: NonNull<sys::lfem_world>,
+}
+
+// SAFETY: lfem allows distinct worlds on distinct threads; &mut self / !Sync prevent two threads
+// from using one world at once.
+unsafe impl Send for World {}
+
+impl Drop for World {
+    fn drop(&mut self) {
+        // SAFETY: the pointer came from lfem_world_create and is destroyed once.
+        unsafe { sys::lfem_world_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl fmt::Debug for World {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("World").field("raw", &self.raw).finish()
+    }
+}
+
+impl World {
+    /// An empty world.
+    pub fn new(def: &WorldDef) -> Result<World> {
+        let raw_def = def.to_raw();
+        let mut out: *mut sys::lfem_world = ptr::null_mut();
+        // SAFETY: valid pointers to a def and to the output.
+        check(unsafe { sys::lfem_world_create(&raw_def, &mut out) })?;
+        NonNull::new(out)
+            .map(|raw| World { raw })
+            .ok_or_else(|| Error::local(Status::InternalError, "lfem_world_create returned NULL".into()))
+    }
+
+    /// The C pointer, for calls this crate does not wrap. Stays owned by `self`.
+    pub fn as_ptr(&self) -> *mut sys::lfem_world {
+        self.raw.as_ptr()
+    }
+
+    fn ptr(&self) -> *const sys::lfem_world {
+        self.raw.as_ptr()
+    }
+
+    fn ptr_mut(&mut self) -> *mut sys::lfem_world {
+        self.raw.as_ptr()
+    }
+
+    /// Advance by `dt` seconds (split into stable sub-steps). On `Status::Unstable` the world is
+    /// rolled back to its state before the call.
+    pub fn step(&mut self, dt: f64) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_world_step(self.ptr_mut(), dt) })
+    }
+
+    pub fn set_gravity(&mut self, gravity: [f64; 3]) -> Result<()> {
+        // SAFETY: live world, 3 doubles.
+        check(unsafe { sys::lfem_world_set_gravity(self.ptr_mut(), gravity.as_ptr()) })
+    }
+
+    /// Fixed sub-step (s), 0 = automatic.
+    pub fn set_time_step(&mut self, time_step: f64) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_world_set_time_step(self.ptr_mut(), time_step) })
+    }
+
+    /// The stable limit of the step (s); infinity without deformable bodies.
+    pub fn stable_step(&self) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_world_get_stable_step(self.ptr(), &mut out) })?;
+        Ok(out)
+    }
+
+    pub fn stats(&self) -> Result<WorldStats> {
+        let mut out = WorldStats::default();
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_world_get_stats(self.ptr(), &mut out) })?;
+        Ok(out)
+    }
+
+    // -- bodies --
+
+    /// A body without nodes; give it a mesh with [`World::add_mesh`].
+    pub fn create_body(&mut self, def: &BodyDef) -> Result<Body> {
+        let raw_def = def.to_raw();
+        let mut out = sys::lfem_body::default();
+        // SAFETY: live world, valid def and output.
+        check(unsafe { sys::lfem_body_create(self.ptr_mut(), &raw_def, &mut out) })?;
+        Ok(Body { index: out.index, generation: out.generation })
+    }
+
+    /// Destroy a body; its handle (and every copy) becomes stale.
+    pub fn destroy_body(&mut self, body: Body) -> Result<()> {
+        // SAFETY: live world; any handle value is allowed.
+        check(unsafe { sys::lfem_body_destroy(self.ptr_mut(), body.raw()) })
+    }
+
+    /// Whether the handle names a live body of this world.
+    pub fn is_valid(&self, body: Body) -> bool {
+        // SAFETY: live world; any handle value is allowed.
+        unsafe { sys::lfem_body_is_valid(self.ptr(), body.raw()) != 0 }
+    }
+
+    /// Add the tets of a mesh to a body (copied; the mesh stays yours).
+    pub fn add_mesh(&mut self, body: Body, mesh: &Mesh) -> Result<()> {
+        self.add_mesh_data(body, mesh.positions(), mesh.tets())
+    }
+
+    /// Add a tetrahedral mesh given as node positions (m) and tets (4 node indices, 0-based,
+    /// positive volume).
+    pub fn add_mesh_data(&mut self, body: Body, positions: &[[f64; 3]], tets: &[[u32; 4]]) -> Result<()> {
+        let node_count = to_u32(positions.len(), "node count")?;
+        let tet_count = to_u32(tets.len(), "tet count")?;
+        // SAFETY: live world; the arrays hold 3*node_count doubles and 4*tet_count indices.
+        check(unsafe {
+            sys::lfem_body_add_mesh(
+                self.ptr_mut(),
+                body.raw(),
+                positions.as_ptr() as *const f64,
+                node_count,
+                tets.as_ptr() as *const u32,
+                tet_count,
+            )
+        })
+    }
+
+    pub fn node_count(&self, body: Body) -> Result<usize> {
+        let mut out = 0u32;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_node_count(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out as usize)
+    }
+
+    pub fn tet_count(&self, body: Body) -> Result<usize> {
+        let mut out = 0u32;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_tet_count(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out as usize)
+    }
+
+    /// Node positions (m) into `out` (at least one entry per node). `Status::BufferTooSmall`
+    /// (nothing written) when it is shorter.
+    pub fn positions_into(&self, body: Body, out: &mut [[f64; 3]]) -> Result<()> {
+        let capacity = u32::try_from(out.len()).unwrap_or(u32::MAX);
+        // SAFETY: live world; out holds 3*capacity doubles.
+        check(unsafe {
+            sys::lfem_body_get_positions(self.ptr(), body.raw(), out.as_mut_ptr() as *mut f64, capacity)
+        })
+    }
+
+    /// Node positions (m), one `[x, y, z]` per node.
+    pub fn positions(&self, body: Body) -> Result<Vec<[f64; 3]>> {
+        let mut out = vec![[0.0; 3]; self.node_count(body)?];
+        self.positions_into(body, &mut out)?;
+        Ok(out)
+    }
+
+    /// Node velocities (m/s) into `out` (see [`World::positions_into`]).
+    pub fn velocities_into(&self, body: Body, out: &mut [[f64; 3]]) -> Result<()> {
+        let capacity = u32::try_from(out.len()).unwrap_or(u32::MAX);
+        // SAFETY: live world; out holds 3*capacity doubles.
+        check(unsafe {
+            sys::lfem_body_get_velocities(self.ptr(), body.raw(), out.as_mut_ptr() as *mut f64, capacity)
+        })
+    }
+
+    /// Node velocities (m/s) at the current time, one `[vx, vy, vz]` per node.
+    pub fn velocities(&self, body: Body) -> Result<Vec<[f64; 3]>> {
+        let mut out = vec![[0.0; 3]; self.node_count(body)?];
+        self.velocities_into(body, &mut out)?;
+        Ok(out)
+    }
+
+    /// Overwrite the velocities (m/s), one per node.
+    pub fn set_velocities(&mut self, body: Body, velocities: &[[f64; 3]]) -> Result<()> {
+        let n = to_u32(velocities.len(), "node count")?;
+        // SAFETY: live world; 3*n doubles.
+        check(unsafe { sys::lfem_body_set_velocities(self.ptr_mut(), body.raw(), velocities.as_ptr() as *const f64, n) })
+    }
+
+    /// Boundary triangles, counter-clockwise seen from outside.
+    pub fn boundary_triangles(&self, body: Body) -> Result<Vec<[u32; 3]>> {
+        let mut n = 0u32;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_boundary_triangle_count(self.ptr(), body.raw(), &mut n) })?;
+        let mut out = vec![[0u32; 3]; n as usize];
+        // SAFETY: out holds 3*n indices.
+        check(unsafe {
+            sys::lfem_body_get_boundary_triangles(self.ptr(), body.raw(), out.as_mut_ptr() as *mut u32, n)
+        })?;
+        Ok(out)
+    }
+
+    /// Von Mises stress (Pa), one per tet.
+    pub fn von_mises_stress(&self, body: Body) -> Result<Vec<f64>> {
+        let mut out = vec![0.0; self.tet_count(body)?];
+        let capacity = to_u32(out.len(), "tet count")?;
+        // SAFETY: out holds capacity doubles.
+        check(unsafe { sys::lfem_body_get_von_mises_stress(self.ptr(), body.raw(), out.as_mut_ptr(), capacity) })?;
+        Ok(out)
+    }
+
+    /// The global rotation of the paper model, rows of a 3x3 matrix (identity otherwise).
+    pub fn rotation(&self, body: Body) -> Result<[[f64; 3]; 3]> {
+        let mut out = [[0.0; 3]; 3];
+        // SAFETY: 9 contiguous doubles.
+        check(unsafe { sys::lfem_body_get_rotation(self.ptr(), body.raw(), out.as_mut_ptr() as *mut f64) })?;
+        Ok(out)
+    }
+
+    /// The nodes whose current position lies in the box [lo, hi] (m).
+    pub fn find_nodes_in_box(&self, body: Body, lo: [f64; 3], hi: [f64; 3]) -> Result<Vec<u32>> {
+        let mut count = 0u32;
+        // SAFETY: capacity 0 with a null out asks for the count.
+        let first = unsafe {
+            sys::lfem_body_find_nodes_in_box(self.ptr(), body.raw(), lo.as_ptr(), hi.as_ptr(), ptr::null_mut(), 0, &mut count)
+        };
+        if first != sys::LFEM_BUFFER_TOO_SMALL {
+            check(first)?;
+        }
+        let mut out = vec![0u32; count as usize];
+        if count > 0 {
+            // SAFETY: out holds count indices.
+            check(unsafe {
+                sys::lfem_body_find_nodes_in_box(
+                    self.ptr(),
+                    body.raw(),
+                    lo.as_ptr(),
+                    hi.as_ptr(),
+                    out.as_mut_ptr(),
+                    count,
+                    &mut count,
+                )
+            })?;
+            out.truncate(count as usize);
+        }
+        Ok(out)
+    }
+
+    // -- loads and supports --
+
+    /// Fix nodes in place (velocity 0 from now on).
+    pub fn fix_nodes(&mut self, body: Body, nodes: &[u32]) -> Result<()> {
+        let n = to_u32(nodes.len(), "node count")?;
+        // SAFETY: n indices.
+        check(unsafe { sys::lfem_body_fix_nodes(self.ptr_mut(), body.raw(), nodes.as_ptr(), n) })
+    }
+
+    /// Make nodes move at a constant velocity (m/s), whatever the forces.
+    pub fn prescribe_node_velocity(&mut self, body: Body, nodes: &[u32], velocity: [f64; 3]) -> Result<()> {
+        let n = to_u32(nodes.len(), "node count")?;
+        // SAFETY: n indices, 3 doubles.
+        check(unsafe {
+            sys::lfem_body_prescribe_node_velocity(self.ptr_mut(), body.raw(), nodes.as_ptr(), n, velocity.as_ptr())
+        })
+    }
+
+    /// Give fixed or prescribed nodes back to the dynamics.
+    pub fn release_nodes(&mut self, body: Body, nodes: &[u32]) -> Result<()> {
+        let n = to_u32(nodes.len(), "node count")?;
+        // SAFETY: n indices.
+        check(unsafe { sys::lfem_body_release_nodes(self.ptr_mut(), body.raw(), nodes.as_ptr(), n) })
+    }
+
+    /// Constant external forces (N), one per listed node, added to gravity from now on.
+    pub fn set_node_forces(&mut self, body: Body, nodes: &[u32], forces: &[[f64; 3]]) -> Result<()> {
+        if nodes.len() != forces.len() {
+            return Err(Error::local(
+                Status::InvalidArgument,
+                format!("lfem (Rust): {} nodes but {} forces", nodes.len(), forces.len()),
+            ));
+        }
+        let n = to_u32(nodes.len(), "node count")?;
+        // SAFETY: n indices, 3*n doubles.
+        check(unsafe {
+            sys::lfem_body_set_node_forces(self.ptr_mut(), body.raw(), nodes.as_ptr(), n, forces.as_ptr() as *const f64)
+        })
+    }
+
+    /// Remove every external node force of the body.
+    pub fn clear_node_forces(&mut self, body: Body) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_clear_node_forces(self.ptr_mut(), body.raw()) })
+    }
+
+    /// The velocity of a kinematic body: linear (m/s) of its centre, angular (rad/s) about it.
+    pub fn set_kinematic_velocity(&mut self, body: Body, linear: [f64; 3], angular: [f64; 3]) -> Result<()> {
+        // SAFETY: 3 + 3 doubles.
+        check(unsafe {
+            sys::lfem_body_set_kinematic_velocity(self.ptr_mut(), body.raw(), linear.as_ptr(), angular.as_ptr())
+        })
+    }
+
+    // -- contacts --
+
+    /// The number of active contacts of the last step.
+    pub fn contact_count(&self) -> Result<usize> {
+        let mut count = 0usize;
+        // SAFETY: capacity 0 with a null out asks for the count.
+        let status = unsafe { sys::lfem_world_query_contacts(self.ptr(), ptr::null_mut(), 0, &mut count) };
+        if status != sys::LFEM_BUFFER_TOO_SMALL {
+            check(status)?;
+        }
+        Ok(count)
+    }
+
+    /// Copy the active contacts into the front of `out`; returns how many. When `out` is too
+    /// short: `Status::BufferTooSmall` and nothing copied (ask [`World::contact_count`]).
+    pub fn contacts_into(&self, out: &mut [Contact]) -> Result<usize> {
+        let mut count = 0usize;
+        // SAFETY: Contact has the layout of lfem_contact; out holds out.len() of them.
+        check(unsafe {
+            sys::lfem_world_query_contacts(self.ptr(), out.as_mut_ptr() as *mut sys::lfem_contact, out.len(), &mut count)
+        })?;
+        Ok(count)
+    }
+
+    /// The active contacts of the last step, in lfem's fixed order.
+    pub fn contacts(&self) -> Result<Vec<Contact>> {
+        let mut out = vec![Contact::default(); self.contact_count()?];
+        let n = self.contacts_into(&mut out)?;
+        out.truncate(n);
+        Ok(out)
+    }
+}
+
+// ---- meshes ------------------------------------------------------------------------------------
+
+/// A tetrahedral mesh (node positions and tets) owned by Rust; destroyed when dropped.
+pub struct Mesh {
+    raw: NonNull<sys::lfem_mesh>,
+}
+
+// SAFETY: a mesh is plain data; &mut self guards mutation.
+unsafe impl Send for Mesh {}
+
+impl Drop for Mesh {
+    fn drop(&mut self) {
+        // SAFETY: from an lfem_mesh_* constructor, destroyed once.
+        unsafe { sys::lfem_mesh_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl fmt::Debug for Mesh {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Mesh")
+            .field("nodes", &self.node_count())
+            .field("tets", &self.tet_count())
+            .finish()
+    }
+}
+
+fn mesh_from(status: sys::lfem_status, out: *mut sys::lfem_mesh) -> Result<Mesh> {
+    check(status)?;
+    NonNull::new(out)
+        .map(|raw| Mesh { raw })
+        .ok_or_else(|| Error::local(Status::InternalError, "lfem returned a NULL mesh".into()))
+}
+
+impl Mesh {
+    /// A box [0, size] (m) of cells[0] x cells[1] x cells[2] hexahedra of 6 tets each.
+    pub fn new_box(size: [f64; 3], cells: [u32; 3]) -> Result<Mesh> {
+        let mut out = ptr::null_mut();
+        // SAFETY: 3 doubles, 3 integers, valid output.
+        let status = unsafe { sys::lfem_mesh_create_box(size.as_ptr(), cells.as_ptr(), &mut out) };
+        mesh_from(status, out)
+    }
+
+    /// A solid cylinder along +z from z = 0 (see lfem_mesh_create_cylinder).
+    pub fn new_cylinder(radius: f64, height: f64, segments: u32, rings: u32, layers: u32) -> Result<Mesh> {
+        let mut out = ptr::null_mut();
+        // SAFETY: valid output.
+        let status = unsafe { sys::lfem_mesh_create_cylinder(radius, height, segments, rings, layers, &mut out) };
+        mesh_from(status, out)
+    }
+
+    /// A hollow cup open at the top (see lfem_mesh_create_cup).
+    pub fn new_cup(outer_radius: f64, height: f64, wall: f64, bottom: f64, segments: u32, layers: u32) -> Result<Mesh> {
+        let mut out = ptr::null_mut();
+        // SAFETY: valid output.
+        let status =
+            unsafe { sys::lfem_mesh_create_cup(outer_radius, height, wall, bottom, segments, layers, &mut out) };
+        mesh_from(status, out)
+    }
+
+    /// A hammer (see lfem_mesh_create_hammer).
+    pub fn new_hammer(
+        handle_length: f64,
+        handle_width: f64,
+        head_length: f64,
+        head_width: f64,
+        cell_size: f64,
+    ) -> Result<Mesh> {
+        let mut out = ptr::null_mut();
+        // SAFETY: valid output.
+        let status = unsafe {
+            sys::lfem_mesh_create_hammer(handle_length, handle_width, head_length, head_width, cell_size, &mut out)
+        };
+        mesh_from(status, out)
+    }
+
+    /// The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1).
+    pub fn load_gmsh<P: AsRef<Path>>(path: P) -> Result<Mesh> {
+        let c_path = to_c_path(path.as_ref())?;
+        let mut out = ptr::null_mut();
+        // SAFETY: NUL-terminated path, valid output.
+        let status = unsafe { sys::lfem_mesh_load_gmsh(c_path.as_ptr(), &mut out) };
+        mesh_from(status, out)
+    }
+
+    pub fn node_count(&self) -> usize {
+        // SAFETY: live mesh.
+        unsafe { sys::lfem_mesh_get_node_count(self.raw.as_ptr()) as usize }
+    }
+
+    pub fn tet_count(&self) -> usize {
+        // SAFETY: live mesh.
+        unsafe { sys::lfem_mesh_get_tet_count(self.raw.as_ptr()) as usize }
+    }
+
+    /// Node positions (m), a view into the mesh.
+    pub fn positions(&self) -> &[[f64; 3]] {
+        let n = self.node_count();
+        // SAFETY: lfem keeps 3*n doubles there until the mesh changes (needs &mut self) or dies.
+        unsafe {
+            let p = sys::lfem_mesh_get_positions(self.raw.as_ptr());
+            if p.is_null() || n == 0 {
+                &[]
+            } else {
+                std::slice::from_raw_parts(p as *const [f64; 3], n)
+            }
+        }
+    }
+
+    /// Tets (4 node indices each), a view into the mesh.
+    pub fn tets(&self) -> &[[u32; 4]] {
+        let n = self.tet_count();
+        // SAFETY: as for positions, 4*n indices.
+        unsafe {
+            let p = sys::lfem_mesh_get_tets(self.raw.as_ptr());
+            if p.is_null() || n == 0 {
+                &[]
+            } else {
+                std::slice::from_raw_parts(p as *const [u32; 4], n)
+            }
+        }
+    }
+
+    /// Move the mesh by `offset` (m).
+    pub fn translate(&mut self, offset: [f64; 3]) -> Result<()> {
+        // SAFETY: live mesh, 3 doubles.
+        check(unsafe { sys::lfem_mesh_translate(self.raw.as_ptr(), offset.as_ptr()) })
+    }
+
+    /// Rotate the mesh about the origin by `angle` (rad) around `axis`.
+    pub fn rotate(&mut self, axis: [f64; 3], angle: f64) -> Result<()> {
+        // SAFETY: live mesh, 3 doubles.
+        check(unsafe { sys::lfem_mesh_rotate(self.raw.as_ptr(), axis.as_ptr(), angle) })
+    }
+}
+
+// ---- output --------------------------------------------------------------------------------------
+
+/// A ParaView time series (.pvd plus one .vtu per frame); closed when dropped.
+pub struct VtkSeries {
+    raw: NonNull<sys::lfem_vtk_series>,
+}
+
+// SAFETY: owned exclusively; &mut self guards writes.
+unsafe impl Send for VtkSeries {}
+
+impl Drop for VtkSeries {
+    fn drop(&mut self) {
+        // SAFETY: from lfem_vtk_series_create, destroyed once.
+        unsafe { sys::lfem_vtk_series_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl VtkSeries {
+    /// Start a series at `pvd_path`; frames go beside it. Nothing is written yet.
+    pub fn new<P: AsRef<Path>>(pvd_path: P) -> Result<VtkSeries> {
+        let c_path = to_c_path(pvd_path.as_ref())?;
+        let mut out = ptr::null_mut();
+        // SAFETY: NUL-terminated path, valid output.
+        check(unsafe { sys::lfem_vtk_series_create(c_path.as_ptr(), &mut out) })?;
+        NonNull::new(out)
+            .map(|raw| VtkSeries { raw })
+            .ok_or_else(|| Error::local(Status::InternalError, "lfem returned a NULL series".into()))
+    }
+
+    /// Write every body of the world as the next frame.
+    pub fn write_frame(&mut self, world: &World) -> Result<()> {
+        // SAFETY: live series and world.
+        check(unsafe { sys::lfem_vtk_series_write_frame(self.raw.as_ptr(), world.ptr()) })
+    }
+}

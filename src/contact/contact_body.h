@@ -1,0 +1,36 @@
+// What contact detection and the multiplier solve see of one body during a sub-step: flat
+// arrays borrowed from the body and the step's scratch, nothing owned.
+#pragma once
+
+#include <cstdint>
+
+namespace lfem {
+
+struct ContactBody {
+    uint32_t slot = 0;                 // the body's slot in the world (for handles)
+    const uint32_t* triangles = nullptr; // boundary triangles, 3 node indices each
+    uint32_t triangle_count = 0;
+    const uint32_t* nodes = nullptr;   // boundary nodes (the candidate slave nodes)
+    uint32_t node_count = 0;
+    const double* x_start = nullptr;   // 3 per node: positions at the start of the step, x^n
+    double* x = nullptr;               // 3 per node: predicted x*, corrected in place to x^{n+1}
+    const double* inv_mass = nullptr;  // per node: 1/mhat (m per N); nullptr = immovable body
+    double friction = 0;               // Coulomb coefficient of the body's surface
+    uint32_t category = 1, mask = ~0u; // collision filter
+    double edge_length = 0;            // mean boundary edge length (m): sets the tolerances
+};
+
+// Two bodies are checked against each other only if each one's category is in the other's
+// mask, and at least one of them can move.
+inline bool bodies_may_touch(const ContactBody& a, const ContactBody& b) {
+    return (a.category & b.mask) != 0 && (b.category & a.mask) != 0 &&
+           (a.inv_mass != nullptr || b.inv_mass != nullptr);
+}
+
+// Friction of a pair: the geometric mean, so a frictionless surface (mu = 0) makes every
+// contact it takes part in frictionless, and equal surfaces keep their own coefficient.
+inline double pair_friction(double mu_a, double mu_b) {
+    return mu_a * mu_b > 0.0 ? __builtin_sqrt(mu_a * mu_b) : 0.0;
+}
+
+}  // namespace lfem

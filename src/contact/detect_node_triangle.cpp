@@ -1,0 +1,163 @@
+#include "contact/detect_node_triangle.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fem/tet_element.h"
+
+namespace lfem {
+namespace {
+
+// Tolerances, all relative to the boundary edge length l of the triangle's body:
+// - capture band: a node up to 0.05 l in front of a face at the end of the step is kept as a
+//   (possibly inactive) constraint, so resting contacts do not flicker in and out;
+// - depth allowance: a node that starts the step up to 0.25 l behind a face is still that
+//   face's (an overlap kept as an offset); deeper, it belongs to another face;
+// - edge tolerance: barycentric weights down to -0.01 count as inside, so nodes on a shared
+//   edge do not drop out of both neighbouring faces (DESIGN.md section 6).
+constexpr double kCaptureBand = 0.05;
+constexpr double kDepthAllowance = 0.25;
+constexpr double kEdgeTolerance = 0.01;
+// An overlap found at the start of a step is removed over several steps, 20 % per step,
+// rather than in one violent jump.
+constexpr double kOverlapRecovery = 0.2;
+
+Vec3 at(const double* x, uint32_t i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
+
+// Barycentric weights (wa, wb, wc) of the projection of p onto the plane of triangle abc.
+void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double w[3]) {
+    const Vec3 e0 = b - a, e1 = c - a, d = p - a;
+    const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1);
+    const double d20 = d.dot(e0), d21 = d.dot(e1);
+    const double denom = d00 * d11 - d01 * d01;
+    w[1] = (d11 * d20 - d01 * d21) / denom;
+    w[2] = (d00 * d21 - d01 * d20) / denom;
+    w[0] = 1.0 - w[1] - w[2];
+}
+
+struct Candidate {
+    bool found = false;
+    uint32_t triangle = 0;
+    double gap = 0;        // g* at the end of the step (m)
+    double start_gap = 0;  // g^n
+    double w[3] = {0, 0, 0};
+    Vec3 normal = Vec3::Zero();
+};
+
+// Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
+// with less penetration than what best holds.
+void test_node_triangle(const ContactBody& a, uint32_t p, const ContactBody& b, uint32_t t,
+                        Candidate& best) {
+    const uint32_t* tri = &b.triangles[3 * t];
+    if (a.slot == b.slot) return;  // self-contact is not handled here
+    const Vec3 pa = at(b.x, tri[0]), pb = at(b.x, tri[1]), pc = at(b.x, tri[2]);
+    const Vec3 qa = at(b.x_start, tri[0]), qb = at(b.x_start, tri[1]), qc = at(b.x_start, tri[2]);
+    const Vec3 n_end = (pb - pa).cross(pc - pa), n_start = (qb - qa).cross(qc - qa);
+    const double area2 = n_end.norm(), area2_start = n_start.norm();
+    if (!(area2 > 0.0) || !(area2_start > 0.0)) return;  // a collapsed face has no normal
+    const Vec3 n = n_end / area2;
+    const Vec3 x_end = at(a.x, p), x_start = at(a.x_start, p);
+    const double gap = n.dot(x_end - pa);
+    const double start_gap = (n_start / area2_start).dot(x_start - qa);
+    const double l = b.edge_length;
+    if (gap > kCaptureBand * l || start_gap < -kDepthAllowance * l) return;
+    double w[3];
+    if (start_gap >= 0.0 && gap < 0.0) {
+        // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
+        // with the triangle moved by the same fraction of its own step.
+        const double s = start_gap / (start_gap - gap);
+        barycentric(x_start + s * (x_end - x_start), qa + s * (pa - qa), qb + s * (pb - qb),
+                    qc + s * (pc - qc), w);
+    } else {
+        barycentric(x_end, pa, pb, pc, w);  // at or behind the face: its projection
+    }
+    for (double wi : w)
+        if (!(wi >= -kEdgeTolerance)) return;
+    if (best.found && gap <= best.gap) return;  // keep the face penetrated least
+    best.found = true;
+    best.triangle = t;
+    best.gap = gap;
+    best.start_gap = start_gap;
+    best.normal = n;
+    // Clamp the weights into the triangle: the force goes to its nodes, never outside.
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) sum += (best.w[k] = std::max(0.0, w[k]));
+    for (int k = 0; k < 3; ++k) best.w[k] /= sum;
+}
+
+}  // namespace
+
+void detect_node_triangle(const std::vector<ContactBody>& bodies, DetectionScratch& s,
+                          std::vector<ContactRecord>& out) {
+    out.clear();
+    // Boxes of every boundary triangle over the whole step, grown by the depth allowance.
+    s.boxes.clear();
+    s.box_body.clear();
+    s.box_triangle.clear();
+    double cell = 0.0;
+    for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+        const ContactBody& b = bodies[bi];
+        const double grow = kDepthAllowance * b.edge_length;
+        cell = std::max(cell, b.edge_length);
+        for (uint32_t t = 0; t < b.triangle_count; ++t) {
+            Aabb box;
+            for (int k = 0; k < 3; ++k) box.lo[k] = HUGE_VAL, box.hi[k] = -HUGE_VAL;
+            for (int v = 0; v < 3; ++v) {
+                const uint32_t i = b.triangles[3 * t + v];
+                for (int k = 0; k < 3; ++k) {
+                    const double x0 = b.x_start[3 * i + k], x1 = b.x[3 * i + k];
+                    box.lo[k] = std::min({box.lo[k], x0, x1});
+                    box.hi[k] = std::max({box.hi[k], x0, x1});
+                }
+            }
+            for (int k = 0; k < 3; ++k) box.lo[k] -= grow, box.hi[k] += grow;
+            s.boxes.push_back(box);
+            s.box_body.push_back(bi);
+            s.box_triangle.push_back(t);
+        }
+    }
+    if (s.boxes.empty()) return;
+    s.grid.build(s.boxes, 2.0 * cell);
+
+    std::vector<Candidate> best(bodies.size());
+    for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
+        const ContactBody& a = bodies[ai];
+        for (uint32_t j = 0; j < a.node_count; ++j) {
+            const uint32_t p = a.nodes[j];
+            Aabb box;
+            for (int k = 0; k < 3; ++k) {
+                box.lo[k] = std::min(a.x_start[3 * p + k], a.x[3 * p + k]);
+                box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
+            }
+            s.candidates.clear();
+            s.grid.query(box, s.candidates);
+            for (Candidate& c : best) c.found = false;
+            for (uint32_t id : s.candidates) {
+                const ContactBody& b = bodies[s.box_body[id]];
+                if (s.box_body[id] == ai || !bodies_may_touch(a, b)) continue;
+                test_node_triangle(a, p, b, s.box_triangle[id], best[s.box_body[id]]);
+            }
+            for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+                const Candidate& c = best[bi];
+                if (!c.found) continue;
+                const ContactBody& b = bodies[bi];
+                ContactRecord r;
+                r.body_a = a.slot;
+                r.node = p;
+                r.body_b = b.slot;
+                for (int k = 0; k < 3; ++k) {
+                    r.triangle[k] = b.triangles[3 * c.triangle + k];
+                    r.normal[k] = c.normal[k];
+                }
+                // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c)
+                r.t2 = c.w[1];
+                r.t1 = c.w[2];
+                // A node that starts the step inside is let out gradually (target gap < 0).
+                r.offset = c.start_gap < 0.0 ? -c.start_gap * (1.0 - kOverlapRecovery) : 0.0;
+                out.push_back(r);
+            }
+        }
+    }
+}
+
+}  // namespace lfem

@@ -1,0 +1,27 @@
+// Contact detection between the step-start configuration x^n and the predicted one x*: a node
+// of one body against the boundary triangles of another (eqs. 5 and 6), both passes (nodes of A
+// into B and nodes of B into A) in one list.
+#pragma once
+
+#include <vector>
+
+#include "contact/broad_phase.h"
+#include "contact/contact_body.h"
+#include "contact/contact_record.h"
+
+namespace lfem {
+
+struct DetectionScratch {
+    std::vector<Aabb> boxes;
+    std::vector<uint32_t> box_body, box_triangle;  // which body and triangle a box belongs to
+    std::vector<uint32_t> candidates;
+    BroadPhase grid;
+};
+
+// Fills `out` with one constraint per (node, other body): the boundary triangle the node
+// crossed or lies against, with its normal at x*, the barycentric weights of the contact point
+// and the target gap (a kept initial overlap). Order: body, then node, then other body.
+void detect_node_triangle(const std::vector<ContactBody>& bodies, DetectionScratch& scratch,
+                          std::vector<ContactRecord>& out);
+
+}  // namespace lfem

@@ -1,0 +1,31 @@
+// The forward increment Lagrange multiplier solve (Carpenter, Taylor & Katona 1991): the
+// multipliers of step n make the constraints hold at step n+1,
+//   x^{n+1} = x* + Mhat^-1 G^T lambda,   Mhat = diag(m/h^2 + c/2h),
+// found by projected Gauss-Seidel over the node-triangle pairs, with tension release
+// (lambda_n >= 0) and Coulomb friction (eq. 7) in the same sweep.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "contact/contact_body.h"
+#include "contact/contact_record.h"
+
+namespace lfem {
+
+struct ContactSolveResult {
+    uint32_t iterations = 0;
+    double residual = 0;         // m, largest correction made by the last sweep
+    double max_penetration = 0;  // m, deepest remaining penetration (beyond kept offsets)
+};
+
+// `body_of_slot[s]` is the index in `bodies` of the body in world slot s. Records carry warm
+// start multipliers on entry and the converged ones (newtons) on exit; `x` of the bodies is
+// moved from x* to x^{n+1}. Stops when a sweep corrects no node by more than `tolerance`
+// (m), or after max_iterations sweeps.
+ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
+                                             const std::vector<uint32_t>& body_of_slot,
+                                             std::vector<ContactRecord>& records,
+                                             uint32_t max_iterations, double tolerance);
+
+}  // namespace lfem
