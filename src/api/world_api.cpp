@@ -104,11 +104,15 @@ extern "C" LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* worl
         require_pointer(count, "count");
         require(capacity == 0 || out != nullptr, "out is NULL with a non-zero capacity");
         const std::vector<ContactRecord>& contacts = w.contacts();
-        *count = contacts.size();
-        if (contacts.size() > capacity)
+        std::size_t active = 0;
+        for (const ContactRecord& c : contacts) active += c.active();
+        *count = active;
+        if (active > capacity)
             throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) +
-                                                   " is below the " + std::to_string(contacts.size()) +
+                                                   " is below the " + std::to_string(active) +
                                                    " active contacts");
-        for (std::size_t i = 0; i < contacts.size(); ++i) out[i] = w.contact_as_c(contacts[i]);
+        std::size_t i = 0;
+        for (const ContactRecord& c : contacts)
+            if (c.active()) out[i++] = w.contact_as_c(c);
     });
 }

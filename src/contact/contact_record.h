@@ -17,6 +17,8 @@ struct ContactRecord {
     double lambda_t[3] = {0, 0, 0};      // N, friction multiplier (tangential)
     double offset = 0;                   // m, initial overlap kept as an offset (>= 0)
     bool sliding = false;
+
+    bool active() const { return lambda_n > 0.0; }  // carries force
 };
 
 }  // namespace lfem

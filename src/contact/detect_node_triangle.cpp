@@ -46,8 +46,8 @@ struct Candidate {
 
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
-void test_node_triangle(const ContactBody& a, uint32_t p, const ContactBody& b, uint32_t t,
-                        Candidate& best) {
+void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal,
+                        const ContactBody& b, uint32_t t, Candidate& best) {
     const uint32_t* tri = &b.triangles[3 * t];
     if (a.slot == b.slot) return;  // self-contact is not handled here
     const Vec3 pa = at(b.x, tri[0]), pb = at(b.x, tri[1]), pc = at(b.x, tri[2]);
@@ -56,6 +56,11 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const ContactBody& b, 
     const double area2 = n_end.norm(), area2_start = n_start.norm();
     if (!(area2 > 0.0) || !(area2_start > 0.0)) return;  // a collapsed face has no normal
     const Vec3 n = n_end / area2;
+    // Surfaces in contact face each other. A face whose normal points the same way as the
+    // node's own surface normal is the far side of an edge the node sits on (a cube's corner
+    // node resting on another cube's top face also lies in the plane of its side face): taking
+    // it would push the node sideways off the edge. Convex edges thus keep the one right face.
+    if (n.dot(node_normal) >= 0.0) return;
     const Vec3 x_end = at(a.x, p), x_start = at(a.x_start, p);
     const double gap = n.dot(x_end - pa);
     const double start_gap = (n_start / area2_start).dot(x_start - qa);
@@ -122,8 +127,18 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies, DetectionScrat
     std::vector<Candidate> best(bodies.size());
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
         const ContactBody& a = bodies[ai];
+        // Outward normals of the body's boundary nodes at x*: area-weighted means of the
+        // normals of the triangles around each node.
+        s.node_normals.assign(3 * std::size_t(a.node_count ? a.nodes[a.node_count - 1] + 1 : 0), 0.0);
+        for (uint32_t t = 0; t < a.triangle_count; ++t) {
+            const uint32_t* tri = &a.triangles[3 * t];
+            const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));
+            for (int v = 0; v < 3; ++v)
+                for (int k = 0; k < 3; ++k) s.node_normals[3 * tri[v] + k] += n2[k];
+        }
         for (uint32_t j = 0; j < a.node_count; ++j) {
             const uint32_t p = a.nodes[j];
+            const Vec3 node_normal = at(s.node_normals.data(), p).normalized();
             Aabb box;
             for (int k = 0; k < 3; ++k) {
                 box.lo[k] = std::min(a.x_start[3 * p + k], a.x[3 * p + k]);
@@ -135,7 +150,7 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies, DetectionScrat
             for (uint32_t id : s.candidates) {
                 const ContactBody& b = bodies[s.box_body[id]];
                 if (s.box_body[id] == ai || !bodies_may_touch(a, b)) continue;
-                test_node_triangle(a, p, b, s.box_triangle[id], best[s.box_body[id]]);
+                test_node_triangle(a, p, node_normal, b, s.box_triangle[id], best[s.box_body[id]]);
             }
             for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
                 const Candidate& c = best[bi];

@@ -15,6 +15,7 @@ struct DetectionScratch {
     std::vector<Aabb> boxes;
     std::vector<uint32_t> box_body, box_triangle;  // which body and triangle a box belongs to
     std::vector<uint32_t> candidates;
+    std::vector<double> node_normals;  // 3 per node of the body being tested
     BroadPhase grid;
 };
 

@@ -21,6 +21,7 @@ struct BodyReference {
     std::vector<double> volume;     // reference volume per tet (m^3)
     std::vector<uint32_t> boundary; // 3 per outward boundary triangle
     std::vector<uint32_t> boundary_nodes; // nodes of the boundary, ascending (contact slaves)
+    std::vector<uint32_t> feature_nodes;  // boundary nodes on edges and corners (15 degrees)
     double edge_length = 0;         // mean boundary edge length (m): contact tolerances
     double total_mass = 0;
     double com[3] = {0, 0, 0};      // reference centre of mass

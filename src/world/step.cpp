@@ -178,7 +178,7 @@ void advance_kinematic(Body& body, double h) {
 // Contact stage: detection between x^n and x*, then the multiplier solve, which moves the
 // predicted positions to x^{n+1}. Warm start from the last sub-step's multipliers of the same
 // (node, body) pair.
-void World::solve_contacts() {
+void World::solve_contacts(double h) {
     contact_bodies_.clear();
     contact_body_of_slot_.assign(slots_.size(), UINT32_MAX);
     uint32_t movable = 0;
@@ -189,8 +189,11 @@ void World::solve_contacts() {
         cb.slot = i;
         cb.triangles = b.ref.boundary.data();
         cb.triangle_count = uint32_t(b.ref.boundary.size() / 3);
-        cb.nodes = b.ref.boundary_nodes.data();
-        cb.node_count = uint32_t(b.ref.boundary_nodes.size());
+        // Slave nodes: every boundary node of a deformable body; only the edge and corner
+        // nodes of a static or kinematic one (its flat faces are enforced by the other pass).
+        const std::vector<uint32_t>& slaves = b.is_deformable() ? b.ref.boundary_nodes : b.ref.feature_nodes;
+        cb.nodes = slaves.data();
+        cb.node_count = uint32_t(slaves.size());
         cb.x = b.state.x.data();
         cb.x_start = b.def.type == LFEM_BODY_STATIC ? b.state.x.data() : scratch_[i].x_start.data();
         cb.inv_mass = b.is_deformable() ? scratch_[i].inv_mass.data() : nullptr;
@@ -220,14 +223,21 @@ void World::solve_contacts() {
             r.lambda_n = contacts_[k].lambda_n;
             for (int d = 0; d < 3; ++d) r.lambda_t[d] = contacts_[k].lambda_t[d];
         }
-        // The scale of this step's relative motion sets the stopping tolerance.
+        // The scale of the pair's relative motion sets the stopping tolerance: the relative
+        // velocity at the start of the step (last step's mid-step velocities) times h. Not the
+        // predicted motion, which under a resting load is mostly the sag that contact undoes.
         const ContactBody& a = contact_bodies_[contact_body_of_slot_[r.body_a]];
-        for (int d = 0; d < 3; ++d)
-            motion = std::max(motion, std::fabs(a.x[3 * r.node + d] - a.x_start[3 * r.node + d]));
-        length = std::min(length, a.edge_length);
+        const ContactBody& b = contact_bodies_[contact_body_of_slot_[r.body_b]];
+        const double w[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
+        for (int d = 0; d < 3; ++d) {
+            double rel = step_velocity(r.body_a, r.node, d, h);
+            for (int v = 0; v < 3; ++v) rel -= w[v] * step_velocity(r.body_b, r.triangle[v], d, h);
+            motion = std::max(motion, std::fabs(rel) * h);
+        }
+        length = std::min({length, a.edge_length, b.edge_length});
     }
     if (!detected_.empty()) {
-        // Stop when a sweep moves no node by more than contact_tolerance times this step's
+        // Stop when a sweep moves no node by more than contact_tolerance times the relative
         // motion, or 1e-9 of the finest boundary edge when nothing moves (resting contact).
         const double tolerance = std::max(def_.contact_tolerance * motion, 1e-9 * length);
         const ContactSolveResult res = solve_contact_multipliers(
@@ -236,10 +246,20 @@ void World::solve_contacts() {
         counters_.solver_residual = res.residual;
         counters_.max_penetration = res.max_penetration;
     }
-    // Keep only the pairs that carry force: they are the active contacts.
-    contacts_.clear();
-    for (const ContactRecord& r : detected_)
-        if (r.lambda_n > 0.0) contacts_.push_back(r);
+    // Keep every detected pair, also those at zero force: the next step warm-starts from all
+    // of them, so redundant pairs (a node of each body pressing the other's face) keep the
+    // same split of the load from step to step instead of trading it back and forth. Only
+    // pairs that carry force are reported as contacts.
+    contacts_.swap(detected_);
+}
+
+// Velocity of node i of the body in `slot` over the last step (before this step's predictor).
+double World::step_velocity(uint32_t slot, uint32_t i, int k, double h) const {
+    const Body& b = slots_[slot].body;
+    if (b.is_deformable()) return scratch_[slot].v_old[3 * i + k];
+    if (b.def.type == LFEM_BODY_KINEMATIC)
+        return (b.state.x[3 * i + k] - scratch_[slot].x_start[3 * i + k]) / h;
+    return 0.0;
 }
 
 void World::substep(double h, double& kinetic, double& strain, double& work) {
@@ -256,9 +276,10 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         }
         // Static bodies: nothing to do.
     }
-    solve_contacts();
+    solve_contacts(h);
     std::vector<uint8_t> touched(slots_.size(), 0);
-    for (const ContactRecord& r : contacts_) touched[r.body_a] = touched[r.body_b] = 1;
+    for (const ContactRecord& r : contacts_)
+        if (r.active()) touched[r.body_a] = touched[r.body_b] = 1;
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;

@@ -69,7 +69,8 @@ public:
     // Synchronized velocities of a body at the current time, 3 per node.
     void synchronized_velocities(const Body& body, double* out) const;
     const WorldCounters& counters() const { return counters_; }
-    // Active contacts after the last sub-step, in a fixed order (body_a, then node).
+    // Pairs found by the last sub-step, in a fixed order (body_a, node, body_b); those with
+    // active() are the contacts.
     const std::vector<ContactRecord>& contacts() const { return contacts_; }
     // The C record of a contact (handles, contact point, force).
     lfem_contact contact_as_c(const ContactRecord& c) const;
@@ -86,7 +87,8 @@ private:
         double support_torque[3] = {0, 0, 0};
     };
     void substep(double h, double& kinetic, double& strain, double& work);
-    void solve_contacts();
+    void solve_contacts(double h);
+    double step_velocity(uint32_t slot, uint32_t node, int axis, double h) const;
 
     lfem_world_def def_;
     std::vector<Slot> slots_;

@@ -1,0 +1,650 @@
+// C# bindings of lfem (include_c/lfem.h): P/Invoke into the native library "lfem" (liblfem.so,
+// liblfem.dylib, lfem.dll), cdecl. One file, no dependency beyond mscorlib, no unsafe code:
+// drop it into a Unity, Godot C# or .NET project next to the native library.
+//
+// - Structs are blittable and laid out as in C (flags are byte, never bool; arrays of 3 doubles
+//   are Vec3). Their sizes are checked by tests/LfemTests.cs against the C sizes.
+// - Every failing call throws LfemException carrying the Status and lfem_last_error's message.
+//   A failed call changes nothing.
+// - World, Mesh and VtkSeries own their native object through a SafeHandle: Dispose() (or the
+//   finalizer) frees it. Body is a plain value handle; a destroyed body's handle is refused with
+//   Status.InvalidHandle.
+// - One World must not be used by two threads at once (lfem does no locking).
+using System;
+using System.Runtime.InteropServices;
+using Microsoft.Win32.SafeHandles;
+
+namespace Lfem
+{
+    public enum Status : int
+    {
+        Ok = 0,
+        InvalidArgument = 1, // a null pointer, a NaN, a number out of its range
+        InvalidMesh = 2,     // bad indices, inverted or zero-volume tets, unused nodes
+        InvalidHandle = 3,   // a stale, foreign or null body handle
+        BufferTooSmall = 4,  // the caller's capacity is below what the answer needs
+        Unstable = 5,        // the state blew up; the world was rolled back
+        IoError = 6,         // a file could not be read or written, or is malformed
+        OutOfMemory = 7,
+        InternalError = 8,   // a bug in lfem: please report it with the message
+    }
+
+    public enum BodyType : int
+    {
+        Deformable = 0, // finite elements, moves and deforms
+        Static = 1,     // never moves (a floor, a wall)
+        Kinematic = 2,  // moves rigidly with a prescribed velocity
+    }
+
+    public enum Model : int
+    {
+        Paper = 0,        // floating frame: one global rotation per body (eq. 2)
+        Corotational = 1, // one rotation per tet: large local rotations (bending)
+        NeoHookean = 2,   // stable neo-Hookean hyperelasticity: large strains
+        Linear = 3,       // small-strain linear elasticity, no rotation at all
+    }
+
+    /// <summary>Three doubles, laid out as C's double[3].</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Vec3 : IEquatable<Vec3>
+    {
+        public double X, Y, Z;
+
+        public Vec3(double x, double y, double z) { X = x; Y = y; Z = z; }
+
+        public bool Equals(Vec3 o) { return X == o.X && Y == o.Y && Z == o.Z; }
+        public override bool Equals(object o) { return o is Vec3 && Equals((Vec3)o); }
+        public override int GetHashCode() { return X.GetHashCode() ^ (Y.GetHashCode() * 397) ^ (Z.GetHashCode() * 7919); }
+        public override string ToString() { return "(" + X + ", " + Y + ", " + Z + ")"; }
+    }
+
+    /// <summary>lfem_world_def. Start from WorldDef.Default and edit.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct WorldDef
+    {
+        public Vec3 Gravity;            // m/s^2, default (0, 0, -9.81)
+        public double TimeStep;         // s; 0 (default) = automatic
+        public double StepSafety;       // fraction of the stable limit, in (0, 1), default 0.9
+        public uint ContactIterations;  // default 200
+        public double ContactTolerance; // default 1e-3
+        public uint MaxSubsteps;        // default 1000000
+        public byte AllowUnstableStep;  // 1 = skip the up-front stability check, default 0
+#pragma warning disable 0169, 0649 // set by lfem_world_def_default, never by C#
+        private byte padding0, padding1, padding2;
+        private uint internalValue;
+#pragma warning restore 0169, 0649
+
+        /// <summary>The defaults (lfem_world_def_default).</summary>
+        public static WorldDef Default { get { return Native.lfem_world_def_default(); } }
+    }
+
+    /// <summary>lfem_world_stats.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct WorldStats
+    {
+        public double Time;             // s, simulated time
+        public ulong Steps;             // sub-steps since creation
+        public double StepSize;         // s, last sub-step
+        public double StableStep;       // s
+        public uint SubstepsLastCall;
+        public uint BodyCount;
+        public double KineticEnergy;    // J
+        public double StrainEnergy;     // J
+        public double ExternalWork;     // J
+        public double DissipatedEnergy; // J
+        public double EnergyError;      // J
+        public Vec3 LinearMomentum;     // kg m/s
+        public Vec3 AngularMomentum;    // kg m^2/s, about the origin
+        public uint ContactCount;
+        public uint SolverIterations;
+        public double SolverResidual;   // m
+        public double MaxPenetration;   // m
+        public double RotationDrift;    // rad
+    }
+
+    /// <summary>A body handle (lfem_body): a value. Body.Null is {0, 0}.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Body : IEquatable<Body>
+    {
+        public uint Index;
+        public uint Generation;
+
+        public static readonly Body Null = new Body();
+
+        public bool Equals(Body o) { return Index == o.Index && Generation == o.Generation; }
+        public override bool Equals(object o) { return o is Body && Equals((Body)o); }
+        public override int GetHashCode() { return (int)(Index * 2654435761u ^ Generation); }
+        public static bool operator ==(Body a, Body b) { return a.Equals(b); }
+        public static bool operator !=(Body a, Body b) { return !a.Equals(b); }
+        public override string ToString() { return "Body(" + Index + ", " + Generation + ")"; }
+    }
+
+    /// <summary>lfem_body_def. Start from BodyDef.Default and edit.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct BodyDef
+    {
+        public BodyType Type;         // default Deformable
+        public Model Model;           // default Paper
+        public double YoungModulus;   // Pa, > 0, default 1e6
+        public double PoissonRatio;   // [0, 0.5), default 0.3
+        public double Density;        // kg/m^3, > 0, default 1000
+        public double Damping;        // 1/s, >= 0, default 0
+        public double Friction;       // Coulomb coefficient, >= 0, default 0.5
+        public Vec3 LinearVelocity;   // m/s, initial (kinematic: constant)
+        public Vec3 AngularVelocity;  // rad/s, initial spin about the centre of mass
+        public uint CategoryBits;     // collision filter: what this body is, default 1
+        public uint MaskBits;         // collision filter: what it collides with, default all
+        public IntPtr UserData;       // returned by World.GetUserData
+#pragma warning disable 0169, 0649 // set by lfem_body_def_default, never by C#
+        private uint internalValue;
+        private uint padding;
+#pragma warning restore 0169, 0649
+
+        /// <summary>The defaults (lfem_body_def_default).</summary>
+        public static BodyDef Default { get { return Native.lfem_body_def_default(); } }
+    }
+
+    /// <summary>One active node-to-triangle contact of the last step (lfem_contact).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Contact
+    {
+        public Body BodyA;            // owns the node
+        public Body BodyB;            // owns the triangle
+        public uint Node;             // node index in BodyA
+        public uint TriangleA, TriangleB, TriangleC; // node indices in BodyB
+        public double Barycentric1, Barycentric2;    // t1, t2: (1 - t1 - t2) a + t2 b + t1 c
+        public Vec3 Position;         // m, on the triangle
+        public Vec3 Normal;           // unit, out of BodyB's surface
+        public Vec3 Force;            // N, on the node
+        public byte Sliding;          // 1 when friction is on the Coulomb cone
+#pragma warning disable 0169 // C padding
+        private byte padding0, padding1, padding2, padding3, padding4, padding5, padding6;
+#pragma warning restore 0169
+
+        public bool IsSliding { get { return Sliding != 0; } }
+    }
+
+    /// <summary>A failed lfem call: its status and lfem_last_error's message.</summary>
+    public class LfemException : Exception
+    {
+        public Status Status { get; private set; }
+
+        public LfemException(Status status, string message) : base(message) { Status = status; }
+
+        /// <summary>The exception for a call that just returned status on this thread.</summary>
+        internal static LfemException FromLastError(Status status)
+        {
+            return new LfemException(status, Library.PtrToString(Native.lfem_last_error()));
+        }
+
+        internal static void Check(Status status)
+        {
+            if (status != Status.Ok) throw FromLastError(status);
+        }
+    }
+
+    /// <summary>Version and status names of the loaded library.</summary>
+    public static class Library
+    {
+        public const int VersionMajor = 0, VersionMinor = 1, VersionPatch = 0;
+
+        /// <summary>(major &lt;&lt; 16) | (minor &lt;&lt; 8) | patch of the library loaded.</summary>
+        public static uint Version { get { return Native.lfem_version(); } }
+        public static string VersionString { get { return PtrToString(Native.lfem_version_string()); } }
+
+        /// <summary>e.g. "LFEM_INVALID_MESH: invalid mesh".</summary>
+        public static string StatusString(Status status) { return PtrToString(Native.lfem_status_string(status)); }
+
+        /// <summary>The message of this thread's last failed call ("" before any).</summary>
+        public static string LastError { get { return PtrToString(Native.lfem_last_error()); } }
+
+        internal static string PtrToString(IntPtr p)
+        {
+            if (p == IntPtr.Zero) return "";
+            int n = 0;
+            while (Marshal.ReadByte(p, n) != 0) ++n;
+            byte[] bytes = new byte[n];
+            Marshal.Copy(p, bytes, 0, n);
+            return System.Text.Encoding.UTF8.GetString(bytes);
+        }
+
+        internal static byte[] ToCString(string s)
+        {
+            if (s == null) throw new ArgumentNullException("s");
+            byte[] utf8 = System.Text.Encoding.UTF8.GetBytes(s);
+            byte[] z = new byte[utf8.Length + 1];
+            Array.Copy(utf8, z, utf8.Length);
+            return z;
+        }
+    }
+
+    public sealed class WorldHandle : SafeHandleZeroOrMinusOneIsInvalid
+    {
+        private WorldHandle() : base(true) { }
+        protected override bool ReleaseHandle() { Native.lfem_world_destroy(handle); return true; }
+    }
+
+    public sealed class MeshHandle : SafeHandleZeroOrMinusOneIsInvalid
+    {
+        private MeshHandle() : base(true) { }
+        protected override bool ReleaseHandle() { Native.lfem_mesh_destroy(handle); return true; }
+    }
+
+    public sealed class VtkSeriesHandle : SafeHandleZeroOrMinusOneIsInvalid
+    {
+        private VtkSeriesHandle() : base(true) { }
+        protected override bool ReleaseHandle() { Native.lfem_vtk_series_destroy(handle); return true; }
+    }
+
+    /// <summary>A simulation world; Dispose() destroys it and all its bodies.</summary>
+    public sealed class World : IDisposable
+    {
+        private readonly WorldHandle handle;
+
+        public World() : this(WorldDef.Default) { }
+
+        public World(WorldDef def)
+        {
+            WorldHandle h;
+            LfemException.Check(Native.lfem_world_create(ref def, out h));
+            handle = h;
+        }
+
+        public WorldHandle Handle { get { return handle; } }
+
+        public void Dispose() { handle.Dispose(); }
+
+        /// <summary>Advance by dt seconds (split into stable sub-steps).</summary>
+        public void Step(double dt) { LfemException.Check(Native.lfem_world_step(handle, dt)); }
+
+        public void SetGravity(Vec3 gravity) { LfemException.Check(Native.lfem_world_set_gravity(handle, ref gravity)); }
+
+        /// <summary>Fixed sub-step (s), 0 = automatic.</summary>
+        public void SetTimeStep(double timeStep) { LfemException.Check(Native.lfem_world_set_time_step(handle, timeStep)); }
+
+        /// <summary>The stable limit of the step (s); infinity without deformable bodies.</summary>
+        public double StableStep
+        {
+            get { double s; LfemException.Check(Native.lfem_world_get_stable_step(handle, out s)); return s; }
+        }
+
+        public WorldStats Stats
+        {
+            get { WorldStats s; LfemException.Check(Native.lfem_world_get_stats(handle, out s)); return s; }
+        }
+
+        // ---- bodies ----
+
+        public Body CreateBody(BodyDef def)
+        {
+            Body b;
+            LfemException.Check(Native.lfem_body_create(handle, ref def, out b));
+            return b;
+        }
+
+        public void DestroyBody(Body body) { LfemException.Check(Native.lfem_body_destroy(handle, body)); }
+
+        public bool IsValid(Body body) { return Native.lfem_body_is_valid(handle, body) != 0; }
+
+        public void AddMesh(Body body, Mesh mesh)
+        {
+            if (mesh == null) throw new ArgumentNullException("mesh");
+            LfemException.Check(Native.lfem_body_add_mesh(handle, body, Native.lfem_mesh_get_positions(mesh.Handle),
+                Native.lfem_mesh_get_node_count(mesh.Handle), Native.lfem_mesh_get_tets(mesh.Handle),
+                Native.lfem_mesh_get_tet_count(mesh.Handle)));
+            GC.KeepAlive(mesh);
+        }
+
+        /// <summary>Add nodes (m) and tets (4 node indices each, flat) to a body.</summary>
+        public void AddMesh(Body body, Vec3[] positions, uint[] tets)
+        {
+            if (positions == null) throw new ArgumentNullException("positions");
+            if (tets == null) throw new ArgumentNullException("tets");
+            if (tets.Length % 4 != 0)
+                throw new LfemException(Status.InvalidArgument, "Lfem (C#): tets.Length " + tets.Length + " is not a multiple of 4");
+            LfemException.Check(Native.lfem_body_add_mesh(handle, body, positions, (uint)positions.Length, tets, (uint)(tets.Length / 4)));
+        }
+
+        public int NodeCount(Body body)
+        {
+            uint n; LfemException.Check(Native.lfem_body_get_node_count(handle, body, out n)); return (int)n;
+        }
+
+        public int TetCount(Body body)
+        {
+            uint n; LfemException.Check(Native.lfem_body_get_tet_count(handle, body, out n)); return (int)n;
+        }
+
+        public IntPtr GetUserData(Body body)
+        {
+            IntPtr p; LfemException.Check(Native.lfem_body_get_user_data(handle, body, out p)); return p;
+        }
+
+        /// <summary>Node positions (m) into buffer (one per node, or more). Status.BufferTooSmall
+        /// (nothing written) when it is shorter.</summary>
+        public void GetPositions(Body body, Vec3[] buffer)
+        {
+            if (buffer == null) throw new ArgumentNullException("buffer");
+            LfemException.Check(Native.lfem_body_get_positions(handle, body, buffer, (uint)buffer.Length));
+        }
+
+        public Vec3[] GetPositions(Body body)
+        {
+            Vec3[] x = new Vec3[NodeCount(body)];
+            GetPositions(body, x);
+            return x;
+        }
+
+        /// <summary>Node velocities (m/s) into buffer (see GetPositions).</summary>
+        public void GetVelocities(Body body, Vec3[] buffer)
+        {
+            if (buffer == null) throw new ArgumentNullException("buffer");
+            LfemException.Check(Native.lfem_body_get_velocities(handle, body, buffer, (uint)buffer.Length));
+        }
+
+        public Vec3[] GetVelocities(Body body)
+        {
+            Vec3[] v = new Vec3[NodeCount(body)];
+            GetVelocities(body, v);
+            return v;
+        }
+
+        public void SetVelocities(Body body, Vec3[] velocities)
+        {
+            if (velocities == null) throw new ArgumentNullException("velocities");
+            LfemException.Check(Native.lfem_body_set_velocities(handle, body, velocities, (uint)velocities.Length));
+        }
+
+        /// <summary>Boundary triangles, 3 node indices each (flat), counter-clockwise from outside.</summary>
+        public uint[] GetBoundaryTriangles(Body body)
+        {
+            uint n;
+            LfemException.Check(Native.lfem_body_get_boundary_triangle_count(handle, body, out n));
+            uint[] t = new uint[3 * n];
+            LfemException.Check(Native.lfem_body_get_boundary_triangles(handle, body, t, n));
+            return t;
+        }
+
+        /// <summary>Von Mises stress (Pa), one per tet.</summary>
+        public double[] GetVonMisesStress(Body body)
+        {
+            double[] s = new double[TetCount(body)];
+            LfemException.Check(Native.lfem_body_get_von_mises_stress(handle, body, s, (uint)s.Length));
+            return s;
+        }
+
+        /// <summary>The paper model's global rotation, row-major 3x3 (identity otherwise).</summary>
+        public double[] GetRotation(Body body)
+        {
+            double[] r = new double[9];
+            LfemException.Check(Native.lfem_body_get_rotation(handle, body, r));
+            return r;
+        }
+
+        /// <summary>The nodes whose current position lies in the box [lo, hi] (m).</summary>
+        public uint[] FindNodesInBox(Body body, Vec3 lo, Vec3 hi)
+        {
+            uint count;
+            Status s = Native.lfem_body_find_nodes_in_box(handle, body, ref lo, ref hi, null, 0, out count);
+            if (s != Status.BufferTooSmall) LfemException.Check(s);
+            uint[] nodes = new uint[count];
+            if (count > 0)
+                LfemException.Check(Native.lfem_body_find_nodes_in_box(handle, body, ref lo, ref hi, nodes, count, out count));
+            return nodes;
+        }
+
+        // ---- loads and supports ----
+
+        public void FixNodes(Body body, uint[] nodes)
+        {
+            if (nodes == null) throw new ArgumentNullException("nodes");
+            LfemException.Check(Native.lfem_body_fix_nodes(handle, body, nodes, (uint)nodes.Length));
+        }
+
+        public void PrescribeNodeVelocity(Body body, uint[] nodes, Vec3 velocity)
+        {
+            if (nodes == null) throw new ArgumentNullException("nodes");
+            LfemException.Check(Native.lfem_body_prescribe_node_velocity(handle, body, nodes, (uint)nodes.Length, ref velocity));
+        }
+
+        public void ReleaseNodes(Body body, uint[] nodes)
+        {
+            if (nodes == null) throw new ArgumentNullException("nodes");
+            LfemException.Check(Native.lfem_body_release_nodes(handle, body, nodes, (uint)nodes.Length));
+        }
+
+        /// <summary>Constant external forces (N), forces[i] on nodes[i], from now on.</summary>
+        public void SetNodeForces(Body body, uint[] nodes, Vec3[] forces)
+        {
+            if (nodes == null) throw new ArgumentNullException("nodes");
+            if (forces == null) throw new ArgumentNullException("forces");
+            if (nodes.Length != forces.Length)
+                throw new LfemException(Status.InvalidArgument, "Lfem (C#): " + nodes.Length + " nodes but " + forces.Length + " forces");
+            LfemException.Check(Native.lfem_body_set_node_forces(handle, body, nodes, (uint)nodes.Length, forces));
+        }
+
+        public void ClearNodeForces(Body body) { LfemException.Check(Native.lfem_body_clear_node_forces(handle, body)); }
+
+        public void SetKinematicVelocity(Body body, Vec3 linear, Vec3 angular)
+        {
+            LfemException.Check(Native.lfem_body_set_kinematic_velocity(handle, body, ref linear, ref angular));
+        }
+
+        // ---- contacts ----
+
+        /// <summary>The number of active contacts of the last step.</summary>
+        public int ContactCount
+        {
+            get
+            {
+                UIntPtr count;
+                Status s = Native.lfem_world_query_contacts(handle, null, UIntPtr.Zero, out count);
+                if (s != Status.BufferTooSmall) LfemException.Check(s);
+                return checked((int)count.ToUInt64());
+            }
+        }
+
+        /// <summary>Copy the active contacts into buffer; returns how many. Status.BufferTooSmall
+        /// (nothing copied) when buffer is too short.</summary>
+        public int GetContacts(Contact[] buffer)
+        {
+            if (buffer == null) throw new ArgumentNullException("buffer");
+            UIntPtr count;
+            LfemException.Check(Native.lfem_world_query_contacts(handle, buffer, new UIntPtr((uint)buffer.Length), out count));
+            return checked((int)count.ToUInt64());
+        }
+
+        public Contact[] GetContacts()
+        {
+            Contact[] c = new Contact[ContactCount];
+            int n = GetContacts(c);
+            if (n != c.Length) Array.Resize(ref c, n);
+            return c;
+        }
+    }
+
+    /// <summary>A tetrahedral mesh owned by C#; Dispose() frees it.</summary>
+    public sealed class Mesh : IDisposable
+    {
+        private readonly MeshHandle handle;
+
+        private Mesh(Status status, MeshHandle h)
+        {
+            if (status != Status.Ok)
+            {
+                LfemException e = LfemException.FromLastError(status);
+                if (h != null) h.Dispose();
+                throw e;
+            }
+            handle = h;
+        }
+
+        public MeshHandle Handle { get { return handle; } }
+
+        public void Dispose() { handle.Dispose(); }
+
+        /// <summary>A box [0, size] (m) of cells hexahedra, 6 tets each.</summary>
+        public static Mesh Box(Vec3 size, uint cellsX, uint cellsY, uint cellsZ)
+        {
+            uint[] cells = { cellsX, cellsY, cellsZ };
+            MeshHandle h;
+            Status s = Native.lfem_mesh_create_box(ref size, cells, out h);
+            return new Mesh(s, h);
+        }
+
+        public static Mesh Cylinder(double radius, double height, uint segments, uint rings, uint layers)
+        {
+            MeshHandle h;
+            Status s = Native.lfem_mesh_create_cylinder(radius, height, segments, rings, layers, out h);
+            return new Mesh(s, h);
+        }
+
+        public static Mesh Cup(double outerRadius, double height, double wall, double bottom, uint segments, uint layers)
+        {
+            MeshHandle h;
+            Status s = Native.lfem_mesh_create_cup(outerRadius, height, wall, bottom, segments, layers, out h);
+            return new Mesh(s, h);
+        }
+
+        public static Mesh Hammer(double handleLength, double handleWidth, double headLength, double headWidth, double cellSize)
+        {
+            MeshHandle h;
+            Status s = Native.lfem_mesh_create_hammer(handleLength, handleWidth, headLength, headWidth, cellSize, out h);
+            return new Mesh(s, h);
+        }
+
+        /// <summary>The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1).</summary>
+        public static Mesh LoadGmsh(string path)
+        {
+            MeshHandle h;
+            Status s = Native.lfem_mesh_load_gmsh(Library.ToCString(path), out h);
+            return new Mesh(s, h);
+        }
+
+        public int NodeCount { get { return (int)Native.lfem_mesh_get_node_count(handle); } }
+        public int TetCount { get { return (int)Native.lfem_mesh_get_tet_count(handle); } }
+
+        /// <summary>A copy of the node positions (m).</summary>
+        public Vec3[] GetPositions()
+        {
+            int n = NodeCount;
+            double[] flat = new double[3 * n];
+            if (n > 0) Marshal.Copy(Native.lfem_mesh_get_positions(handle), flat, 0, flat.Length);
+            Vec3[] x = new Vec3[n];
+            for (int i = 0; i < n; ++i) x[i] = new Vec3(flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]);
+            return x;
+        }
+
+        /// <summary>A copy of the tets, 4 node indices each (flat).</summary>
+        public uint[] GetTets()
+        {
+            int n = 4 * TetCount;
+            int[] raw = new int[n];
+            if (n > 0) Marshal.Copy(Native.lfem_mesh_get_tets(handle), raw, 0, n);
+            uint[] t = new uint[n];
+            Buffer.BlockCopy(raw, 0, t, 0, 4 * n);
+            return t;
+        }
+
+        public void Translate(Vec3 offset) { LfemException.Check(Native.lfem_mesh_translate(handle, ref offset)); }
+
+        /// <summary>Rotate about the origin by angle (rad) around axis.</summary>
+        public void Rotate(Vec3 axis, double angle) { LfemException.Check(Native.lfem_mesh_rotate(handle, ref axis, angle)); }
+    }
+
+    /// <summary>A ParaView time series (.pvd plus one .vtu per frame); Dispose() closes it.</summary>
+    public sealed class VtkSeries : IDisposable
+    {
+        private readonly VtkSeriesHandle handle;
+
+        public VtkSeries(string pvdPath)
+        {
+            VtkSeriesHandle h;
+            Status s = Native.lfem_vtk_series_create(Library.ToCString(pvdPath), out h);
+            if (s != Status.Ok)
+            {
+                LfemException e = LfemException.FromLastError(s);
+                if (h != null) h.Dispose();
+                throw e;
+            }
+            handle = h;
+        }
+
+        public void WriteFrame(World world)
+        {
+            if (world == null) throw new ArgumentNullException("world");
+            LfemException.Check(Native.lfem_vtk_series_write_frame(handle, world.Handle));
+        }
+
+        public void Dispose() { handle.Dispose(); }
+    }
+
+    /// <summary>The raw C functions, one DllImport each (cdecl). Public for advanced use.</summary>
+    public static class Native
+    {
+        public const string Lib = "lfem";
+        private const CallingConvention Cdecl = CallingConvention.Cdecl;
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern IntPtr lfem_status_string(Status status);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern IntPtr lfem_last_error();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern uint lfem_version();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern IntPtr lfem_version_string();
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern WorldDef lfem_world_def_default();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_create(ref WorldDef def, out WorldHandle world);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_create(IntPtr def, IntPtr world);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern void lfem_world_destroy(IntPtr world);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_step(WorldHandle world, double dt);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_step(IntPtr world, double dt);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_set_gravity(WorldHandle world, ref Vec3 gravity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_set_time_step(WorldHandle world, double timeStep);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_stable_step(WorldHandle world, out double stableStep);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_stats(WorldHandle world, out WorldStats stats);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern BodyDef lfem_body_def_default();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_create(WorldHandle world, ref BodyDef def, out Body body);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_destroy(WorldHandle world, Body body);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern int lfem_body_is_valid(WorldHandle world, Body body);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_mesh(WorldHandle world, Body body, IntPtr positions, uint nodeCount, IntPtr tets, uint tetCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_mesh(WorldHandle world, Body body, [In] Vec3[] positions, uint nodeCount, [In] uint[] tets, uint tetCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_node_count(WorldHandle world, Body body, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_tet_count(WorldHandle world, Body body, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_user_data(WorldHandle world, Body body, out IntPtr userData);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_positions(WorldHandle world, Body body, [Out] Vec3[] positions, uint nodeCapacity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_velocities(WorldHandle world, Body body, [Out] Vec3[] velocities, uint nodeCapacity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_velocities(WorldHandle world, Body body, [In] Vec3[] velocities, uint nodeCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_boundary_triangle_count(WorldHandle world, Body body, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_boundary_triangles(WorldHandle world, Body body, [Out] uint[] triangles, uint triangleCapacity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_von_mises_stress(WorldHandle world, Body body, [Out] double[] stress, uint tetCapacity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_rotation(WorldHandle world, Body body, [Out] double[] rotation);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_find_nodes_in_box(WorldHandle world, Body body, ref Vec3 lo, ref Vec3 hi, [Out] uint[] nodes, uint capacity, out uint count);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_fix_nodes(WorldHandle world, Body body, [In] uint[] nodes, uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_prescribe_node_velocity(WorldHandle world, Body body, [In] uint[] nodes, uint count, ref Vec3 velocity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_release_nodes(WorldHandle world, Body body, [In] uint[] nodes, uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_node_forces(WorldHandle world, Body body, [In] uint[] nodes, uint count, [In] Vec3[] forces);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_clear_node_forces(WorldHandle world, Body body);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_kinematic_velocity(WorldHandle world, Body body, ref Vec3 linear, ref Vec3 angular);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(WorldHandle world, [Out] Contact[] contacts, UIntPtr capacity, out UIntPtr count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(IntPtr world, [Out] Contact[] contacts, UIntPtr capacity, out UIntPtr count);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_box(ref Vec3 size, [In] uint[] cells, out MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_cylinder(double radius, double height, uint segments, uint rings, uint layers, out MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_cup(double outerRadius, double height, double wall, double bottom, uint segments, uint layers, out MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_hammer(double handleLength, double handleWidth, double headLength, double headWidth, double cellSize, out MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_load_gmsh([In] byte[] path, out MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern void lfem_mesh_destroy(IntPtr mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern uint lfem_mesh_get_node_count(MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern uint lfem_mesh_get_tet_count(MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern IntPtr lfem_mesh_get_positions(MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern IntPtr lfem_mesh_get_tets(MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_translate(MeshHandle mesh, ref Vec3 offset);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_rotate(MeshHandle mesh, ref Vec3 axis, double angle);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_vtk_series_create([In] byte[] pvdPath, out VtkSeriesHandle series);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_vtk_series_write_frame(VtkSeriesHandle series, WorldHandle world);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern void lfem_vtk_series_destroy(IntPtr series);
+    }
+}

@@ -1,0 +1,359 @@
+// Tests of the C# bindings, run under mono: struct layouts against the C sizes, real
+// simulations against closed forms, error handling, handle invalidation, buffers, contacts.
+// No test framework (none ships with Debian's mono-runtime): each public static void Test*
+// method is a test; the runner prints "N passed, N failed" and exits non-zero on any failure.
+using System;
+using System.Collections.Generic;
+using System.Reflection;
+using System.Runtime.InteropServices;
+using Lfem;
+
+public static class LfemTests
+{
+    const double G = 9.81;
+
+    // ---- tiny assertion helpers ----
+
+    class Failure : Exception
+    {
+        public Failure(string m) : base(m) { }
+    }
+
+    static void Check(bool condition, string what)
+    {
+        if (!condition) throw new Failure(what);
+    }
+
+    static void Equal<T>(T expected, T actual, string what)
+    {
+        if (!EqualityComparer<T>.Default.Equals(expected, actual))
+            throw new Failure(what + ": expected " + expected + ", got " + actual);
+    }
+
+    static void Close(double expected, double actual, double tol, string what)
+    {
+        if (!(Math.Abs(expected - actual) <= tol))
+            throw new Failure(what + ": expected " + expected.ToString("R") + ", got " + actual.ToString("R") + " (tolerance " + tol + ")");
+    }
+
+    static LfemException Throws(Action call, string what)
+    {
+        try { call(); }
+        catch (LfemException e) { return e; }
+        throw new Failure(what + ": no LfemException");
+    }
+
+    // ---- the scene: a block of 0.3 x 0.2 x 0.1 m lifted to z = 2 m ----
+
+    static readonly Vec3 Size = new Vec3(0.3, 0.2, 0.1);
+    const double Density = 400.0;
+
+    static Body AddBlock(World world, Model model)
+    {
+        using (Mesh mesh = Mesh.Box(Size, 3, 2, 1))
+        {
+            mesh.Translate(new Vec3(0, 0, 2));
+            BodyDef def = BodyDef.Default;
+            def.Model = model;
+            def.YoungModulus = 2e5;
+            def.Density = Density;
+            Body body = world.CreateBody(def);
+            world.AddMesh(body, mesh);
+            return body;
+        }
+    }
+
+    // ---- layout ----
+
+    static void Layout<T>(int size, params object[] fieldsAndOffsets)
+    {
+        Equal(size, Marshal.SizeOf(typeof(T)), "Marshal.SizeOf(" + typeof(T).Name + ")");
+        for (int i = 0; i < fieldsAndOffsets.Length; i += 2)
+        {
+            string field = (string)fieldsAndOffsets[i];
+            Equal((int)fieldsAndOffsets[i + 1], (int)Marshal.OffsetOf(typeof(T), field), typeof(T).Name + "." + field + " offset");
+        }
+        // Blittable: pinning throws ArgumentException for a non-blittable type.
+        GCHandle pin = GCHandle.Alloc(Activator.CreateInstance(typeof(T)), GCHandleType.Pinned);
+        pin.Free();
+    }
+
+    public static void TestStructSizesMatchC()
+    {
+        // The numbers bindings/abi_layout.c asserts in C (64-bit targets).
+        Check(IntPtr.Size == 8, "64-bit process");
+        Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(Status))), "sizeof(lfem_status)");
+        Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(BodyType))), "sizeof(lfem_body_type)");
+        Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(Model))), "sizeof(lfem_model)");
+        Layout<Vec3>(24, "Z", 16);
+        Layout<Body>(8, "Index", 0, "Generation", 4);
+        Layout<WorldDef>(72, "Gravity", 0, "TimeStep", 24, "StepSafety", 32, "ContactIterations", 40,
+                         "ContactTolerance", 48, "MaxSubsteps", 56, "AllowUnstableStep", 60, "internalValue", 64);
+        Layout<WorldStats>(160, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
+                           "KineticEnergy", 40, "EnergyError", 72, "LinearMomentum", 80, "AngularMomentum", 104,
+                           "ContactCount", 128, "SolverIterations", 132, "SolverResidual", 136, "MaxPenetration", 144,
+                           "RotationDrift", 152);
+        Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
+                        "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
+                        "UserData", 104, "internalValue", 112);
+        Layout<Contact>(128, "BodyA", 0, "BodyB", 8, "Node", 16, "TriangleA", 20, "TriangleC", 28, "Barycentric1", 32,
+                        "Barycentric2", 40, "Position", 48, "Normal", 72, "Force", 96, "Sliding", 120);
+    }
+
+    public static void TestDefaultsComeFromC()
+    {
+        WorldDef w = WorldDef.Default;
+        Equal(new Vec3(0, 0, -9.81), w.Gravity, "gravity");
+        Equal(0.0, w.TimeStep, "time step");
+        Equal(0.9, w.StepSafety, "step safety");
+        Equal(200u, w.ContactIterations, "contact iterations");
+        Equal(1e-3, w.ContactTolerance, "contact tolerance");
+        Equal(1000000u, w.MaxSubsteps, "max substeps");
+        Equal((byte)0, w.AllowUnstableStep, "allow unstable step");
+        BodyDef b = BodyDef.Default;
+        Equal(BodyType.Deformable, b.Type, "type");
+        Equal(Model.Paper, b.Model, "model");
+        Equal(1e6, b.YoungModulus, "E");
+        Equal(0.3, b.PoissonRatio, "nu");
+        Equal(1000.0, b.Density, "density");
+        Equal(0.5, b.Friction, "friction");
+        Equal(1u, b.CategoryBits, "category");
+        Equal(0xFFFFFFFFu, b.MaskBits, "mask");
+        Equal(IntPtr.Zero, b.UserData, "user data");
+    }
+
+    public static void TestVersion()
+    {
+        Equal((uint)((Library.VersionMajor << 16) | (Library.VersionMinor << 8) | Library.VersionPatch), Library.Version, "version");
+        Equal(Library.VersionMajor + "." + Library.VersionMinor + "." + Library.VersionPatch, Library.VersionString, "version string");
+        Check(Library.StatusString(Status.InvalidMesh).StartsWith("LFEM_INVALID_MESH"), "status string");
+    }
+
+    // ---- physics ----
+
+    public static void TestFallingBlockFollowsFreeFall()
+    {
+        // Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each
+        // node follows z0 - g t^2/2 with velocity -g t, momentum -m g t, kinetic energy
+        // m (g t)^2/2, m = rho V. Central differences are exact on a quadratic trajectory; only
+        // round-off remains (~1e-16 per sub-step on values of order 1), far below 1e-11.
+        double mass = Density * (Size.X * Size.Y * Size.Z);
+        foreach (Model model in new[] { Model.Paper, Model.Corotational, Model.NeoHookean, Model.Linear })
+        {
+            using (World world = new World())
+            {
+                Body block = AddBlock(world, model);
+                Vec3[] start = world.GetPositions(block);
+                Equal(24, start.Length, "node count");
+                for (int call = 1; call <= 50; ++call)
+                {
+                    world.Step(0.01);
+                    if (call % 10 != 0) continue;
+                    WorldStats stats = world.Stats;
+                    double t = stats.Time;
+                    Close(0.01 * call, t, 1e-12, model + " time");
+                    Vec3[] x = world.GetPositions(block);
+                    Vec3[] v = world.GetVelocities(block);
+                    for (int i = 0; i < x.Length; ++i)
+                    {
+                        Close(start[i].X, x[i].X, 1e-11, model + " x of node " + i);
+                        Close(start[i].Y, x[i].Y, 1e-11, model + " y of node " + i);
+                        Close(start[i].Z - 0.5 * G * t * t, x[i].Z, 1e-11, model + " z of node " + i);
+                        Close(-G * t, v[i].Z, 1e-11, model + " vz of node " + i);
+                        Close(0.0, v[i].X, 1e-11, model + " vx of node " + i);
+                    }
+                    Close(-mass * G * t, stats.LinearMomentum.Z, 1e-10 * mass * G * t, model + " momentum");
+                    double ke = 0.5 * mass * (G * t) * (G * t);
+                    Close(ke, stats.KineticEnergy, 1e-10 * ke, model + " kinetic energy");
+                    Close(0.0, stats.StrainEnergy, 1e-10 * ke, model + " strain energy");
+                }
+                Equal(1u, world.Stats.BodyCount, "body count");
+            }
+        }
+    }
+
+    public static void TestSidewaysGravityAndMeshViews()
+    {
+        using (Mesh mesh = Mesh.Box(Size, 3, 2, 1))
+        {
+            Equal(24, mesh.NodeCount, "mesh nodes");
+            Equal(36, mesh.TetCount, "mesh tets");
+            foreach (Vec3 p in mesh.GetPositions())
+                Check(p.X >= 0 && p.X <= 0.3 && p.Y >= 0 && p.Y <= 0.2 && p.Z >= 0 && p.Z <= 0.1, "box node inside the box");
+            foreach (uint i in mesh.GetTets()) Check(i < 24, "tet index in range");
+        }
+        using (World world = new World())
+        {
+            Body block = AddBlock(world, Model.Corotational);
+            world.SetGravity(new Vec3(2, 0, 0));
+            Vec3[] start = world.GetPositions(block);
+            world.Step(0.3);
+            double t = world.Stats.Time;
+            Vec3[] x = world.GetPositions(block);
+            for (int i = 0; i < x.Length; ++i)
+            {
+                Close(start[i].X + t * t, x[i].X, 1e-11, "x = x0 + a t^2/2");
+                Close(start[i].Z, x[i].Z, 1e-11, "z unchanged");
+            }
+            Check(world.StableStep > 0, "stable step > 0");
+        }
+    }
+
+    // ---- errors ----
+
+    public static void TestBadArgumentsThrowStatusAndMessage()
+    {
+        using (World world = new World())
+        {
+            AddBlock(world, Model.Paper);
+            WorldStats before = world.Stats;
+            LfemException e = Throws(() => world.Step(-1.0), "step(-1)");
+            Equal(Status.InvalidArgument, e.Status, "status");
+            Check(e.Message.StartsWith("lfem_world_step"), "message names the function: " + e.Message);
+            Check(e.Message.Contains("dt"), "message names dt: " + e.Message);
+            Equal(before, world.Stats, "a failed call changed the world");
+
+            e = Throws(() => world.Step(double.NaN), "step(NaN)");
+            Equal(Status.InvalidArgument, e.Status, "NaN status");
+
+            BodyDef def = BodyDef.Default;
+            def.PoissonRatio = 0.5;
+            e = Throws(() => world.CreateBody(def), "nu = 0.5");
+            Equal(Status.InvalidArgument, e.Status, "nu status");
+            Check(e.Message.StartsWith("lfem_body_create"), "message: " + e.Message);
+
+            // An inverted tet, then the same tet correctly oriented.
+            Body body = world.CreateBody(BodyDef.Default);
+            Vec3[] nodes = { new Vec3(0, 0, 0), new Vec3(0, 1, 0), new Vec3(1, 0, 0), new Vec3(0, 0, 1) };
+            e = Throws(() => world.AddMesh(body, nodes, new uint[] { 0, 1, 2, 3 }), "inverted tet");
+            Equal(Status.InvalidMesh, e.Status, "inverted status");
+            Check(e.Message.StartsWith("lfem_body_add_mesh"), "message: " + e.Message);
+            Equal(0, world.NodeCount(body), "nothing added");
+            world.AddMesh(body, nodes, new uint[] { 0, 2, 1, 3 });
+            Equal(4, world.NodeCount(body), "nodes added");
+            Equal(1, world.TetCount(body), "tet added");
+
+            e = Throws(() => world.SetGravity(new Vec3(double.NaN, 0, 0)), "NaN gravity");
+            Equal(Status.InvalidArgument, e.Status, "gravity status");
+        }
+        WorldDef bad = WorldDef.Default;
+        bad.StepSafety = 1.5;
+        LfemException e2 = Throws(() => new World(bad), "step safety 1.5");
+        Equal(Status.InvalidArgument, e2.Status, "step safety status");
+        Check(e2.Message.Contains("step_safety"), "message: " + e2.Message);
+
+        LfemException e3 = Throws(() => Mesh.LoadGmsh("/nonexistent/lfem/mesh.msh"), "missing file");
+        Equal(Status.IoError, e3.Status, "io status");
+        LfemException e4 = Throws(() => Mesh.Box(Size, 0, 2, 1), "zero cells");
+        Equal(Status.InvalidArgument, e4.Status, "zero cells status");
+    }
+
+    public static void TestNullPointersAreRefused()
+    {
+        // Straight through the raw P/Invoke declarations: NULL is answered, never a crash.
+        Equal(Status.InvalidArgument, Native.lfem_world_step(IntPtr.Zero, 0.01), "step(NULL)");
+        Check(Library.LastError.StartsWith("lfem_world_step"), "last error: " + Library.LastError);
+        Equal(Status.InvalidArgument, Native.lfem_world_create(IntPtr.Zero, IntPtr.Zero), "create(NULL, NULL)");
+        UIntPtr count;
+        Equal(Status.InvalidArgument, Native.lfem_world_query_contacts(IntPtr.Zero, null, UIntPtr.Zero, out count), "query(NULL)");
+    }
+
+    public static void TestDestroyedAndForeignHandlesAreRefused()
+    {
+        using (World world = new World())
+        using (World other = new World())
+        {
+            Body block = AddBlock(world, Model.Paper);
+            Body copy = block;
+            Check(world.IsValid(block), "valid before destroy");
+            world.DestroyBody(block);
+            Check(!world.IsValid(copy), "stale after destroy");
+            LfemException e = Throws(() => world.GetPositions(copy), "positions of a destroyed body");
+            Equal(Status.InvalidHandle, e.Status, "stale status");
+            Check(e.Message.StartsWith("lfem_body_get_"), "message: " + e.Message);
+            Equal(Status.InvalidHandle, Throws(() => world.DestroyBody(copy), "destroy twice").Status, "destroy twice");
+            Equal(0u, world.Stats.BodyCount, "no body left");
+
+            Body fresh = world.CreateBody(BodyDef.Default);
+            Check(world.IsValid(fresh) && !world.IsValid(copy) && fresh != copy, "new generation");
+            Equal(Status.InvalidHandle, Throws(() => world.NodeCount(Body.Null), "null handle").Status, "null handle");
+
+            Body foreign = AddBlock(other, Model.Paper);
+            using (World third = new World())
+                Equal(Status.InvalidHandle, Throws(() => third.GetPositions(foreign), "foreign handle").Status, "foreign");
+        }
+    }
+
+    public static void TestDisposedWorldIsRefused()
+    {
+        World world = new World();
+        world.Dispose();
+        Check(world.Handle.IsClosed, "handle closed");
+        bool threw = false;
+        try { world.Step(0.01); }
+        catch (ObjectDisposedException) { threw = true; }
+        Check(threw, "a disposed world throws ObjectDisposedException");
+        world.Dispose(); // twice is harmless
+    }
+
+    public static void TestShortBuffersAreRefusedUntouched()
+    {
+        using (World world = new World())
+        {
+            Body block = AddBlock(world, Model.Paper);
+            int n = world.NodeCount(block);
+            Vec3[] shortBuffer = new Vec3[n - 1];
+            for (int i = 0; i < shortBuffer.Length; ++i) shortBuffer[i] = new Vec3(7, 7, 7);
+            Equal(Status.BufferTooSmall, Throws(() => world.GetPositions(block, shortBuffer), "short buffer").Status, "short status");
+            foreach (Vec3 p in shortBuffer) Equal(new Vec3(7, 7, 7), p, "short buffer untouched");
+            Vec3[] longBuffer = new Vec3[n + 2];
+            longBuffer[n] = new Vec3(7, 7, 7);
+            world.GetPositions(block, longBuffer);
+            Equal(new Vec3(7, 7, 7), longBuffer[n], "beyond the nodes untouched");
+            Equal(world.GetPositions(block)[n - 1], longBuffer[n - 1], "same positions");
+        }
+    }
+
+    public static void TestContactQueryOfASingleBodyIsEmpty()
+    {
+        // Contact is still being written; a lone block has no contact anyway: this checks the
+        // binding of the query (count, empty array, buffer left alone).
+        using (World world = new World())
+        {
+            AddBlock(world, Model.NeoHookean);
+            world.Step(0.05);
+            Equal(0, world.ContactCount, "contact count");
+            Equal(0, world.GetContacts().Length, "contacts");
+            Equal(0, world.GetContacts(new Contact[0]), "empty buffer");
+            Contact[] buffer = new Contact[4];
+            for (int i = 0; i < buffer.Length; ++i) buffer[i].Node = 12345;
+            Equal(0, world.GetContacts(buffer), "count into a buffer");
+            foreach (Contact c in buffer) Equal(12345u, c.Node, "buffer untouched");
+            Equal(0u, world.Stats.ContactCount, "stats contact count");
+        }
+    }
+
+    // ---- runner ----
+
+    public static int Main()
+    {
+        int passed = 0, failed = 0;
+        foreach (MethodInfo m in typeof(LfemTests).GetMethods(BindingFlags.Public | BindingFlags.Static))
+        {
+            if (!m.Name.StartsWith("Test")) continue;
+            try
+            {
+                m.Invoke(null, null);
+                ++passed;
+                Console.WriteLine("ok      " + m.Name);
+            }
+            catch (TargetInvocationException e)
+            {
+                ++failed;
+                Console.WriteLine("FAILED  " + m.Name + ": " + e.InnerException);
+            }
+        }
+        Console.WriteLine(passed + " passed, " + failed + " failed");
+        return failed == 0 && passed > 0 ? 0 : 1;
+    }
+}

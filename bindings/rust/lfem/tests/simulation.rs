@@ -1,0 +1,242 @@
+//! Real simulations through the safe API, checked against closed forms, plus error handling,
+//! handle invalidation, buffers and contacts.
+use lfem::{Body, BodyDef, BodyType, Contact, Mesh, Model, Status, World, WorldDef};
+
+const G: f64 = 9.81;
+
+/// A block of `size` (m) and `density`, lifted to z = 2 m, in a fresh default world.
+fn block_world(model: Model, size: [f64; 3], density: f64) -> (World, Body) {
+    let mut world = World::new(&WorldDef::default()).unwrap();
+    let mut mesh = Mesh::new_box(size, [3, 2, 1]).unwrap();
+    mesh.translate([0.0, 0.0, 2.0]).unwrap();
+    let mut def = BodyDef::default();
+    def.model = model;
+    def.young_modulus = 2e5;
+    def.density = density;
+    let body = world.create_body(&def).unwrap();
+    world.add_mesh(body, &mesh).unwrap();
+    (world, body)
+}
+
+fn close(a: f64, b: f64, tol: f64) -> bool {
+    (a - b).abs() <= tol
+}
+
+#[test]
+fn falling_block_follows_free_fall() {
+    // Uniform gravity on an unstressed body at rest accelerates every node by exactly g: no
+    // deformation ever appears, so each node follows z0 - g t^2/2, each velocity is -g t, the
+    // momentum is -m g t and the kinetic energy m (g t)^2 / 2, with m = rho V (lumped masses sum
+    // to the body's mass). The central-difference update is exact for a quadratic trajectory,
+    // so only round-off remains: ~1e-16 relative per sub-step, over at most a few thousand
+    // sub-steps of values of order 1, far below the tolerances 1e-11 (positions, velocities)
+    // and 1e-10 relative (momentum, energy) used here.
+    let size = [0.3, 0.2, 0.1];
+    let density = 400.0;
+    let mass = density * size[0] * size[1] * size[2];
+    for &model in &[Model::Paper, Model::Corotational, Model::NeoHookean, Model::Linear] {
+        let (mut world, block) = block_world(model, size, density);
+        let start = world.positions(block).unwrap();
+        assert_eq!(start.len(), 4 * 3 * 2);
+        for call in 1..=50 {
+            world.step(0.01).unwrap();
+            if call % 10 != 0 {
+                continue;
+            }
+            let stats = world.stats().unwrap();
+            let t = stats.time;
+            assert!(close(t, 0.01 * call as f64, 1e-12), "{:?}: t = {}", model, t);
+            let x = world.positions(block).unwrap();
+            let v = world.velocities(block).unwrap();
+            for (i, (p, p0)) in x.iter().zip(&start).enumerate() {
+                assert!(close(p[0], p0[0], 1e-11) && close(p[1], p0[1], 1e-11), "{:?} node {} drifted", model, i);
+                assert!(
+                    close(p[2], p0[2] - 0.5 * G * t * t, 1e-11),
+                    "{:?} node {}: z = {}, closed form {}",
+                    model,
+                    i,
+                    p[2],
+                    p0[2] - 0.5 * G * t * t
+                );
+                assert!(close(v[i][2], -G * t, 1e-11), "{:?} node {}: vz = {}", model, i, v[i][2]);
+                assert!(close(v[i][0], 0.0, 1e-11) && close(v[i][1], 0.0, 1e-11));
+            }
+            let p = stats.linear_momentum;
+            assert!(close(p[2], -mass * G * t, 1e-10 * mass * G * t), "{:?}: pz = {}", model, p[2]);
+            assert!(close(p[0], 0.0, 1e-10) && close(p[1], 0.0, 1e-10));
+            let ke = 0.5 * mass * (G * t) * (G * t);
+            assert!(close(stats.kinetic_energy, ke, 1e-10 * ke), "{:?}: ke = {}", model, stats.kinetic_energy);
+            assert!(stats.strain_energy.abs() <= 1e-10 * ke, "{:?}: strain {}", model, stats.strain_energy);
+        }
+        assert_eq!(world.stats().unwrap().body_count, 1);
+    }
+}
+
+#[test]
+fn lowest_point_and_centre_of_mass_of_the_example_scene() {
+    // The scene of examples/falling_block.rs: the lowest nodes start at z = 2 m.
+    let (mut world, block) = block_world(Model::NeoHookean, [0.3, 0.2, 0.1], 400.0);
+    for _ in 0..50 {
+        world.step(0.01).unwrap();
+    }
+    let t = world.stats().unwrap().time;
+    let lowest = world.positions(block).unwrap().iter().map(|p| p[2]).fold(f64::INFINITY, f64::min);
+    assert!(close(lowest, 2.0 - 0.5 * G * t * t, 1e-11));
+    assert!(close(t, 0.5, 1e-12));
+}
+
+#[test]
+fn defaults_come_from_the_c_library() {
+    let w = WorldDef::default();
+    assert_eq!(w.gravity, [0.0, 0.0, -9.81]);
+    assert_eq!(w.time_step, 0.0);
+    assert_eq!(w.step_safety, 0.9);
+    assert_eq!(w.contact_iterations, 200);
+    assert_eq!(w.max_substeps, 1_000_000);
+    assert!(!w.allow_unstable_step);
+    let b = BodyDef::default();
+    assert_eq!(b.body_type, BodyType::Deformable);
+    assert_eq!(b.model, Model::Paper);
+    assert_eq!(b.young_modulus, 1e6);
+    assert_eq!(b.poisson_ratio, 0.3);
+    assert_eq!(b.density, 1000.0);
+    assert_eq!(b.friction, 0.5);
+    assert_eq!(b.category_bits, 1);
+    assert_eq!(b.mask_bits, u32::MAX);
+}
+
+#[test]
+fn bad_arguments_give_the_status_and_the_message() {
+    let (mut world, _block) = block_world(Model::Paper, [0.3, 0.2, 0.1], 400.0);
+    let before = world.stats().unwrap();
+
+    let err = world.step(-1.0).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().starts_with("lfem_world_step"), "message: {}", err.message());
+    assert!(err.message().contains("dt"), "message: {}", err.message());
+    assert!(err.to_string().contains("LFEM_INVALID_ARGUMENT"), "display: {}", err);
+    assert_eq!(world.stats().unwrap(), before, "a failed call changed the world");
+
+    let err = world.step(f64::NAN).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+
+    let mut def = BodyDef::default();
+    def.poisson_ratio = 0.5;
+    let err = world.create_body(&def).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().starts_with("lfem_body_create"), "message: {}", err.message());
+
+    let mut bad = WorldDef::default();
+    bad.step_safety = 1.5;
+    let err = World::new(&bad).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().contains("step_safety"), "message: {}", err.message());
+
+    // An inverted tet (negative volume) is an invalid mesh.
+    let body = world.create_body(&BodyDef::default()).unwrap();
+    let nodes = [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]];
+    let err = world.add_mesh_data(body, &nodes, &[[0, 1, 2, 3]]).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidMesh);
+    assert!(err.message().starts_with("lfem_body_add_mesh"), "message: {}", err.message());
+    assert_eq!(world.node_count(body).unwrap(), 0);
+    // The same tet correctly oriented is accepted.
+    world.add_mesh_data(body, &nodes, &[[0, 2, 1, 3]]).unwrap();
+    assert_eq!(world.node_count(body).unwrap(), 4);
+    assert_eq!(world.tet_count(body).unwrap(), 1);
+
+    let err = Mesh::load_gmsh("/nonexistent/lfem/mesh.msh").unwrap_err();
+    assert_eq!(err.status(), Status::IoError);
+}
+
+#[test]
+fn destroyed_and_foreign_handles_are_refused() {
+    let (mut world, block) = block_world(Model::Paper, [0.3, 0.2, 0.1], 400.0);
+    let copy = block;
+    assert!(world.is_valid(block));
+    world.destroy_body(block).unwrap();
+    assert!(!world.is_valid(copy));
+    let err = world.positions(copy).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidHandle);
+    assert!(err.message().starts_with("lfem_body_get_"), "message: {}", err.message());
+    assert_eq!(world.destroy_body(copy).unwrap_err().status(), Status::InvalidHandle);
+    assert_eq!(world.stats().unwrap().body_count, 0);
+
+    // A new body may reuse the slot, never the generation.
+    let fresh = world.create_body(&BodyDef::default()).unwrap();
+    assert!(world.is_valid(fresh));
+    assert!(!world.is_valid(copy));
+    assert_ne!(fresh, copy);
+
+    assert_eq!(world.node_count(Body::NULL).unwrap_err().status(), Status::InvalidHandle);
+    assert!(!world.is_valid(Body::NULL));
+
+    // A handle of another world.
+    let (other, other_block) = block_world(Model::Paper, [0.3, 0.2, 0.1], 400.0);
+    assert!(other.is_valid(other_block));
+    let mut third = World::new(&WorldDef::default()).unwrap();
+    assert_eq!(third.positions(other_block).unwrap_err().status(), Status::InvalidHandle);
+    assert_eq!(third.destroy_body(other_block).unwrap_err().status(), Status::InvalidHandle);
+}
+
+#[test]
+fn short_buffers_are_refused_untouched() {
+    let (world, block) = block_world(Model::Paper, [0.3, 0.2, 0.1], 400.0);
+    let n = world.node_count(block).unwrap();
+    let mut short = vec![[7.0; 3]; n - 1];
+    let err = world.positions_into(block, &mut short).unwrap_err();
+    assert_eq!(err.status(), Status::BufferTooSmall);
+    assert!(short.iter().all(|p| *p == [7.0; 3]));
+    let mut long = vec![[7.0; 3]; n + 2];
+    world.positions_into(block, &mut long).unwrap();
+    assert_eq!(long[n], [7.0; 3]);
+    assert_eq!(&long[..n], &world.positions(block).unwrap()[..]);
+}
+
+#[test]
+fn contact_query_of_a_single_body_is_empty() {
+    // Contact is still being written: a lone falling block has no contact anyway, so these
+    // check the binding of the query (count, empty list, buffers left alone).
+    let (mut world, _block) = block_world(Model::NeoHookean, [0.3, 0.2, 0.1], 400.0);
+    world.step(0.05).unwrap();
+    assert_eq!(world.contact_count().unwrap(), 0);
+    assert!(world.contacts().unwrap().is_empty());
+    assert_eq!(world.contacts_into(&mut []).unwrap(), 0);
+    let mut sentinel = Contact::default();
+    sentinel.node = 12345;
+    let mut buffer = [sentinel; 4];
+    assert_eq!(world.contacts_into(&mut buffer).unwrap(), 0);
+    assert!(buffer.iter().all(|c| *c == sentinel));
+    assert_eq!(world.stats().unwrap().contact_count, 0);
+}
+
+#[test]
+fn mesh_views_and_gravity_change() {
+    let mesh = Mesh::new_box([0.3, 0.2, 0.1], [3, 2, 1]).unwrap();
+    assert_eq!(mesh.node_count(), 24);
+    assert_eq!(mesh.tet_count(), 36);
+    assert_eq!(mesh.positions().len(), 24);
+    assert!(mesh.positions().iter().all(|p| p[0] >= 0.0 && p[0] <= 0.3 && p[1] <= 0.2 && p[2] <= 0.1));
+    assert!(mesh.tets().iter().flatten().all(|&i| i < 24));
+    assert_eq!(Mesh::new_box([0.3, 0.2, 0.1], [0, 2, 1]).unwrap_err().status(), Status::InvalidArgument);
+
+    // Sideways gravity: x0 + a t^2/2 along x, nothing along z.
+    let (mut world, block) = block_world(Model::Corotational, [0.3, 0.2, 0.1], 400.0);
+    world.set_gravity([2.0, 0.0, 0.0]).unwrap();
+    let start = world.positions(block).unwrap();
+    world.step(0.3).unwrap();
+    let t = world.stats().unwrap().time;
+    for (p, p0) in world.positions(block).unwrap().iter().zip(&start) {
+        assert!(close(p[0], p0[0] + t * t, 1e-11));
+        assert!(close(p[2], p0[2], 1e-11));
+    }
+    assert_eq!(world.set_gravity([f64::NAN, 0.0, 0.0]).unwrap_err().status(), Status::InvalidArgument);
+    assert!(world.stable_step().unwrap() > 0.0);
+}
+
+#[test]
+fn version_of_the_loaded_library() {
+    let (major, minor, patch) = lfem::version();
+    assert_eq!((major, minor, patch), (lfem::sys::LFEM_VERSION_MAJOR, lfem::sys::LFEM_VERSION_MINOR, lfem::sys::LFEM_VERSION_PATCH));
+    assert_eq!(lfem::version_string(), format!("{}.{}.{}", major, minor, patch));
+    assert!(Status::InvalidMesh.to_string().starts_with("LFEM_INVALID_MESH"));
+}

@@ -1,0 +1,142 @@
+// Bodies at rest on a static floor: the contact forces carry exactly the weight, nothing
+// jitters, nothing sinks.
+#include <cmath>
+
+#include "physics/lfem_test_util.h"
+
+using namespace lfem_test;
+
+namespace {
+
+// A static floor: the box [-0.5, 0.5]^2 x [-0.1, 0].
+lfem_body add_floor(lfem_world* w, Mesh& mesh, double friction = 0.5) {
+    make_box_mesh(mesh, 1.0, 1.0, 0.1, 4, 4, 1, -0.5, -0.5, -0.1);
+    lfem_body_def def = lfem_body_def_default();
+    def.type = LFEM_BODY_STATIC;
+    def.friction = friction;
+    return add_body(w, def, mesh);
+}
+
+// Sum of the contact forces on body `on` (N): nodes of `on` get the force, triangles of `on`
+// get its opposite.
+void contact_force_on(lfem_world* w, lfem_body on, double out[3]) {
+    size_t count = 0;
+    lfem_world_query_contacts(w, nullptr, 0, &count);
+    std::vector<lfem_contact> c(count);
+    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
+    out[0] = out[1] = out[2] = 0;
+    for (const lfem_contact& k : c) {
+        const double sign = k.body_a.index == on.index ? 1.0 : (k.body_b.index == on.index ? -1.0 : 0.0);
+        for (int d = 0; d < 3; ++d) out[d] += sign * k.force[d];
+    }
+}
+
+double rms_velocity(lfem_world* w, lfem_body b) {
+    const std::vector<double> v = velocities(w, b);
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s / (v.size() / 3));
+}
+
+}  // namespace
+
+TEST(RestingContact, BlockOnFloorCarriesItsWeightWithoutJitter) {
+    World w;
+    Mesh floor_mesh, block_mesh;
+    add_floor(w, floor_mesh);
+    make_box_mesh(block_mesh, 0.1, 0.1, 0.1, 4, 4, 4, -0.05, -0.05, 0.0);
+    lfem_body_def def = lfem_body_def_default();
+    def.young_modulus = 1e6;
+    def.damping = 20.0;  // settles the ringing of the sudden load within ~0.5 s
+    const lfem_body block = add_body(w, def, block_mesh);
+    double mass = 0;
+    lfem_body_get_mass(w, block, &mass);
+
+    ASSERT_EQ(lfem_world_step(w, 1.0), LFEM_OK) << lfem_last_error();
+    double worst_penetration = 0, worst_rms = 0, worst_force = 0;
+    for (int i = 0; i < 200; ++i) {  // another 0.2 s, every millisecond
+        ASSERT_EQ(lfem_world_step(w, 1e-3), LFEM_OK) << lfem_last_error();
+        double f[3];
+        contact_force_on(w, block, f);
+        worst_force = std::fmax(worst_force, std::fabs(f[2] / (mass * 9.81) - 1));
+        worst_rms = std::fmax(worst_rms, rms_velocity(w, block));
+        worst_penetration = std::fmax(worst_penetration, stats(w).max_penetration);
+    }
+    std::printf("resting block: normal force within %.2e of m g, RMS node velocity <= %.2e m/s, "
+                "penetration <= %.2e m, %u contacts, %u sweeps\n",
+                worst_force, worst_rms, worst_penetration, stats(w).contact_count,
+                stats(w).solver_iterations);
+    EXPECT_LT(worst_force, 0.005);  // the 0.5 %
+    EXPECT_LT(worst_rms, 1e-6);     // no jitter
+    // Penetration: the solve stops at 1e-9 of the 2.5 cm edges; 1e-9 m bounds it with margin.
+    EXPECT_LT(worst_penetration, 1e-9);
+}
+
+TEST(RestingContact, StackOfThreeSoftCubesComesToRestWithoutPenetration) {
+    World w;
+    Mesh floor_mesh, cube[3];
+    add_floor(w, floor_mesh);
+    lfem_body_def def = lfem_body_def_default();
+    def.model = LFEM_MODEL_COROTATIONAL;
+    def.young_modulus = 2e5;  // soft: each cube squashes visibly under the ones above
+    def.damping = 15.0;
+    lfem_body bodies[3];
+    for (int i = 0; i < 3; ++i) {
+        // Each cube 1 mm above the one below (dropped into place), slightly offset sideways.
+        make_box_mesh(cube[i], 0.1, 0.1, 0.1, 3, 3, 3, -0.05 + 0.01 * i, -0.05, 0.101 * i + 0.001);
+        bodies[i] = add_body(w, def, cube[i]);
+    }
+    ASSERT_EQ(lfem_world_step(w, 2.0), LFEM_OK) << lfem_last_error();
+    std::vector<double> before[3];
+    for (int i = 0; i < 3; ++i) before[i] = positions(w, bodies[i]);
+    double worst_penetration = 0;
+    for (int i = 0; i < 100; ++i) {
+        ASSERT_EQ(lfem_world_step(w, 1e-3), LFEM_OK) << lfem_last_error();
+        worst_penetration = std::fmax(worst_penetration, stats(w).max_penetration);
+    }
+    // At rest: no node moved by more than 1e-5 m over the last 0.1 s (the stack's weight
+    // squashes the bottom cube by ~1.5 cm, so this is ~1e-3 of the deformation).
+    double worst_move = 0;
+    for (int i = 0; i < 3; ++i) {
+        const std::vector<double> x = positions(w, bodies[i]);
+        for (size_t k = 0; k < x.size(); ++k) worst_move = std::fmax(worst_move, std::fabs(x[k] - before[i][k]));
+    }
+    // Each cube's lowest node sits on (not in) the one below: order kept, weights carried.
+    double weights = 0, f[3];
+    for (lfem_body b : bodies) {
+        double m = 0;
+        lfem_body_get_mass(w, b, &m);
+        weights += m * 9.81;
+    }
+    contact_force_on(w, bodies[0], f);  // the bottom cube: floor pushes up, cube 2 down
+    double floor_force = 0;
+    {
+        size_t count = 0;
+        lfem_world_query_contacts(w, nullptr, 0, &count);
+        std::vector<lfem_contact> c(count);
+        lfem_world_query_contacts(w, c.data(), count, &count);
+        for (const lfem_contact& k : c) {
+            if (k.body_a.index == 0 || k.body_b.index == 0)  // the floor is body 0
+                floor_force += std::fabs(k.force[2]);
+        }
+    }
+    std::printf("stack of 3: floor carries %.4f of the total weight, largest move in 0.1 s %.2e m, "
+                "penetration <= %.2e m\n",
+                floor_force / weights, worst_move, worst_penetration);
+    EXPECT_NEAR(floor_force, weights, 0.005 * weights);
+    EXPECT_LT(worst_move, 1e-5);
+    // The solve stops at 1e-9 of the 3.3 cm edges when nothing moves; 1e-8 m allows for the
+    // redundant two-pass constraints, which converge more slowly.
+    EXPECT_LT(worst_penetration, 1e-8);
+    // The order of the stack is kept: each cube's centre is above the one below by about a
+    // cube height (squashed), never inside it.
+    double z[3];
+    for (int i = 0; i < 3; ++i) {
+        const std::vector<double> x = positions(w, bodies[i]);
+        z[i] = 0;
+        for (size_t k = 2; k < x.size(); k += 3) z[i] += x[k] / (x.size() / 3);
+    }
+    EXPECT_GT(z[0], 0.03);
+    EXPECT_GT(z[1] - z[0], 0.07);
+    EXPECT_GT(z[2] - z[1], 0.07);
+}
