@@ -15,7 +15,8 @@ struct ContactRecord {
     double normal[3] = {0, 0, 0};        // unit, out of body_b
     double lambda_n = 0;                 // N, normal multiplier (>= 0: tension release)
     double lambda_t[3] = {0, 0, 0};      // N, friction multiplier (tangential)
-    double offset = 0;                   // m, initial overlap kept as an offset (>= 0)
+    double offset = 0;                   // m, overlap being recovered: target gap is -offset
+    double gap_after = 0;                // m, gap left by the solve (negative: penetration)
     bool sliding = false;
 
     bool active() const { return lambda_n > 0.0; }  // carries force

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "fem/tet_element.h"
 
@@ -11,12 +12,16 @@ namespace {
 // Tolerances, all relative to the boundary edge length l of the triangle's body:
 // - capture band: a node up to 0.05 l in front of a face at the end of the step is kept as a
 //   (possibly inactive) constraint, so resting contacts do not flicker in and out;
-// - depth allowance: a node that starts the step up to 0.25 l behind a face is still that
-//   face's (an overlap kept as an offset); deeper, it belongs to another face;
+// - depth allowance: a node that starts the step behind a face is that face's only as deep as
+//   the previous step left that (node, body) pair: a kept overlap or the solver's residual,
+//   times 1.25, plus 1e-6 l. Any deeper and the node is not inside the body at all:
+//   above a thin plate, it lies 'behind' the plate's far face by the plate's thickness plus
+//   its height, and pulling it through would be a disaster. Paths that cross a face in this
+//   step are found by the crossing test, not by depth;
 // - edge tolerance: barycentric weights down to -0.01 count as inside, so nodes on a shared
 //   edge do not drop out of both neighbouring faces (DESIGN.md section 6).
 constexpr double kCaptureBand = 0.05;
-constexpr double kDepthAllowance = 0.25;
+constexpr double kResidualDepth = 1e-6;
 constexpr double kEdgeTolerance = 0.01;
 // An overlap found at the start of a step is removed over several steps, 20 % per step,
 // rather than in one violent jump.
@@ -47,7 +52,7 @@ struct Candidate {
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
 void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal,
-                        const ContactBody& b, uint32_t t, Candidate& best) {
+                        const ContactBody& b, uint32_t t, double depth_allowance, Candidate& best) {
     const uint32_t* tri = &b.triangles[3 * t];
     if (a.slot == b.slot) return;  // self-contact is not handled here
     const Vec3 pa = at(b.x, tri[0]), pb = at(b.x, tri[1]), pc = at(b.x, tri[2]);
@@ -65,7 +70,7 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     const double gap = n.dot(x_end - pa);
     const double start_gap = (n_start / area2_start).dot(x_start - qa);
     const double l = b.edge_length;
-    if (gap > kCaptureBand * l || start_gap < -kDepthAllowance * l) return;
+    if (gap > kCaptureBand * l || start_gap < -depth_allowance) return;
     double w[3];
     if (start_gap >= 0.0 && gap < 0.0) {
         // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
@@ -92,17 +97,32 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
 
 }  // namespace
 
-void detect_node_triangle(const std::vector<ContactBody>& bodies, DetectionScratch& s,
+void detect_node_triangle(const std::vector<ContactBody>& bodies,
+                          const std::vector<ContactRecord>& previous, DetectionScratch& s,
                           std::vector<ContactRecord>& out) {
     out.clear();
-    // Boxes of every boundary triangle over the whole step, grown by the depth allowance.
+    double max_offset = 0.0;
+    for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
+    // How deep the last step left a (node, body) pair: a kept overlap or the solver's residual.
+    const auto kept_offset = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
+        const auto key = std::make_tuple(body_a, node, body_b);
+        const auto it = std::lower_bound(previous.begin(), previous.end(), key,
+                                         [](const ContactRecord& r, const decltype(key)& k) {
+                                             return std::make_tuple(r.body_a, r.node, r.body_b) < k;
+                                         });
+        return it != previous.end() && it->body_a == body_a && it->node == node && it->body_b == body_b
+                   ? std::max(0.0, -it->gap_after)
+                   : 0.0;
+    };
+    // Boxes of every boundary triangle over the whole step, grown by the capture band and the
+    // deepest overlap being recovered.
     s.boxes.clear();
     s.box_body.clear();
     s.box_triangle.clear();
     double cell = 0.0;
     for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
         const ContactBody& b = bodies[bi];
-        const double grow = kDepthAllowance * b.edge_length;
+        const double grow = kCaptureBand * b.edge_length + max_offset;
         cell = std::max(cell, b.edge_length);
         for (uint32_t t = 0; t < b.triangle_count; ++t) {
             Aabb box;
@@ -150,7 +170,10 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies, DetectionScrat
             for (uint32_t id : s.candidates) {
                 const ContactBody& b = bodies[s.box_body[id]];
                 if (s.box_body[id] == ai || !bodies_may_touch(a, b)) continue;
-                test_node_triangle(a, p, node_normal, b, s.box_triangle[id], best[s.box_body[id]]);
+                const double allowance =
+                    1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * b.edge_length;
+                test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance,
+                                   best[s.box_body[id]]);
             }
             for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
                 const Candidate& c = best[bi];

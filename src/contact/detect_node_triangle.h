@@ -21,8 +21,10 @@ struct DetectionScratch {
 
 // Fills `out` with one constraint per (node, other body): the boundary triangle the node
 // crossed or lies against, with its normal at x*, the barycentric weights of the contact point
-// and the target gap (a kept initial overlap). Order: body, then node, then other body.
-void detect_node_triangle(const std::vector<ContactBody>& bodies, DetectionScratch& scratch,
+// and the target gap (a kept overlap). `previous` is the last step's list (same order: body,
+// node, other body), which says which overlaps are being recovered.
+void detect_node_triangle(const std::vector<ContactBody>& bodies,
+                          const std::vector<ContactRecord>& previous, DetectionScratch& scratch,
                           std::vector<ContactRecord>& out);
 
 }  // namespace lfem

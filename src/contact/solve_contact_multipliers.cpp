@@ -129,8 +129,8 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         if (largest <= tolerance) break;
     }
     for (std::size_t j = 0; j < records.size(); ++j) {
-        const double g = gap_of(pairs[j], Vec3(records[j].normal)) + records[j].offset;
-        result.max_penetration = std::max(result.max_penetration, -g);
+        records[j].gap_after = gap_of(pairs[j], Vec3(records[j].normal));
+        result.max_penetration = std::max(result.max_penetration, -(records[j].gap_after + records[j].offset));
     }
     return result;
 }

@@ -209,7 +209,7 @@ void World::solve_contacts(double h) {
     counters_.solver_iterations = 0;
     counters_.solver_residual = 0.0;
     counters_.max_penetration = 0.0;
-    if (movable > 0 && contact_bodies_.size() > 1) detect_node_triangle(contact_bodies_, detection_, detected_);
+    if (movable > 0 && contact_bodies_.size() > 1) detect_node_triangle(contact_bodies_, contacts_, detection_, detected_);
     // Warm start: both lists are ordered by (body_a, node, body_b).
     std::size_t k = 0;
     double motion = 0.0, length = HUGE_VAL;
@@ -263,6 +263,8 @@ double World::step_velocity(uint32_t slot, uint32_t i, int k, double h) const {
 }
 
 void World::substep(double h, double& kinetic, double& strain, double& work) {
+    // kinetic, strain: of the new state; work: what gravity, forces, supports and contacts
+    // did over the step (added to `work`).
     SubstepTally tally;
     scratch_.resize(slots_.size());
     for (uint32_t i = 0; i < slots_.size(); ++i) {
@@ -341,15 +343,20 @@ void World::step(double dt) {
         scale += 1e-12 * b.ref.total_mass * cd * cd;
     }
 
-    double work = 0.0;
+    double work = 0.0, work_flow = 0.0;
     for (uint32_t k = 0; k < substeps; ++k) {
-        double kinetic = 0.0, strain = 0.0;
-        substep(h, kinetic, strain, work);
+        double kinetic = 0.0, strain = 0.0, step_work = 0.0;
+        substep(h, kinetic, strain, step_work);
+        work += step_work;
+        work_flow += std::fabs(step_work);
         // A stable explicit step cannot create energy: kinetic + strain - work stays near the
-        // starting energy (minus damping). An unstable one multiplies it every step (by about
-        // 47 per step at 1.5x the limit), so doubling is a clear and early sign.
+        // starting energy (minus damping). Measured with mid-step velocities it still wobbles,
+        // by up to a few times the energy that entered the fastest modes (a sudden load near
+        // the stable limit), so the test allows ten times the energy present or moved. An
+        // unstable step multiplies the energy every step (by about 47 at 1.5x the limit, 6 at
+        // 1.1x), so it passes that bound within a few steps of becoming visible.
         const double balance = kinetic + strain - work;
-        if (!std::isfinite(balance) || balance > 2.0 * start_energy + scale) {
+        if (!std::isfinite(balance) || balance > 10.0 * (start_energy + work_flow) + scale) {
             for (std::size_t i = 0; i < slots_.size(); ++i) slots_[i].body.state = std::move(saved[i]);
             counters_ = saved_counters;
             contacts_ = saved_contacts;
