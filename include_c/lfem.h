@@ -306,6 +306,45 @@ LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_bo
                                                       const double angular[3]);
 
 /* ---------------------------------------------------------------------------------------- */
+/* Rigid shapes of static and kinematic bodies                                                */
+/* ---------------------------------------------------------------------------------------- */
+
+typedef enum lfem_shape_type {
+    LFEM_SHAPE_PLANE = 0,       /* the half-space below the plane through `center` with normal
+                                   local +z (solid side: local -z) */
+    LFEM_SHAPE_BOX = 1,         /* half_extents along the local axes */
+    LFEM_SHAPE_SPHERE = 2,      /* radius */
+    LFEM_SHAPE_CAPSULE = 3,     /* segment from -half_length to +half_length along local z,
+                                   swept by a sphere of radius */
+    LFEM_SHAPE_CONVEX_HULL = 4, /* convex hull of `points` (local coordinates), through libccd */
+    LFEM_SHAPE_TYPE_FORCE32 = 0x7fffffff
+} lfem_shape_type;
+
+typedef struct lfem_shape_def {
+    lfem_shape_type type;     /* default LFEM_SHAPE_PLANE */
+    uint32_t point_count;     /* convex hull: number of points (>= 4, not all coplanar) */
+    double center[3];         /* m, world position of the shape's local origin, default 0 */
+    double rotation[4];       /* unit quaternion (w, x, y, z) of the local frame, default
+                                 identity (a plane then faces +z) */
+    double half_extents[3];   /* m, box, default 0.5 */
+    double radius;            /* m, sphere and capsule, default 0.5 */
+    double half_length;       /* m, capsule, default 0.5 */
+    const double* points;     /* convex hull: 3 * point_count local coordinates (m), copied;
+                                 nullable otherwise */
+    uint32_t internal_value;  /* set by lfem_shape_def_default; do not change */
+    uint32_t padding;
+} lfem_shape_def;
+
+LFEM_API lfem_shape_def lfem_shape_def_default(void);
+
+/* Give a static or kinematic body a rigid shape (a body may have several, with or without a
+ * tet mesh). Deformable bodies' boundary nodes collide with it. A kinematic body's shapes move
+ * with its velocity (about the body's centre: its mesh's centre of mass, or the first shape's
+ * centre for a body without mesh). */
+LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body,
+                                         const lfem_shape_def* def);
+
+/* ---------------------------------------------------------------------------------------- */
 /* Contacts                                                                                   */
 /* ---------------------------------------------------------------------------------------- */
 
@@ -323,7 +362,10 @@ typedef struct lfem_contact {
                                 triangle's nodes receive its opposite, split by barycentric
                                 weights */
     uint8_t sliding;         /* 1 when friction is on the Coulomb cone (slipping), else 0 */
-    uint8_t padding[7];
+    uint8_t padding[3];
+    uint32_t shape;          /* index of body_b's shape (lfem_body_add_shape) when the node
+                                touches a shape; UINT32_MAX when it touches a triangle. For a
+                                shape, triangle[] is UINT32_MAX and barycentric is 0 */
 } lfem_contact;
 
 /* Copy the active contacts of the last step into out[capacity]. *count is always the total;

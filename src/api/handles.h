@@ -16,6 +16,7 @@ namespace lfem::api {
 // uninitialised stack memory) is refused instead of being trusted.
 constexpr uint32_t world_def_cookie = 0x4C46574Du;  // "LFWM"
 constexpr uint32_t body_def_cookie = 0x4C46424Du;   // "LFBM"
+constexpr uint32_t shape_def_cookie = 0x4C465348u;  // "LFSH"
 
 inline World& world_of(lfem_world* w) {
     require_pointer(w, "world");

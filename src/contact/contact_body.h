@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include "contact/rigid_shape.h"
+
 namespace lfem {
 
 struct ContactBody {
@@ -18,6 +20,10 @@ struct ContactBody {
     double friction = 0;               // Coulomb coefficient of the body's surface
     uint32_t category = 1, mask = ~0u; // collision filter
     double edge_length = 0;            // mean boundary edge length (m): sets the tolerances
+    const RigidShape* shapes = nullptr; // rigid shapes (static and kinematic bodies)
+    uint32_t shape_count = 0;
+    const double* shape_pose = nullptr;       // 7 per shape, end of the step
+    const double* shape_pose_start = nullptr; // 7 per shape, start of the step
 };
 
 // Two bodies are checked against each other only if each one's category is in the other's

@@ -10,7 +10,10 @@ namespace lfem {
 struct ContactRecord {
     uint32_t body_a = 0, node = 0;       // slot index of the node's body, node index
     uint32_t body_b = 0;                 // slot index of the triangle's body
-    uint32_t triangle[3] = {0, 0, 0};    // node indices a, b, c in body_b
+    uint32_t triangle[3] = {0, 0, 0};    // node indices a, b, c in body_b (unused for a shape)
+    uint32_t shape = UINT32_MAX;         // index of body_b's rigid shape, or UINT32_MAX
+    double point_start[3] = {0, 0, 0};   // shape contacts: the touched material point of the
+    double point_end[3] = {0, 0, 0};     //   shape at the start and at the end of the step
     double t1 = 0, t2 = 0;               // barycentric: point = (1-t1-t2) a + t2 b + t1 c
     double normal[3] = {0, 0, 0};        // unit, out of body_b
     double lambda_n = 0;                 // N, normal multiplier (>= 0: tension release)

@@ -43,6 +43,8 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, dou
 struct Candidate {
     bool found = false;
     uint32_t triangle = 0;
+    uint32_t shape = UINT32_MAX;  // a rigid shape instead of a triangle
+    Vec3 point_start = Vec3::Zero(), point_end = Vec3::Zero();
     double gap = 0;        // g* at the end of the step (m)
     double start_gap = 0;  // g^n
     double w[3] = {0, 0, 0};
@@ -86,6 +88,7 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     if (best.found && gap <= best.gap) return;  // keep the face penetrated least
     best.found = true;
     best.triangle = t;
+    best.shape = UINT32_MAX;
     best.gap = gap;
     best.start_gap = start_gap;
     best.normal = n;
@@ -93,6 +96,39 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     double sum = 0.0;
     for (int k = 0; k < 3; ++k) sum += (best.w[k] = std::max(0.0, w[k]));
     for (int k = 0; k < 3; ++k) best.w[k] /= sum;
+}
+
+// Test node p of `a` against rigid shape j of `b`, same rules as for a triangle: within the
+// capture band at the end of the step, no deeper at its start than the pair was left, facing
+// the node's surface.
+void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+                     uint32_t j, double depth_allowance, Candidate& best) {
+    const RigidShape& shape = b.shapes[j];
+    const ShapePose pose_end = ShapePose::load(b.shape_pose + 7 * std::size_t(j));
+    const ShapePose pose_start = ShapePose::load(b.shape_pose_start + 7 * std::size_t(j));
+    const Vec3 x_end = at(a.x, p), x_start = at(a.x_start, p);
+    const double band = kCaptureBand * a.edge_length;
+    const double reach = shape_bounding_radius(shape) + band + (x_end - x_start).norm();
+    if ((x_end - pose_end.center).norm() > reach) return;  // far from a bounded shape
+    double gap, start_gap;
+    Vec3 n, n_start;
+    if (!shape_signed_distance(shape, pose_end, x_end, band, gap, n)) return;
+    // At the start the node may be anywhere along its path: ask with the whole path as reach.
+    const double path = (x_end - x_start).norm() + band;
+    if (shape_signed_distance(shape, pose_start, x_start, path, start_gap, n_start) &&
+        start_gap < -depth_allowance)
+        return;
+    if (n.dot(node_normal) >= 0.0) return;
+    if (best.found && gap <= best.gap) return;
+    best.found = true;
+    best.shape = j;
+    best.gap = gap;
+    best.start_gap = std::min(0.0, start_gap);
+    best.normal = n;
+    best.point_end = x_end - gap * n;  // the nearest surface point
+    // The same material point of the shape at the start of the step.
+    best.point_start = pose_start.center +
+                       pose_start.rotation * (pose_end.rotation.conjugate() * (best.point_end - pose_end.center));
 }
 
 }  // namespace
@@ -176,6 +212,13 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                                    best[s.box_body[id]]);
             }
             for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+                const ContactBody& b = bodies[bi];
+                if (bi == ai || b.shape_count == 0 || !bodies_may_touch(a, b)) continue;
+                const double allowance = 1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * a.edge_length;
+                for (uint32_t j = 0; j < b.shape_count; ++j)
+                    test_node_shape(a, p, node_normal, b, j, allowance, best[bi]);
+            }
+            for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
                 const Candidate& c = best[bi];
                 if (!c.found) continue;
                 const ContactBody& b = bodies[bi];
@@ -183,13 +226,16 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                 r.body_a = a.slot;
                 r.node = p;
                 r.body_b = b.slot;
+                r.shape = c.shape;
                 for (int k = 0; k < 3; ++k) {
-                    r.triangle[k] = b.triangles[3 * c.triangle + k];
+                    r.triangle[k] = c.shape == UINT32_MAX ? b.triangles[3 * c.triangle + k] : UINT32_MAX;
                     r.normal[k] = c.normal[k];
+                    r.point_start[k] = c.point_start[k];
+                    r.point_end[k] = c.point_end[k];
                 }
-                // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c)
-                r.t2 = c.w[1];
-                r.t1 = c.w[2];
+                // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c); a shape point: none
+                r.t2 = c.shape == UINT32_MAX ? c.w[1] : 0.0;
+                r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
                 // A node that starts the step inside is let out gradually (target gap < 0).
                 r.offset = c.start_gap < 0.0 ? -c.start_gap * (1.0 - kOverlapRecovery) : 0.0;
                 out.push_back(r);

@@ -58,7 +58,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     ContactSolveResult result;
     std::vector<Pair> pairs(records.size());
     for (std::size_t j = 0; j < records.size(); ++j) {
-        const ContactRecord& r = records[j];
+        ContactRecord& r = records[j];  // shape contacts lend their surface points
         const ContactBody& a = bodies[body_of_slot[r.body_a]];
         const ContactBody& b = bodies[body_of_slot[r.body_b]];
         Pair& q = pairs[j];
@@ -69,11 +69,21 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         q.N[1] = r.t2;
         q.N[2] = r.t1;
         q.H = q.wp;
-        for (int v = 0; v < 3; ++v) {
-            q.xk[v] = b.x + 3 * std::size_t(r.triangle[v]);
-            q.xk0[v] = b.x_start + 3 * std::size_t(r.triangle[v]);
-            q.wk[v] = b.inv_mass ? b.inv_mass[r.triangle[v]] : 0.0;
-            q.H += q.N[v] * q.N[v] * q.wk[v];
+        if (r.shape != UINT32_MAX) {
+            // A rigid shape: one immovable point, the touched surface point, moving with the
+            // shape from its start to its end position (friction slips relative to it).
+            for (int v = 0; v < 3; ++v) {
+                q.xk[v] = r.point_end;
+                q.xk0[v] = r.point_start;
+                q.wk[v] = 0.0;
+            }
+        } else {
+            for (int v = 0; v < 3; ++v) {
+                q.xk[v] = b.x + 3 * std::size_t(r.triangle[v]);
+                q.xk0[v] = b.x_start + 3 * std::size_t(r.triangle[v]);
+                q.wk[v] = b.inv_mass ? b.inv_mass[r.triangle[v]] : 0.0;
+                q.H += q.N[v] * q.N[v] * q.wk[v];
+            }
         }
         q.mu = pair_friction(a.friction, b.friction);
     }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "contact/rigid_shape.h"
 #include "fem/material.h"
 #include "lfem.h"
 
@@ -44,6 +45,7 @@ struct BodyState {
     double rotation[4] = {1, 0, 0, 0}; // paper model: global rotation (quaternion w,x,y,z)
     double angular_momentum[3] = {0, 0, 0}; // paper model: L of eq. (2) about the COM
     double center[3] = {0, 0, 0};  // kinematic bodies: current centre
+    std::vector<double> shape_pose;  // 7 per rigid shape: its current placement
 };
 
 struct Body {
@@ -55,9 +57,11 @@ struct Body {
     std::vector<NodeMode> node_mode;          // per node
     std::vector<double> prescribed_velocity;  // 3 per node, empty until first prescribed
     std::vector<double> node_force;           // 3 per node, empty until a force is set
+    std::vector<RigidShape> shapes;           // rigid shapes (static and kinematic bodies)
 
     bool is_deformable() const { return def.type == LFEM_BODY_DEFORMABLE; }
     bool has_mesh() const { return !ref.mass.empty(); }
+    bool has_geometry() const { return has_mesh() || !shapes.empty(); }
 };
 
 }  // namespace lfem

@@ -170,6 +170,13 @@ void advance_kinematic(Body& body, double h) {
         const Vec3 x = c_new + Rot * (Vec3(&s.x[3 * i]) - c_old);
         for (int k = 0; k < 3; ++k) s.x[3 * i + k] = x[k];
     }
+    const Eigen::Quaterniond turn(Rot);
+    for (std::size_t j = 0; j < s.shape_pose.size(); j += 7) {
+        ShapePose pose = ShapePose::load(&s.shape_pose[j]);
+        pose.center = c_new + Rot * (pose.center - c_old);
+        pose.rotation = (turn * pose.rotation).normalized();
+        pose.store(&s.shape_pose[j]);
+    }
     for (int k = 0; k < 3; ++k) s.center[k] = c_new[k];
 }
 
@@ -184,7 +191,7 @@ void World::solve_contacts(double h) {
     uint32_t movable = 0;
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         Body& b = slots_[i].body;
-        if (b.generation == 0 || !b.has_mesh()) continue;
+        if (b.generation == 0 || !b.has_geometry()) continue;
         ContactBody cb;
         cb.slot = i;
         cb.triangles = b.ref.boundary.data();
@@ -201,6 +208,11 @@ void World::solve_contacts(double h) {
         cb.category = b.def.category_bits;
         cb.mask = b.def.mask_bits;
         cb.edge_length = b.ref.edge_length;
+        cb.shapes = b.shapes.data();
+        cb.shape_count = uint32_t(b.shapes.size());
+        cb.shape_pose = b.state.shape_pose.data();
+        cb.shape_pose_start = b.def.type == LFEM_BODY_KINEMATIC ? scratch_[i].shape_pose_start.data()
+                                                                 : b.state.shape_pose.data();
         contact_body_of_slot_[i] = uint32_t(contact_bodies_.size());
         contact_bodies_.push_back(cb);
         movable += b.is_deformable();
@@ -231,7 +243,10 @@ void World::solve_contacts(double h) {
         const double w[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
         for (int d = 0; d < 3; ++d) {
             double rel = step_velocity(r.body_a, r.node, d, h);
-            for (int v = 0; v < 3; ++v) rel -= w[v] * step_velocity(r.body_b, r.triangle[v], d, h);
+            if (r.shape != UINT32_MAX)
+                rel -= (r.point_end[d] - r.point_start[d]) / h;  // the shape's surface moves rigidly
+            else
+                for (int v = 0; v < 3; ++v) rel -= w[v] * step_velocity(r.body_b, r.triangle[v], d, h);
             motion = std::max(motion, std::fabs(rel) * h);
         }
         length = std::min({length, a.edge_length, b.edge_length});
@@ -269,11 +284,12 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
     scratch_.resize(slots_.size());
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         Body& b = slots_[i].body;
-        if (b.generation == 0 || !b.has_mesh()) continue;
+        if (b.generation == 0 || !b.has_geometry()) continue;
         if (b.is_deformable()) {
             predict_positions(b, def_.gravity, h, scratch_[i]);
         } else if (b.def.type == LFEM_BODY_KINEMATIC) {
             scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
+            scratch_[i].shape_pose_start.assign(b.state.shape_pose.begin(), b.state.shape_pose.end());
             advance_kinematic(b, h);
         }
         // Static bodies: nothing to do.

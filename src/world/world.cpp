@@ -215,6 +215,17 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     if (body.is_deformable()) counters_.initial_energy += added_kinetic;
 }
 
+void World::add_shape(Body& body, const RigidShape& shape, const double pose[7]) {
+    RigidShape copy = shape;
+    body.shapes.reserve(body.shapes.size() + 1);
+    body.state.shape_pose.reserve(body.state.shape_pose.size() + 7);
+    // Nothing below allocates: the body changes all at once.
+    if (!body.has_geometry())
+        for (int k = 0; k < 3; ++k) body.state.center[k] = pose[k];  // kinematic pivot
+    body.shapes.push_back(std::move(copy));
+    body.state.shape_pose.insert(body.state.shape_pose.end(), pose, pose + 7);
+}
+
 void World::set_velocities(Body& body, const double* v) {
     const uint32_t n = body.ref.node_count();
     double before = 0.0, after = 0.0;
@@ -351,12 +362,16 @@ lfem_contact World::contact_as_c(const ContactRecord& c) const {
     out.body_a = lfem_body{c.body_a, a.generation};
     out.body_b = lfem_body{c.body_b, b.generation};
     out.node = c.node;
+    out.shape = c.shape;
     const double w[3] = {1.0 - c.t1 - c.t2, c.t2, c.t1};
     for (int k = 0; k < 3; ++k) {
         out.triangle[k] = c.triangle[k];
         out.normal[k] = c.normal[k];
         out.force[k] = c.lambda_n * c.normal[k] + c.lambda_t[k];
-        for (int v = 0; v < 3; ++v) out.position[k] += w[v] * b.state.x[3 * c.triangle[v] + k];
+        if (c.shape != UINT32_MAX)
+            out.position[k] = c.point_end[k];
+        else
+            for (int v = 0; v < 3; ++v) out.position[k] += w[v] * b.state.x[3 * c.triangle[v] + k];
     }
     out.barycentric[0] = c.t1;
     out.barycentric[1] = c.t2;

@@ -54,6 +54,8 @@ public:
     // Appends a checked mesh to a body (see lfem_body_add_mesh). All or nothing.
     void add_mesh(Body& body, const double* positions, uint32_t node_count, const uint32_t* tets,
                   uint32_t tet_count);
+    // Gives a static or kinematic body a rigid shape at the given placement (7 doubles).
+    void add_shape(Body& body, const RigidShape& shape, const double pose[7]);
     // Overwrites velocities; the change of kinetic energy is booked as external work.
     void set_velocities(Body& body, const double* v);
 
@@ -82,7 +84,7 @@ private:
     // Per-slot arrays a sub-step needs beside the body state (not rolled back: rebuilt
     // every sub-step).
     struct StepScratch {
-        std::vector<double> x_start, v_old, inv_mass;
+        std::vector<double> x_start, v_old, inv_mass, shape_pose_start;
         double support_work = 0;
         double support_torque[3] = {0, 0, 0};
     };

@@ -1,0 +1,42 @@
+// Rigid shapes of static and kinematic bodies (plane, box, sphere, capsule, convex hull) and
+// the one query contact needs of them: the signed distance of a point and the outward normal.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fem/tet_element.h"
+#include "lfem.h"
+
+namespace lfem {
+
+struct RigidShape {
+    lfem_shape_type type = LFEM_SHAPE_PLANE;
+    double half_extents[3] = {0, 0, 0};
+    double radius = 0;
+    double half_length = 0;
+    std::vector<double> points;  // convex hull, local coordinates, 3 per point
+};
+
+// A shape's placement: world = center + R(rotation) local. 7 doubles: x, y, z, qw, qx, qy, qz.
+struct ShapePose {
+    Vec3 center;
+    Eigen::Quaterniond rotation;
+    static ShapePose load(const double* p) { return {Vec3(p[0], p[1], p[2]), Eigen::Quaterniond(p[3], p[4], p[5], p[6])}; }
+    void store(double* p) const {
+        for (int k = 0; k < 3; ++k) p[k] = center[k];
+        p[3] = rotation.w(), p[4] = rotation.x(), p[5] = rotation.y(), p[6] = rotation.z();
+    }
+};
+
+// Signed distance (m, negative inside) from x to the posed shape and the outward unit normal of
+// the nearest surface point. Returns false (and leaves the outputs undefined) when x is
+// farther than max_distance outside: callers ask only about nearby points. Planes, spheres,
+// boxes and capsules are answered in closed form; convex hulls by libccd's MPR.
+bool shape_signed_distance(const RigidShape& shape, const ShapePose& pose, const Vec3& x,
+                           double max_distance, double& distance, Vec3& normal);
+
+// Radius of a sphere about the shape's local origin that contains it (infinite for a plane).
+double shape_bounding_radius(const RigidShape& shape);
+
+}  // namespace lfem
