@@ -22,10 +22,15 @@ namespace {
 //   edge do not drop out of both neighbouring faces (DESIGN.md section 6).
 constexpr double kCaptureBand = 0.05;
 constexpr double kResidualDepth = 1e-6;
+// Bodies created overlapping: a node up to 0.5 l behind a face it was never in contact with is
+// taken as inside (and let out gradually) only if nothing of the other body lies between it
+// and the face, i.e. the face really is the nearest way out.
+constexpr double kInitialDepth = 0.5;
 constexpr double kEdgeTolerance = 0.01;
 // An overlap found at the start of a step is removed over several steps, 20 % per step,
 // rather than in one violent jump.
 constexpr double kOverlapRecovery = 0.2;
+constexpr double kMaxRecovery = 1e-3;
 
 Vec3 at(const double* x, uint32_t i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
 
@@ -54,7 +59,8 @@ struct Candidate {
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
 void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal,
-                        const ContactBody& b, uint32_t t, double depth_allowance, Candidate& best) {
+                        const ContactBody& b, uint32_t t, double depth_allowance, Candidate& best,
+                        Candidate* deep) {
     const uint32_t* tri = &b.triangles[3 * t];
     if (a.slot == b.slot) return;  // self-contact is not handled here
     const Vec3 pa = at(b.x, tri[0]), pb = at(b.x, tri[1]), pc = at(b.x, tri[2]);
@@ -72,7 +78,13 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     const double gap = n.dot(x_end - pa);
     const double start_gap = (n_start / area2_start).dot(x_start - qa);
     const double l = b.edge_length;
-    if (gap > kCaptureBand * l || start_gap < -depth_allowance) return;
+    if (gap > kCaptureBand * l) return;
+    Candidate* slot = &best;
+    if (start_gap < -depth_allowance) {
+        // Deeper than the pair was left: only a possible initial overlap (checked later).
+        if (start_gap < -kInitialDepth * l || !deep) return;
+        slot = deep;
+    }
     double w[3];
     if (start_gap >= 0.0 && gap < 0.0) {
         // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
@@ -85,17 +97,18 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     }
     for (double wi : w)
         if (!(wi >= -kEdgeTolerance)) return;
-    if (best.found && gap <= best.gap) return;  // keep the face penetrated least
-    best.found = true;
-    best.triangle = t;
-    best.shape = UINT32_MAX;
-    best.gap = gap;
-    best.start_gap = start_gap;
-    best.normal = n;
+    Candidate& c = *slot;
+    if (c.found && gap <= c.gap) return;  // keep the face penetrated least
+    c.found = true;
+    c.triangle = t;
+    c.shape = UINT32_MAX;
+    c.gap = gap;
+    c.start_gap = start_gap;
+    c.normal = n;
     // Clamp the weights into the triangle: the force goes to its nodes, never outside.
     double sum = 0.0;
-    for (int k = 0; k < 3; ++k) sum += (best.w[k] = std::max(0.0, w[k]));
-    for (int k = 0; k < 3; ++k) best.w[k] /= sum;
+    for (int k = 0; k < 3; ++k) sum += (c.w[k] = std::max(0.0, w[k]));
+    for (int k = 0; k < 3; ++k) c.w[k] /= sum;
 }
 
 // Test node p of `a` against rigid shape j of `b`, same rules as for a triangle: within the
@@ -131,15 +144,56 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
                        pose_start.rotation * (pose_end.rotation.conjugate() * (best.point_end - pose_end.center));
 }
 
+// Does the open segment from `from` to `to` cross a boundary triangle of body b other than
+// `skip`? (Möller-Trumbore against the triangles whose boxes the segment's box overlaps.)
+bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t bi, uint32_t skip,
+                          const ContactBody& b, DetectionScratch& s) {
+    Aabb box;
+    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(from[k], to[k]), box.hi[k] = std::max(from[k], to[k]);
+    std::vector<uint32_t> ids;
+    s.grid.query(box, ids);
+    const Vec3 d = to - from;
+    for (uint32_t id : ids) {
+        if (s.box_body[id] != bi || s.box_triangle[id] == skip) continue;
+        const uint32_t* tri = &b.triangles[3 * s.box_triangle[id]];
+        const Vec3 v0 = at(b.x_start, tri[0]), e1 = at(b.x_start, tri[1]) - v0, e2 = at(b.x_start, tri[2]) - v0;
+        const Vec3 pv = d.cross(e2);
+        const double det = e1.dot(pv);
+        if (std::fabs(det) < 1e-300) continue;
+        const Vec3 tv = from - v0;
+        const double u = tv.dot(pv) / det;
+        if (u < 0.0 || u > 1.0) continue;
+        const Vec3 qv = tv.cross(e1);
+        const double v = d.dot(qv) / det;
+        if (v < 0.0 || u + v > 1.0) continue;
+        const double t = e2.dot(qv) / det;
+        if (t > 1e-9 && t < 1.0 - 1e-9) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 void detect_node_triangle(const std::vector<ContactBody>& bodies,
-                          const std::vector<ContactRecord>& previous, DetectionScratch& s,
-                          std::vector<ContactRecord>& out) {
+                          const std::vector<ContactRecord>& previous, bool scan_overlaps,
+                          DetectionScratch& s, std::vector<ContactRecord>& out) {
     out.clear();
     double max_offset = 0.0;
     for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
     // How deep the last step left a (node, body) pair: a kept overlap or the solver's residual.
+    const auto find_previous = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
+        const auto key = std::make_tuple(body_a, node, body_b);
+        const auto it = std::lower_bound(previous.begin(), previous.end(), key,
+                                         [](const ContactRecord& r, const decltype(key)& k) {
+                                             return std::make_tuple(r.body_a, r.node, r.body_b) < k;
+                                         });
+        return it != previous.end() && it->body_a == body_a && it->node == node && it->body_b == body_b
+                   ? &*it
+                   : nullptr;
+    };
+    const auto kept_offset_known = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
+        return find_previous(body_a, node, body_b) != nullptr;
+    };
     const auto kept_offset = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
         const auto key = std::make_tuple(body_a, node, body_b);
         const auto it = std::lower_bound(previous.begin(), previous.end(), key,
@@ -158,7 +212,8 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     double cell = 0.0;
     for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
         const ContactBody& b = bodies[bi];
-        const double grow = kCaptureBand * b.edge_length + max_offset;
+        const double grow =
+            std::max(kCaptureBand * b.edge_length + max_offset, scan_overlaps ? kInitialDepth * b.edge_length : 0.0);
         cell = std::max(cell, b.edge_length);
         for (uint32_t t = 0; t < b.triangle_count; ++t) {
             Aabb box;
@@ -180,7 +235,7 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     if (s.boxes.empty()) return;
     s.grid.build(s.boxes, 2.0 * cell);
 
-    std::vector<Candidate> best(bodies.size());
+    std::vector<Candidate> best(bodies.size()), deep(bodies.size());
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
         const ContactBody& a = bodies[ai];
         // Outward normals of the body's boundary nodes at x*: area-weighted means of the
@@ -203,13 +258,25 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
             s.candidates.clear();
             s.grid.query(box, s.candidates);
             for (Candidate& c : best) c.found = false;
+            for (Candidate& c : deep) c.found = false;
             for (uint32_t id : s.candidates) {
                 const ContactBody& b = bodies[s.box_body[id]];
                 if (s.box_body[id] == ai || !bodies_may_touch(a, b)) continue;
                 const double allowance =
                     1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * b.edge_length;
+                const bool first_touch = scan_overlaps && !kept_offset_known(a.slot, p, b.slot);
                 test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance,
-                                   best[s.box_body[id]]);
+                                   best[s.box_body[id]], first_touch ? &deep[s.box_body[id]] : nullptr);
+            }
+            // An overlap met for the first time: accepted when nothing of the other body lies
+            // between the node and the face (then the node is inside, and this face is its
+            // nearest way out); otherwise the node is merely beyond a thin part.
+            for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+                Candidate& c = deep[bi];
+                if (!c.found || best[bi].found) continue;
+                const Vec3 x = at(a.x_start, p);
+                if (!segment_crosses_body(x, x - c.start_gap * c.normal, bi, c.triangle, bodies[bi], s))
+                    best[bi] = c;
             }
             for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
                 const ContactBody& b = bodies[bi];
@@ -236,8 +303,14 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                 // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c); a shape point: none
                 r.t2 = c.shape == UINT32_MAX ? c.w[1] : 0.0;
                 r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
-                // A node that starts the step inside is let out gradually (target gap < 0).
-                r.offset = c.start_gap < 0.0 ? -c.start_gap * (1.0 - kOverlapRecovery) : 0.0;
+                // A node that starts the step inside is let out gradually (target gap < 0): by
+                // 20 % of the overlap per step, but never faster than 1e-3 of an edge per step,
+                // so bodies created deeply overlapping separate slowly instead of jumping apart.
+                if (c.start_gap < 0.0) {
+                    const double overlap = -c.start_gap;
+                    const double l = c.shape == UINT32_MAX ? b.edge_length : a.edge_length;
+                    r.offset = overlap - std::min(kOverlapRecovery * overlap, kMaxRecovery * l);
+                }
                 out.push_back(r);
             }
         }

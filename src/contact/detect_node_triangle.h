@@ -22,9 +22,11 @@ struct DetectionScratch {
 // Fills `out` with one constraint per (node, other body): the boundary triangle the node
 // crossed or lies against, with its normal at x*, the barycentric weights of the contact point
 // and the target gap (a kept overlap). `previous` is the last step's list (same order: body,
-// node, other body), which says which overlaps are being recovered.
+// node, other body), which says which overlaps are being recovered. With scan_overlaps (the
+// first step after bodies were added) nodes found up to half an edge inside another body are
+// taken as overlaps to be removed gradually.
 void detect_node_triangle(const std::vector<ContactBody>& bodies,
-                          const std::vector<ContactRecord>& previous, DetectionScratch& scratch,
-                          std::vector<ContactRecord>& out);
+                          const std::vector<ContactRecord>& previous, bool scan_overlaps,
+                          DetectionScratch& scratch, std::vector<ContactRecord>& out);
 
 }  // namespace lfem

@@ -221,7 +221,10 @@ void World::solve_contacts(double h) {
     counters_.solver_iterations = 0;
     counters_.solver_residual = 0.0;
     counters_.max_penetration = 0.0;
-    if (movable > 0 && contact_bodies_.size() > 1) detect_node_triangle(contact_bodies_, contacts_, detection_, detected_);
+    if (movable > 0 && contact_bodies_.size() > 1) {
+        detect_node_triangle(contact_bodies_, contacts_, counters_.scan_overlaps, detection_, detected_);
+        counters_.scan_overlaps = false;
+    }
     // Warm start: both lists are ordered by (body_a, node, body_b).
     std::size_t k = 0;
     double motion = 0.0, length = HUGE_VAL;

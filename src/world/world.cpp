@@ -213,6 +213,7 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     body.prescribed_velocity = std::move(prescribed);
     body.node_force = std::move(forces);
     if (body.is_deformable()) counters_.initial_energy += added_kinetic;
+    counters_.scan_overlaps = true;
 }
 
 void World::add_shape(Body& body, const RigidShape& shape, const double pose[7]) {

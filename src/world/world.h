@@ -27,6 +27,7 @@ struct WorldCounters {
     uint32_t solver_iterations = 0;  // contact solve of the last sub-step
     double solver_residual = 0;      // m
     double max_penetration = 0;      // m
+    bool scan_overlaps = false;      // bodies were added: look for initial overlaps once
 };
 
 class World {
