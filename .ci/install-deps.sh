@@ -19,6 +19,15 @@ PACKAGES=(
   libccd-dev
   # test framework
   libgtest-dev
+  # language bindings (bindings/): Rust (cargo test --offline, no crate downloaded), C# (mcs,
+  # run under mono; these two pull the mono class libraries the bindings use), Python (the
+  # system python3 with numpy and pytest)
+  rustc
+  cargo
+  mono-mcs
+  mono-runtime
+  python3-numpy
+  python3-pytest
 )
 
 export DEBIAN_FRONTEND=noninteractive

@@ -16,6 +16,7 @@
 CHECK_SIZE(lfem_status, 4);
 CHECK_SIZE(lfem_body_type, 4);
 CHECK_SIZE(lfem_model, 4);
+CHECK_SIZE(lfem_shape_type, 4);
 
 CHECK_SIZE(lfem_body, 8);
 CHECK_OFFSET(lfem_body, index, 0);
@@ -80,12 +81,26 @@ CHECK_OFFSET(lfem_contact, normal, 72);
 CHECK_OFFSET(lfem_contact, force, 96);
 CHECK_OFFSET(lfem_contact, sliding, 120);
 CHECK_OFFSET(lfem_contact, padding, 121);
+CHECK_OFFSET(lfem_contact, shape, 124);
+
+CHECK_SIZE(lfem_shape_def, 120);
+CHECK_OFFSET(lfem_shape_def, type, 0);
+CHECK_OFFSET(lfem_shape_def, point_count, 4);
+CHECK_OFFSET(lfem_shape_def, center, 8);
+CHECK_OFFSET(lfem_shape_def, rotation, 32);
+CHECK_OFFSET(lfem_shape_def, half_extents, 64);
+CHECK_OFFSET(lfem_shape_def, radius, 88);
+CHECK_OFFSET(lfem_shape_def, half_length, 96);
+CHECK_OFFSET(lfem_shape_def, points, 104);
+CHECK_OFFSET(lfem_shape_def, internal_value, 112);
+CHECK_OFFSET(lfem_shape_def, padding, 116);
 
 int main(void) {
-    printf("lfem_status %zu\nlfem_body_type %zu\nlfem_model %zu\n", sizeof(lfem_status),
-           sizeof(lfem_body_type), sizeof(lfem_model));
+    printf("lfem_status %zu\nlfem_body_type %zu\nlfem_model %zu\nlfem_shape_type %zu\n",
+           sizeof(lfem_status), sizeof(lfem_body_type), sizeof(lfem_model), sizeof(lfem_shape_type));
     printf("lfem_body %zu\nlfem_world_def %zu\nlfem_world_stats %zu\n", sizeof(lfem_body),
            sizeof(lfem_world_def), sizeof(lfem_world_stats));
-    printf("lfem_body_def %zu\nlfem_contact %zu\n", sizeof(lfem_body_def), sizeof(lfem_contact));
+    printf("lfem_body_def %zu\nlfem_contact %zu\nlfem_shape_def %zu\n", sizeof(lfem_body_def),
+           sizeof(lfem_contact), sizeof(lfem_shape_def));
     return 0;
 }

@@ -158,10 +158,45 @@ namespace Lfem
         public Vec3 Force;            // N, on the node
         public byte Sliding;          // 1 when friction is on the Coulomb cone
 #pragma warning disable 0169 // C padding
-        private byte padding0, padding1, padding2, padding3, padding4, padding5, padding6;
+        private byte padding0, padding1, padding2;
 #pragma warning restore 0169
+        public uint Shape;            // index of BodyB's rigid shape, or NoShape for a triangle
+
+        public const uint NoShape = 0xFFFFFFFFu;
 
         public bool IsSliding { get { return Sliding != 0; } }
+        public bool TouchesShape { get { return Shape != NoShape; } }
+    }
+
+    public enum ShapeType : int
+    {
+        Plane = 0,      // the half-space below the plane through Center with normal local +z
+        Box = 1,        // HalfExtents along the local axes
+        Sphere = 2,     // Radius
+        Capsule = 3,    // segment -HalfLength..+HalfLength along local z, swept by Radius
+        ConvexHull = 4, // convex hull of points (local coordinates), see World.AddShape
+    }
+
+    /// <summary>A rigid shape of a static or kinematic body (lfem_shape_def). Start from
+    /// ShapeDef.Default; convex hull points are passed to World.AddShape.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct ShapeDef
+    {
+        public ShapeType Type;       // default Plane
+        public uint PointCount;      // set by World.AddShape from its points
+        public Vec3 Center;          // m, world position of the local origin, default 0
+        public double RotationW, RotationX, RotationY, RotationZ; // unit quaternion, default identity
+        public Vec3 HalfExtents;     // m, box, default 0.5
+        public double Radius;        // m, sphere and capsule, default 0.5
+        public double HalfLength;    // m, capsule, default 0.5
+        public IntPtr Points;        // set by World.AddShape (3 * PointCount doubles)
+#pragma warning disable 0169, 0649 // set by lfem_shape_def_default, never by C#
+        private uint internalValue;
+        private uint padding;
+#pragma warning restore 0169, 0649
+
+        /// <summary>The defaults (lfem_shape_def_default).</summary>
+        public static ShapeDef Default { get { return Native.lfem_shape_def_default(); } }
     }
 
     /// <summary>A failed lfem call: its status and lfem_last_error's message.</summary>
@@ -303,6 +338,44 @@ namespace Lfem
             if (tets.Length % 4 != 0)
                 throw new LfemException(Status.InvalidArgument, "Lfem (C#): tets.Length " + tets.Length + " is not a multiple of 4");
             LfemException.Check(Native.lfem_body_add_mesh(handle, body, positions, (uint)positions.Length, tets, (uint)(tets.Length / 4)));
+        }
+
+        /// <summary>Give a static or kinematic body a rigid shape; points: the convex hull's
+        /// points (local coordinates, m), null for the other shapes.</summary>
+        public void AddShape(Body body, ShapeDef def, Vec3[] points = null)
+        {
+            GCHandle pin = default(GCHandle);
+            try
+            {
+                if (points != null && points.Length > 0)
+                {
+                    pin = GCHandle.Alloc(points, GCHandleType.Pinned);
+                    def.Points = pin.AddrOfPinnedObject();
+                    def.PointCount = (uint)points.Length;
+                }
+                else
+                {
+                    def.Points = IntPtr.Zero;
+                    def.PointCount = 0;
+                }
+                LfemException.Check(Native.lfem_body_add_shape(handle, body, ref def));
+            }
+            finally
+            {
+                if (pin.IsAllocated) pin.Free();
+            }
+        }
+
+        /// <summary>Total mass (kg) of a body: the sum of its lumped node masses, rho V.</summary>
+        public double Mass(Body body)
+        {
+            double m; LfemException.Check(Native.lfem_body_get_mass(handle, body, out m)); return m;
+        }
+
+        /// <summary>Linear momentum (kg m/s) and angular momentum about the origin (kg m^2/s).</summary>
+        public void GetMomentum(Body body, out Vec3 linear, out Vec3 angular)
+        {
+            LfemException.Check(Native.lfem_body_get_momentum(handle, body, out linear, out angular));
         }
 
         public int NodeCount(Body body)
@@ -611,6 +684,8 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_tet_count(WorldHandle world, Body body, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_user_data(WorldHandle world, Body body, out IntPtr userData);
 
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_mass(WorldHandle world, Body body, out double mass);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_momentum(WorldHandle world, Body body, out Vec3 linear, out Vec3 angular);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_positions(WorldHandle world, Body body, [Out] Vec3[] positions, uint nodeCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_velocities(WorldHandle world, Body body, [Out] Vec3[] velocities, uint nodeCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_velocities(WorldHandle world, Body body, [In] Vec3[] velocities, uint nodeCount);
@@ -626,6 +701,9 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_node_forces(WorldHandle world, Body body, [In] uint[] nodes, uint count, [In] Vec3[] forces);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_clear_node_forces(WorldHandle world, Body body);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_kinematic_velocity(WorldHandle world, Body body, ref Vec3 linear, ref Vec3 angular);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern ShapeDef lfem_shape_def_default();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_shape(WorldHandle world, Body body, ref ShapeDef def);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(WorldHandle world, [Out] Contact[] contacts, UIntPtr capacity, out UIntPtr count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(IntPtr world, [Out] Contact[] contacts, UIntPtr capacity, out UIntPtr count);

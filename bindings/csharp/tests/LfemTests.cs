@@ -97,7 +97,10 @@ public static class LfemTests
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
                         "UserData", 104, "internalValue", 112);
         Layout<Contact>(128, "BodyA", 0, "BodyB", 8, "Node", 16, "TriangleA", 20, "TriangleC", 28, "Barycentric1", 32,
-                        "Barycentric2", 40, "Position", 48, "Normal", 72, "Force", 96, "Sliding", 120);
+                        "Barycentric2", 40, "Position", 48, "Normal", 72, "Force", 96, "Sliding", 120, "Shape", 124);
+        Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(ShapeType))), "sizeof(lfem_shape_type)");
+        Layout<ShapeDef>(120, "Type", 0, "PointCount", 4, "Center", 8, "RotationW", 32, "RotationZ", 56, "HalfExtents", 64,
+                         "Radius", 88, "HalfLength", 96, "Points", 104, "internalValue", 112);
     }
 
     public static void TestDefaultsComeFromC()
@@ -120,6 +123,14 @@ public static class LfemTests
         Equal(1u, b.CategoryBits, "category");
         Equal(0xFFFFFFFFu, b.MaskBits, "mask");
         Equal(IntPtr.Zero, b.UserData, "user data");
+        ShapeDef s = ShapeDef.Default;
+        Equal(ShapeType.Plane, s.Type, "shape type");
+        Equal(new Vec3(0, 0, 0), s.Center, "shape centre");
+        Check(s.RotationW == 1 && s.RotationX == 0 && s.RotationY == 0 && s.RotationZ == 0, "identity rotation");
+        Equal(new Vec3(0.5, 0.5, 0.5), s.HalfExtents, "half extents");
+        Equal(0.5, s.Radius, "radius");
+        Equal(0.5, s.HalfLength, "half length");
+        Equal(IntPtr.Zero, s.Points, "points");
     }
 
     public static void TestVersion()
@@ -145,6 +156,7 @@ public static class LfemTests
                 Body block = AddBlock(world, model);
                 Vec3[] start = world.GetPositions(block);
                 Equal(24, start.Length, "node count");
+                Close(mass, world.Mass(block), 1e-12 * mass, model + " mass = rho V");
                 for (int call = 1; call <= 50; ++call)
                 {
                     world.Step(0.01);
@@ -166,6 +178,9 @@ public static class LfemTests
                     double ke = 0.5 * mass * (G * t) * (G * t);
                     Close(ke, stats.KineticEnergy, 1e-10 * ke, model + " kinetic energy");
                     Close(0.0, stats.StrainEnergy, 1e-10 * ke, model + " strain energy");
+                    Vec3 p, l;
+                    world.GetMomentum(block, out p, out l);
+                    Close(-mass * G * t, p.Z, 1e-10 * mass * G * t, model + " body momentum");
                 }
                 Equal(1u, world.Stats.BodyCount, "body count");
             }
@@ -316,8 +331,8 @@ public static class LfemTests
 
     public static void TestContactQueryOfASingleBodyIsEmpty()
     {
-        // Contact is still being written; a lone block has no contact anyway: this checks the
-        // binding of the query (count, empty array, buffer left alone).
+        // A lone falling block touches nothing: the query gives a count of 0, an empty array,
+        // and leaves a caller's buffer alone.
         using (World world = new World())
         {
             AddBlock(world, Model.NeoHookean);
@@ -330,6 +345,56 @@ public static class LfemTests
             Equal(0, world.GetContacts(buffer), "count into a buffer");
             foreach (Contact c in buffer) Equal(12345u, c.Node, "buffer untouched");
             Equal(0u, world.Stats.ContactCount, "stats contact count");
+        }
+    }
+
+    public static void TestBlockOnAStaticPlaneTouchesTheShape()
+    {
+        // A block released 1 mm above a static plane (z = 0, normal +z): after 0.1 s it has
+        // landed; every contact names the floor's shape 0, its normal is +z and its force pushes
+        // up (frictionless: along the normal).
+        using (World world = new World())
+        {
+            BodyDef floorDef = BodyDef.Default;
+            floorDef.Type = BodyType.Static;
+            Body floor = world.CreateBody(floorDef);
+            world.AddShape(floor, ShapeDef.Default);
+            Body block;
+            using (Mesh mesh = Mesh.Box(Size, 3, 2, 1))
+            {
+                mesh.Translate(new Vec3(0, 0, 0.001));
+                BodyDef def = BodyDef.Default;
+                def.YoungModulus = 2e5;
+                def.Density = Density;
+                def.Friction = 0;
+                def.Damping = 5;
+                block = world.CreateBody(def);
+                world.AddMesh(block, mesh);
+            }
+            world.Step(0.1);
+            Contact[] contacts = world.GetContacts();
+            Check(contacts.Length > 0, "the block landed");
+            Equal(contacts.Length, world.ContactCount, "count");
+            foreach (Contact c in contacts)
+            {
+                Equal(block, c.BodyA, "body a");
+                Equal(floor, c.BodyB, "body b");
+                Check(c.TouchesShape, "touches a shape");
+                Equal(0u, c.Shape, "shape index");
+                Close(1.0, c.Normal.Z, 1e-12, "normal z");
+                Check(c.Force.Z >= 0, "force pushes up");
+                Close(0.0, c.Force.X, 1e-9, "no friction force");
+            }
+            if (contacts.Length > 1)
+            {
+                Contact[] shortBuffer = new Contact[contacts.Length - 1];
+                for (int i = 0; i < shortBuffer.Length; ++i) shortBuffer[i].Node = 12345;
+                Equal(Status.BufferTooSmall, Throws(() => world.GetContacts(shortBuffer), "short buffer").Status, "short");
+                foreach (Contact c in shortBuffer) Equal(12345u, c.Node, "short buffer untouched");
+            }
+            LfemException e = Throws(() => world.AddShape(block, ShapeDef.Default), "shape on a deformable body");
+            Equal(Status.InvalidArgument, e.Status, "shape status");
+            Check(e.Message.StartsWith("lfem_body_add_shape"), "message: " + e.Message);
         }
     }
 

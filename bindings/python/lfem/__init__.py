@@ -37,7 +37,7 @@ import numpy as np
 
 __all__ = [
     "Status", "BodyType", "Model", "LfemError", "WorldDef", "WorldStats", "Body", "BodyDef",
-    "Contact", "CONTACT_DTYPE", "World", "Mesh", "VtkSeries", "version", "version_string",
+    "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeType", "ShapeDef", "World", "Mesh", "VtkSeries", "version", "version_string",
     "status_string", "last_error", "library_path", "VERSION_MAJOR", "VERSION_MINOR",
     "VERSION_PATCH",
 ]
@@ -99,6 +99,14 @@ class Model(enum.IntEnum):
     COROTATIONAL = 1
     NEO_HOOKEAN = 2
     LINEAR = 3
+
+
+class ShapeType(enum.IntEnum):
+    PLANE = 0        # the half-space below the plane through center with normal local +z
+    BOX = 1          # half_extents along the local axes
+    SPHERE = 2       # radius
+    CAPSULE = 3      # segment -half_length..+half_length along local z, swept by radius
+    CONVEX_HULL = 4  # convex hull of points (local coordinates), see World.add_shape
 
 
 # ---- structs (laid out as in lfem.h; sizes checked by tests/test_lfem.py) ----------------------
@@ -201,8 +209,34 @@ class Contact(ctypes.Structure):
         ("normal", _d3),
         ("force", _d3),
         ("sliding", ctypes.c_uint8),
-        ("padding", ctypes.c_uint8 * 7),
+        ("padding", ctypes.c_uint8 * 3),
+        ("shape", ctypes.c_uint32),  # index of body_b's shape, or NO_SHAPE for a triangle
     ]
+
+
+#: Contact.shape of a contact with a triangle (not a rigid shape).
+NO_SHAPE = 0xFFFFFFFF
+
+
+class ShapeDef(ctypes.Structure):
+    """lfem_shape_def: a rigid shape of a static or kinematic body. Start from
+    ShapeDef.default(); convex hull points are passed to World.add_shape."""
+    _fields_ = [
+        ("type", _enum),                      # ShapeType, default PLANE
+        ("point_count", ctypes.c_uint32),     # set by World.add_shape
+        ("center", _d3),                      # m, default 0
+        ("rotation", ctypes.c_double * 4),    # unit quaternion (w, x, y, z), default identity
+        ("half_extents", _d3),                # m, box, default 0.5
+        ("radius", ctypes.c_double),          # m, sphere and capsule, default 0.5
+        ("half_length", ctypes.c_double),     # m, capsule, default 0.5
+        ("points", ctypes.POINTER(ctypes.c_double)),  # set by World.add_shape
+        ("internal_value", ctypes.c_uint32),  # set by the default; do not change
+        ("padding", ctypes.c_uint32),
+    ]
+
+    @staticmethod
+    def default():
+        return _lib.lfem_shape_def_default()
 
 
 _BODY_DTYPE = np.dtype([("index", "<u4"), ("generation", "<u4")])
@@ -210,12 +244,13 @@ _BODY_DTYPE = np.dtype([("index", "<u4"), ("generation", "<u4")])
 #: The numpy dtype of lfem_contact (same offsets and size as Contact).
 CONTACT_DTYPE = np.dtype({
     "names": ["body_a", "body_b", "node", "triangle", "barycentric", "position", "normal",
-              "force", "sliding"],
+              "force", "sliding", "shape"],
     "formats": [_BODY_DTYPE, _BODY_DTYPE, np.uint32, (np.uint32, 3), (np.float64, 2),
-                (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8],
+                (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8, np.uint32],
     "offsets": [Contact.body_a.offset, Contact.body_b.offset, Contact.node.offset,
                 Contact.triangle.offset, Contact.barycentric.offset, Contact.position.offset,
-                Contact.normal.offset, Contact.force.offset, Contact.sliding.offset],
+                Contact.normal.offset, Contact.force.offset, Contact.sliding.offset,
+                Contact.shape.offset],
     "itemsize": ctypes.sizeof(Contact),
 })
 
@@ -257,15 +292,17 @@ _up = _p(ctypes.c_uint32)
 _vp = ctypes.c_void_p
 _u32 = ctypes.c_uint32
 _dbl = ctypes.c_double
-_st = ctypes.c_int  # lfem_status
+_st = object()  # marks functions returning lfem_status (a C int): they raise LfemError
 
 
 def _declare(name, restype, *argtypes):
     f = getattr(_lib, name)
-    f.restype = restype
     f.argtypes = list(argtypes)
     if restype is _st:
+        f.restype = ctypes.c_int
         f.errcheck = _errcheck
+    else:
+        f.restype = restype
     return f
 
 
@@ -291,6 +328,8 @@ _declare("lfem_body_add_mesh", _st, _vp, Body, _dp, _u32, _up, _u32)
 _declare("lfem_body_get_node_count", _st, _vp, Body, _up)
 _declare("lfem_body_get_tet_count", _st, _vp, Body, _up)
 _declare("lfem_body_get_user_data", _st, _vp, Body, _p(_vp))
+_declare("lfem_body_get_mass", _st, _vp, Body, _dp)
+_declare("lfem_body_get_momentum", _st, _vp, Body, _dp, _dp)
 _declare("lfem_body_get_positions", _st, _vp, Body, _dp, _u32)
 _declare("lfem_body_get_velocities", _st, _vp, Body, _dp, _u32)
 _declare("lfem_body_set_velocities", _st, _vp, Body, _dp, _u32)
@@ -305,6 +344,9 @@ _declare("lfem_body_release_nodes", _st, _vp, Body, _up, _u32)
 _declare("lfem_body_set_node_forces", _st, _vp, Body, _up, _u32, _dp)
 _declare("lfem_body_clear_node_forces", _st, _vp, Body)
 _declare("lfem_body_set_kinematic_velocity", _st, _vp, Body, _dp, _dp)
+
+_declare("lfem_shape_def_default", ShapeDef)
+_declare("lfem_body_add_shape", _st, _vp, Body, _p(ShapeDef))
 
 _declare("lfem_world_query_contacts", _st, _vp, _vp, ctypes.c_size_t, _p(ctypes.c_size_t))
 
@@ -481,6 +523,34 @@ class World:
         if t.size % 4:
             raise LfemError(Status.INVALID_ARGUMENT, "lfem (Python): tets must be an (m, 4) array")
         _lib.lfem_body_add_mesh(self.handle, body, _dptr(x), x.shape[0], _uptr(t), t.size // 4)
+
+    def add_shape(self, body, definition=None, points=None):
+        """Give a static or kinematic body a rigid shape (ShapeDef, default a plane z = 0);
+        points: the convex hull's (n, 3) local coordinates (m), None for the other shapes."""
+        d = ShapeDef.default() if definition is None else ShapeDef.from_buffer_copy(definition)
+        keep = None
+        if points is not None:
+            keep = _vectors(points, "points")
+            d.points = _dptr(keep)
+            d.point_count = keep.shape[0]
+        else:
+            d.points = None
+            d.point_count = 0
+        _lib.lfem_body_add_shape(self.handle, body, ctypes.byref(d))
+        del keep
+
+    def mass(self, body):
+        """Total mass (kg) of a body: the sum of its lumped node masses, rho V."""
+        out = ctypes.c_double()
+        _lib.lfem_body_get_mass(self.handle, body, ctypes.byref(out))
+        return out.value
+
+    def momentum(self, body):
+        """(linear, angular): linear momentum (kg m/s) and angular momentum about the origin
+        (kg m^2/s) of a body, two float64 arrays of 3."""
+        linear, angular = np.zeros(3), np.zeros(3)
+        _lib.lfem_body_get_momentum(self.handle, body, _dptr(linear), _dptr(angular))
+        return linear, angular
 
     def node_count(self, body):
         out = ctypes.c_uint32()

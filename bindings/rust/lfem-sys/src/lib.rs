@@ -38,6 +38,13 @@ pub const LFEM_MODEL_COROTATIONAL: lfem_model = 1;
 pub const LFEM_MODEL_NEO_HOOKEAN: lfem_model = 2;
 pub const LFEM_MODEL_LINEAR: lfem_model = 3;
 
+pub type lfem_shape_type = c_int;
+pub const LFEM_SHAPE_PLANE: lfem_shape_type = 0;
+pub const LFEM_SHAPE_BOX: lfem_shape_type = 1;
+pub const LFEM_SHAPE_SPHERE: lfem_shape_type = 2;
+pub const LFEM_SHAPE_CAPSULE: lfem_shape_type = 3;
+pub const LFEM_SHAPE_CONVEX_HULL: lfem_shape_type = 4;
+
 // ---- opaque objects ------------------------------------------------------------------------
 
 /// Opaque world (`lfem_world*`).
@@ -139,19 +146,39 @@ pub struct lfem_contact {
     pub normal: [c_double; 3],
     pub force: [c_double; 3],
     pub sliding: u8,
-    pub padding: [u8; 7],
+    pub padding: [u8; 3],
+    /// Index of body_b's shape, or u32::MAX when the node touches a triangle.
+    pub shape: u32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct lfem_shape_def {
+    pub type_: lfem_shape_type,
+    pub point_count: u32,
+    pub center: [c_double; 3],
+    pub rotation: [c_double; 4],
+    pub half_extents: [c_double; 3],
+    pub radius: c_double,
+    pub half_length: c_double,
+    pub points: *const c_double,
+    pub internal_value: u32,
+    pub padding: u32,
 }
 
 // The C sizes (bindings/abi_layout.c asserts the same numbers with _Static_assert).
 const _: () = assert!(size_of::<lfem_status>() == 4);
 const _: () = assert!(size_of::<lfem_body_type>() == 4);
 const _: () = assert!(size_of::<lfem_model>() == 4);
+const _: () = assert!(size_of::<lfem_shape_type>() == 4);
 const _: () = assert!(size_of::<lfem_body>() == 8);
 const _: () = assert!(size_of::<lfem_world_def>() == 72);
 const _: () = assert!(size_of::<lfem_world_stats>() == 160);
 const _: () = assert!(size_of::<lfem_contact>() == 128);
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(size_of::<lfem_body_def>() == 120);
+#[cfg(target_pointer_width = "64")]
+const _: () = assert!(size_of::<lfem_shape_def>() == 120);
 
 // ---- functions -------------------------------------------------------------------------------
 // Linked by build.rs (cargo:rustc-link-lib=dylib=lfem).
@@ -196,6 +223,13 @@ extern "C" {
         world: *const lfem_world,
         body: lfem_body,
         out: *mut *mut c_void,
+    ) -> lfem_status;
+    pub fn lfem_body_get_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
+    pub fn lfem_body_get_momentum(
+        world: *const lfem_world,
+        body: lfem_body,
+        linear: *mut c_double,
+        angular: *mut c_double,
     ) -> lfem_status;
 
     // state
@@ -269,6 +303,10 @@ extern "C" {
         linear: *const c_double,
         angular: *const c_double,
     ) -> lfem_status;
+
+    // rigid shapes
+    pub fn lfem_shape_def_default() -> lfem_shape_def;
+    pub fn lfem_body_add_shape(world: *mut lfem_world, body: lfem_body, def: *const lfem_shape_def) -> lfem_status;
 
     // contacts
     pub fn lfem_world_query_contacts(

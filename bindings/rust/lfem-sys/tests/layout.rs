@@ -21,6 +21,7 @@ fn sizes_match_c() {
     assert_eq!(size_of::<lfem_world_stats>(), 160);
     assert_eq!(size_of::<lfem_body_def>(), 120);
     assert_eq!(size_of::<lfem_contact>(), 128);
+    assert_eq!(size_of::<lfem_shape_def>(), 120);
     assert_eq!(align_of::<lfem_world_def>(), 8);
     assert_eq!(align_of::<lfem_body>(), 4);
 }
@@ -67,6 +68,16 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_contact, normal), 72);
     assert_eq!(offset!(lfem_contact, force), 96);
     assert_eq!(offset!(lfem_contact, sliding), 120);
+    assert_eq!(offset!(lfem_contact, shape), 124);
+
+    assert_eq!(offset!(lfem_shape_def, point_count), 4);
+    assert_eq!(offset!(lfem_shape_def, center), 8);
+    assert_eq!(offset!(lfem_shape_def, rotation), 32);
+    assert_eq!(offset!(lfem_shape_def, half_extents), 64);
+    assert_eq!(offset!(lfem_shape_def, radius), 88);
+    assert_eq!(offset!(lfem_shape_def, half_length), 96);
+    assert_eq!(offset!(lfem_shape_def, points), 104);
+    assert_eq!(offset!(lfem_shape_def, internal_value), 112);
 }
 
 #[test]
@@ -90,6 +101,15 @@ fn defaults_are_the_documented_ones() {
     assert_eq!(b.category_bits, 1);
     assert_eq!(b.mask_bits, u32::MAX);
     assert!(b.user_data.is_null());
+    // SAFETY: returns a value.
+    let s = unsafe { lfem_shape_def_default() };
+    assert_eq!(s.type_, LFEM_SHAPE_PLANE);
+    assert_eq!(s.center, [0.0; 3]);
+    assert_eq!(s.rotation, [1.0, 0.0, 0.0, 0.0]);
+    assert_eq!(s.half_extents, [0.5; 3]);
+    assert_eq!(s.radius, 0.5);
+    assert_eq!(s.half_length, 0.5);
+    assert!(s.points.is_null());
 }
 
 #[test]

@@ -354,6 +354,65 @@ impl BodyDef {
     }
 }
 
+/// The kind of a rigid shape.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ShapeType {
+    /// The half-space below the plane through `center` with normal local +z.
+    Plane,
+    /// `half_extents` along the local axes.
+    Box,
+    /// `radius`.
+    Sphere,
+    /// A segment from -half_length to +half_length along local z, swept by a sphere of radius.
+    Capsule,
+    /// The convex hull of `points` (local coordinates, at least 4, not all coplanar).
+    ConvexHull,
+}
+
+/// A rigid shape of a static or kinematic body. Start from `ShapeDef::default()`
+/// (lfem_shape_def_default) and edit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShapeDef {
+    /// Default `ShapeType::Plane`.
+    pub shape_type: ShapeType,
+    /// m, world position of the shape's local origin, default 0.
+    pub center: [f64; 3],
+    /// Unit quaternion (w, x, y, z) of the local frame, default identity.
+    pub rotation: [f64; 4],
+    /// m, box, default 0.5.
+    pub half_extents: [f64; 3],
+    /// m, sphere and capsule, default 0.5.
+    pub radius: f64,
+    /// m, capsule, default 0.5.
+    pub half_length: f64,
+    /// Convex hull points (m, local coordinates); empty otherwise.
+    pub points: Vec<[f64; 3]>,
+    internal_value: u32,
+}
+
+impl Default for ShapeDef {
+    fn default() -> ShapeDef {
+        // SAFETY: returns a value.
+        let d = unsafe { sys::lfem_shape_def_default() };
+        ShapeDef {
+            shape_type: match d.type_ {
+                sys::LFEM_SHAPE_BOX => ShapeType::Box,
+                sys::LFEM_SHAPE_SPHERE => ShapeType::Sphere,
+                sys::LFEM_SHAPE_CAPSULE => ShapeType::Capsule,
+                sys::LFEM_SHAPE_CONVEX_HULL => ShapeType::ConvexHull,
+                _ => ShapeType::Plane,
+            },
+            center: d.center,
+            rotation: d.rotation,
+            half_extents: d.half_extents,
+            radius: d.radius,
+            half_length: d.half_length,
+            points: Vec::new(),
+            internal_value: d.internal_value,
+        }
+    }
+}
+
 // ---- handles and records -----------------------------------------------------------------------
 
 /// A body handle: a value (copy it freely), valid while the body lives. `Body::NULL` is
@@ -376,7 +435,7 @@ impl Body {
 /// One active node-to-triangle contact of the last step. Same layout as `lfem_contact`, so
 /// [`World::contacts_into`] fills a slice of them directly.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact {
     /// The body that owns the node.
     pub body_a: Body,
@@ -396,12 +455,42 @@ pub struct Contact {
     pub force: [f64; 3],
     /// 1 when friction is on the Coulomb cone, else 0 (see [`Contact::is_sliding`]).
     pub sliding: u8,
-    padding: [u8; 7],
+    padding: [u8; 3],
+    /// Index of body_b's rigid shape the node touches, or `u32::MAX` for a triangle (then
+    /// `triangle` and `barycentric` are meaningful; for a shape they are `u32::MAX` and 0).
+    pub shape: u32,
+}
+
+impl Default for Contact {
+    fn default() -> Contact {
+        Contact {
+            body_a: Body::NULL,
+            body_b: Body::NULL,
+            node: 0,
+            triangle: [0; 3],
+            barycentric: [0.0; 2],
+            position: [0.0; 3],
+            normal: [0.0; 3],
+            force: [0.0; 3],
+            sliding: 0,
+            padding: [0; 3],
+            shape: u32::MAX,
+        }
+    }
 }
 
 impl Contact {
     pub fn is_sliding(&self) -> bool {
         self.sliding != 0
+    }
+
+    /// The rigid shape of body_b that the node touches, if any (else a triangle).
+    pub fn shape(&self) -> Option<u32> {
+        if self.shape == u32::MAX {
+            None
+        } else {
+            Some(self.shape)
+        }
     }
 }
 
@@ -542,6 +631,48 @@ impl World {
                 tet_count,
             )
         })
+    }
+
+    /// Give a static or kinematic body a rigid shape.
+    pub fn add_shape(&mut self, body: Body, def: &ShapeDef) -> Result<()> {
+        let raw = sys::lfem_shape_def {
+            type_: match def.shape_type {
+                ShapeType::Plane => sys::LFEM_SHAPE_PLANE,
+                ShapeType::Box => sys::LFEM_SHAPE_BOX,
+                ShapeType::Sphere => sys::LFEM_SHAPE_SPHERE,
+                ShapeType::Capsule => sys::LFEM_SHAPE_CAPSULE,
+                ShapeType::ConvexHull => sys::LFEM_SHAPE_CONVEX_HULL,
+            },
+            point_count: to_u32(def.points.len(), "point count")?,
+            center: def.center,
+            rotation: def.rotation,
+            half_extents: def.half_extents,
+            radius: def.radius,
+            half_length: def.half_length,
+            points: if def.points.is_empty() { ptr::null() } else { def.points.as_ptr() as *const f64 },
+            internal_value: def.internal_value,
+            padding: 0,
+        };
+        // SAFETY: live world; raw.points holds 3*point_count doubles (copied by lfem).
+        check(unsafe { sys::lfem_body_add_shape(self.ptr_mut(), body.raw(), &raw) })
+    }
+
+    /// Total mass (kg) of a body: the sum of its lumped node masses, rho V.
+    pub fn mass(&self, body: Body) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_mass(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out)
+    }
+
+    /// Linear momentum (kg m/s) and angular momentum about the origin (kg m^2/s) of a body.
+    pub fn momentum(&self, body: Body) -> Result<([f64; 3], [f64; 3])> {
+        let (mut linear, mut angular) = ([0.0; 3], [0.0; 3]);
+        // SAFETY: live world, two outputs of 3 doubles.
+        check(unsafe {
+            sys::lfem_body_get_momentum(self.ptr(), body.raw(), linear.as_mut_ptr(), angular.as_mut_ptr())
+        })?;
+        Ok((linear, angular))
     }
 
     pub fn node_count(&self, body: Body) -> Result<usize> {

@@ -1,6 +1,6 @@
 //! Real simulations through the safe API, checked against closed forms, plus error handling,
 //! handle invalidation, buffers and contacts.
-use lfem::{Body, BodyDef, BodyType, Contact, Mesh, Model, Status, World, WorldDef};
+use lfem::{Body, BodyDef, BodyType, Contact, Mesh, Model, ShapeDef, ShapeType, Status, World, WorldDef};
 
 const G: f64 = 9.81;
 
@@ -38,6 +38,7 @@ fn falling_block_follows_free_fall() {
         let (mut world, block) = block_world(model, size, density);
         let start = world.positions(block).unwrap();
         assert_eq!(start.len(), 4 * 3 * 2);
+        assert!(close(world.mass(block).unwrap(), mass, 1e-12 * mass), "{:?}: mass", model);
         for call in 1..=50 {
             world.step(0.01).unwrap();
             if call % 10 != 0 {
@@ -67,6 +68,8 @@ fn falling_block_follows_free_fall() {
             let ke = 0.5 * mass * (G * t) * (G * t);
             assert!(close(stats.kinetic_energy, ke, 1e-10 * ke), "{:?}: ke = {}", model, stats.kinetic_energy);
             assert!(stats.strain_energy.abs() <= 1e-10 * ke, "{:?}: strain {}", model, stats.strain_energy);
+            let (body_p, _) = world.momentum(block).unwrap();
+            assert!(close(body_p[2], -mass * G * t, 1e-10 * mass * G * t), "{:?}: body pz", model);
         }
         assert_eq!(world.stats().unwrap().body_count, 1);
     }
@@ -194,8 +197,8 @@ fn short_buffers_are_refused_untouched() {
 
 #[test]
 fn contact_query_of_a_single_body_is_empty() {
-    // Contact is still being written: a lone falling block has no contact anyway, so these
-    // check the binding of the query (count, empty list, buffers left alone).
+    // A lone falling block touches nothing: the query gives a count of 0, an empty list, and
+    // leaves a caller's buffer alone.
     let (mut world, _block) = block_world(Model::NeoHookean, [0.3, 0.2, 0.1], 400.0);
     world.step(0.05).unwrap();
     assert_eq!(world.contact_count().unwrap(), 0);
@@ -239,4 +242,116 @@ fn version_of_the_loaded_library() {
     assert_eq!((major, minor, patch), (lfem::sys::LFEM_VERSION_MAJOR, lfem::sys::LFEM_VERSION_MINOR, lfem::sys::LFEM_VERSION_PATCH));
     assert_eq!(lfem::version_string(), format!("{}.{}.{}", major, minor, patch));
     assert!(Status::InvalidMesh.to_string().starts_with("LFEM_INVALID_MESH"));
+}
+
+#[test]
+fn two_bar_impact_matches_the_one_dimensional_wave_solution() {
+    // The paper's Fig. 3: steel bars of L = 0.254 m, sections 0.0254 x 0.0254 and
+    // 0.0254 x 0.0224 m, approaching at 5.1359 m/s each across a gap of 2.54e-4 m, nu = 0,
+    // no gravity, no friction. 1-D wave solution: c = sqrt(E/rho) = 5134.85 m/s; the contact
+    // lasts 2L/c = 98.93 us; the force plateau Z1 Z2/(Z1 + Z2) 2v (Z = rho c A) gives an
+    // impulse of 12.375 N s; final velocities -4.491 and +5.781 m/s. Tolerances as in the C++
+    // test (tests/physics/test_two_bar_impact.cpp): 2 % on the impulse (mesh dispersion over 40
+    // elements per bar), 3 % on the velocities; contact forces and momentum changes are the same
+    // multipliers seen twice, so they agree to round-off (1e-9 relative).
+    let (l, b, h1, h2, gap) = (0.254, 0.0254, 0.0254, 0.0224, 2.54e-4);
+    let (v0, rho, e) = (5.1359, 7844.0, 206.82e9);
+    let mut def = WorldDef::default();
+    def.gravity = [0.0; 3];
+    let mut world = World::new(&def).unwrap();
+    let mut bar = |size: [f64; 3], offset: [f64; 3], v: f64| {
+        let mut mesh = Mesh::new_box(size, [40, 4, 4]).unwrap();
+        mesh.translate(offset).unwrap();
+        let mut d = BodyDef::default();
+        d.model = Model::Paper;
+        d.young_modulus = e;
+        d.poisson_ratio = 0.0;
+        d.density = rho;
+        d.friction = 0.0;
+        d.linear_velocity = [v, 0.0, 0.0];
+        let body = world.create_body(&d).unwrap();
+        world.add_mesh(body, &mesh).unwrap();
+        body
+    };
+    let bar1 = bar([l, b, h1], [-l - gap / 2.0, -b / 2.0, -h1 / 2.0], v0);
+    let bar2 = bar([l, b, h2], [gap / 2.0, -b / 2.0, -h2 / 2.0], -v0);
+    let (m1, m2) = (world.mass(bar1).unwrap(), world.mass(bar2).unwrap());
+    assert!(close(m1, rho * l * b * h1, 1e-12 * m1) && close(m2, rho * l * b * h2, 1e-12 * m2));
+    let (p10, _) = world.momentum(bar1).unwrap();
+    let (p20, _) = world.momentum(bar2).unwrap();
+
+    let h = 0.9 * world.stable_step().unwrap();
+    let mut impulse = 0.0; // N s, contact forces on bar 2 along +x, summed over time
+    let mut contacts = Vec::new();
+    let mut seen = 0usize;
+    while world.stats().unwrap().time < 200e-6 {
+        world.step(h).unwrap();
+        let n = world.contact_count().unwrap();
+        contacts.resize(n, Contact::default());
+        assert_eq!(world.contacts_into(&mut contacts).unwrap(), n);
+        if n > 0 {
+            // A buffer one short is refused and left alone.
+            let mut short = vec![Contact::default(); n - 1];
+            assert_eq!(world.contacts_into(&mut short).unwrap_err().status(), Status::BufferTooSmall);
+            assert!(short.iter().all(|c| *c == Contact::default()));
+        }
+        seen = seen.max(n);
+        for c in &contacts {
+            assert!(c.body_a == bar1 || c.body_a == bar2);
+            assert!(c.body_b == bar1 || c.body_b == bar2);
+            assert_ne!(c.body_a, c.body_b);
+            assert_eq!(c.shape(), None);
+            let sign = if c.body_a == bar2 { 1.0 } else { -1.0 };
+            impulse += sign * c.force[0] * h;
+        }
+    }
+    assert!(seen > 0, "the bars never touched");
+    let (p1, _) = world.momentum(bar1).unwrap();
+    let (p2, _) = world.momentum(bar2).unwrap();
+    assert!(close(impulse, 12.375, 0.02 * 12.375), "impulse {} N s", impulse);
+    assert!(close(impulse, p2[0] - p20[0], 1e-9 * 12.375), "impulse vs bar 2's momentum");
+    assert!(close(impulse, p10[0] - p1[0], 1e-9 * 12.375), "impulse vs bar 1's momentum");
+    assert!(close(p1[0] / m1, -4.491, 0.03 * 4.491), "v1 = {}", p1[0] / m1);
+    assert!(close(p2[0] / m2, 5.781, 0.03 * 5.781), "v2 = {}", p2[0] / m2);
+    assert!((p1[0] + p2[0] - p10[0] - p20[0]).abs() < 1e-10 * (m1 + m2) * v0, "momentum not conserved");
+}
+
+#[test]
+fn block_on_a_static_plane_touches_the_shape() {
+    // A block released 1 mm above a static plane (z = 0, normal +z): after 0.1 s it has landed;
+    // every contact names the floor's shape 0, its normal is +z and its force pushes up
+    // (frictionless, so the force is along the normal).
+    let mut world = World::new(&WorldDef::default()).unwrap();
+    let mut floor_def = BodyDef::default();
+    floor_def.body_type = BodyType::Static;
+    let floor = world.create_body(&floor_def).unwrap();
+    let plane = ShapeDef::default();
+    assert_eq!(plane.shape_type, ShapeType::Plane);
+    assert_eq!(plane.rotation, [1.0, 0.0, 0.0, 0.0]);
+    world.add_shape(floor, &plane).unwrap();
+
+    let mut mesh = Mesh::new_box([0.3, 0.2, 0.1], [3, 2, 1]).unwrap();
+    mesh.translate([0.0, 0.0, 0.001]).unwrap();
+    let mut d = BodyDef::default();
+    d.young_modulus = 2e5;
+    d.density = 400.0;
+    d.friction = 0.0;
+    d.damping = 5.0;
+    let block = world.create_body(&d).unwrap();
+    world.add_mesh(block, &mesh).unwrap();
+    world.step(0.1).unwrap();
+
+    let contacts = world.contacts().unwrap();
+    assert!(!contacts.is_empty(), "the block did not land");
+    for c in &contacts {
+        assert_eq!(c.body_a, block);
+        assert_eq!(c.body_b, floor);
+        assert_eq!(c.shape(), Some(0));
+        assert!(close(c.normal[2], 1.0, 1e-12) && close(c.normal[0], 0.0, 1e-12));
+        assert!(c.force[2] >= 0.0 && close(c.force[0], 0.0, 1e-9) && close(c.force[1], 0.0, 1e-9));
+    }
+    // A plane on a deformable body is refused.
+    let err = world.add_shape(block, &plane).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().starts_with("lfem_body_add_shape"), "message: {}", err.message());
 }

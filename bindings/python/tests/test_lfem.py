@@ -1,0 +1,393 @@
+"""Tests of the Python bindings: struct layouts against the C sizes, real simulations against
+closed forms, error handling, handle invalidation, buffers, contacts.
+
+Run with `python3 -m pytest bindings/python/tests` or `python3 -m unittest discover -s
+bindings/python/tests` (the system python3 with Debian's python3-numpy / python3-pytest).
+"""
+import ctypes
+import math
+import os
+import sys
+import unittest
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir))
+import lfem  # noqa: E402
+
+G = 9.81
+SIZE = (0.3, 0.2, 0.1)
+DENSITY = 400.0
+
+
+def add_block(world, model):
+    """A 0.3 x 0.2 x 0.1 m block of 3 x 2 x 1 cells lifted to z = 2 m."""
+    mesh = lfem.Mesh.box(SIZE, (3, 2, 1))
+    mesh.translate((0.0, 0.0, 2.0))
+    d = lfem.BodyDef.default()
+    d.model = model
+    d.young_modulus = 2e5
+    d.density = DENSITY
+    body = world.create_body(d)
+    world.add_mesh(body, mesh)
+    mesh.close()
+    return body
+
+
+class Layout(unittest.TestCase):
+    # The numbers bindings/abi_layout.c asserts in C (64-bit targets).
+
+    def check(self, struct, size, offsets):
+        self.assertEqual(ctypes.sizeof(struct), size, struct.__name__)
+        for field, offset in offsets.items():
+            self.assertEqual(getattr(struct, field).offset, offset, struct.__name__ + "." + field)
+
+    def test_struct_sizes_match_c(self):
+        self.assertEqual(ctypes.sizeof(ctypes.c_void_p), 8)
+        self.assertEqual(ctypes.sizeof(ctypes.c_int), 4)  # enums
+        self.check(lfem.Body, 8, {"index": 0, "generation": 4})
+        self.check(lfem.WorldDef, 72, {
+            "gravity": 0, "time_step": 24, "step_safety": 32, "contact_iterations": 40,
+            "contact_tolerance": 48, "max_substeps": 56, "allow_unstable_step": 60,
+            "internal_value": 64})
+        self.check(lfem.WorldStats, 160, {
+            "steps": 8, "step_size": 16, "stable_step": 24, "substeps_last_call": 32,
+            "body_count": 36, "kinetic_energy": 40, "energy_error": 72, "linear_momentum": 80,
+            "angular_momentum": 104, "contact_count": 128, "solver_iterations": 132,
+            "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152})
+        self.check(lfem.BodyDef, 120, {
+            "type": 0, "model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
+            "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
+            "category_bits": 96, "mask_bits": 100, "user_data": 104, "internal_value": 112})
+        self.check(lfem.Contact, 128, {
+            "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
+            "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124})
+        self.check(lfem.ShapeDef, 120, {
+            "type": 0, "point_count": 4, "center": 8, "rotation": 32, "half_extents": 64,
+            "radius": 88, "half_length": 96, "points": 104, "internal_value": 112})
+
+    def test_contact_dtype_matches_c(self):
+        dt = lfem.CONTACT_DTYPE
+        self.assertEqual(dt.itemsize, 128)
+        expected = {"body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
+                    "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124}
+        for name, offset in expected.items():
+            self.assertEqual(dt.fields[name][1], offset, name)
+        self.assertEqual(dt["normal"].shape, (3,))
+
+
+class Defaults(unittest.TestCase):
+    def test_defaults_come_from_c(self):
+        w = lfem.WorldDef.default()
+        self.assertEqual(list(w.gravity), [0.0, 0.0, -9.81])
+        self.assertEqual(w.time_step, 0.0)
+        self.assertEqual(w.step_safety, 0.9)
+        self.assertEqual(w.contact_iterations, 200)
+        self.assertEqual(w.contact_tolerance, 1e-3)
+        self.assertEqual(w.max_substeps, 1000000)
+        self.assertEqual(w.allow_unstable_step, 0)
+        b = lfem.BodyDef.default()
+        self.assertEqual(b.type, lfem.BodyType.DEFORMABLE)
+        self.assertEqual(b.model, lfem.Model.PAPER)
+        self.assertEqual(b.young_modulus, 1e6)
+        self.assertEqual(b.poisson_ratio, 0.3)
+        self.assertEqual(b.density, 1000.0)
+        self.assertEqual(b.friction, 0.5)
+        self.assertEqual(b.category_bits, 1)
+        self.assertEqual(b.mask_bits, 0xFFFFFFFF)
+        self.assertIsNone(b.user_data)
+        s = lfem.ShapeDef.default()
+        self.assertEqual(s.type, lfem.ShapeType.PLANE)
+        self.assertEqual(list(s.center), [0.0, 0.0, 0.0])
+        self.assertEqual(list(s.rotation), [1.0, 0.0, 0.0, 0.0])
+        self.assertEqual(list(s.half_extents), [0.5, 0.5, 0.5])
+        self.assertEqual((s.radius, s.half_length), (0.5, 0.5))
+        self.assertFalse(s.points)
+
+    def test_version(self):
+        self.assertEqual(lfem.version(),
+                         (lfem.VERSION_MAJOR, lfem.VERSION_MINOR, lfem.VERSION_PATCH))
+        self.assertEqual(lfem.version_string(), "%d.%d.%d" % lfem.version())
+        self.assertTrue(lfem.status_string(lfem.Status.INVALID_MESH).startswith("LFEM_INVALID_MESH"))
+
+
+class Physics(unittest.TestCase):
+    def test_falling_block_follows_free_fall(self):
+        # Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each
+        # node follows z0 - g t^2/2 with velocity -g t, the momentum is -m g t and the kinetic
+        # energy m (g t)^2/2 with m = rho V. Central differences are exact on a quadratic
+        # trajectory; only round-off remains (~1e-16 per sub-step on values of order 1), far
+        # below the tolerances (1e-11 absolute, 1e-10 relative).
+        mass = DENSITY * SIZE[0] * SIZE[1] * SIZE[2]
+        for model in lfem.Model:
+            with self.subTest(model=model.name), lfem.World() as world:
+                block = add_block(world, model)
+                start = world.positions(block).copy()
+                self.assertEqual(start.shape, (24, 3))
+                self.assertAlmostEqual(world.mass(block), mass, delta=1e-12 * mass)
+                x = np.empty_like(start)
+                for call in range(1, 51):
+                    world.step(0.01)
+                    if call % 10:
+                        continue
+                    stats = world.stats
+                    t = stats.time
+                    self.assertAlmostEqual(t, 0.01 * call, delta=1e-12)
+                    world.positions(block, out=x)
+                    v = world.velocities(block)
+                    np.testing.assert_allclose(x[:, :2], start[:, :2], rtol=0, atol=1e-11)
+                    np.testing.assert_allclose(x[:, 2], start[:, 2] - 0.5 * G * t * t,
+                                               rtol=0, atol=1e-11)
+                    np.testing.assert_allclose(v[:, 2], -G * t, rtol=0, atol=1e-11)
+                    np.testing.assert_allclose(v[:, :2], 0.0, rtol=0, atol=1e-11)
+                    self.assertAlmostEqual(stats.linear_momentum[2], -mass * G * t,
+                                           delta=1e-10 * mass * G * t)
+                    ke = 0.5 * mass * (G * t) ** 2
+                    self.assertAlmostEqual(stats.kinetic_energy, ke, delta=1e-10 * ke)
+                    self.assertLessEqual(abs(stats.strain_energy), 1e-10 * ke)
+                    linear, _ = world.momentum(block)
+                    self.assertAlmostEqual(linear[2], -mass * G * t, delta=1e-10 * mass * G * t)
+                self.assertEqual(world.stats.body_count, 1)
+
+    def test_sideways_gravity_and_mesh_views(self):
+        mesh = lfem.Mesh.box(SIZE, (3, 2, 1))
+        self.assertEqual(mesh.node_count, 24)
+        self.assertEqual(mesh.tet_count, 36)
+        p = mesh.positions
+        self.assertTrue(np.all(p >= 0) and np.all(p <= np.array(SIZE)))
+        self.assertEqual(mesh.tets.shape, (36, 4))
+        self.assertLess(int(mesh.tets.max()), 24)
+        with lfem.World() as world:
+            block = add_block(world, lfem.Model.COROTATIONAL)
+            world.set_gravity((2.0, 0.0, 0.0))
+            start = world.positions(block)
+            world.step(0.3)
+            t = world.stats.time
+            x = world.positions(block)
+            np.testing.assert_allclose(x[:, 0], start[:, 0] + t * t, rtol=0, atol=1e-11)
+            np.testing.assert_allclose(x[:, 2], start[:, 2], rtol=0, atol=1e-11)
+            self.assertGreater(world.stable_step, 0.0)
+            self.assertTrue(math.isfinite(world.stable_step))
+
+
+class Errors(unittest.TestCase):
+    def test_bad_arguments_raise_status_and_message(self):
+        with lfem.World() as world:
+            add_block(world, lfem.Model.PAPER)
+            before = bytes(world.stats)
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.step(-1.0)
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+            self.assertTrue(cm.exception.message.startswith("lfem_world_step"), cm.exception.message)
+            self.assertIn("dt", cm.exception.message)
+            self.assertIn("INVALID_ARGUMENT", str(cm.exception))
+            self.assertEqual(bytes(world.stats), before, "a failed call changed the world")
+
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.step(float("nan"))
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+
+            d = lfem.BodyDef.default()
+            d.poisson_ratio = 0.5
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.create_body(d)
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+            self.assertTrue(cm.exception.message.startswith("lfem_body_create"))
+
+            # An inverted tet, then the same tet correctly oriented.
+            body = world.create_body()
+            nodes = [(0, 0, 0), (0, 1, 0), (1, 0, 0), (0, 0, 1)]
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.add_mesh_arrays(body, nodes, [(0, 1, 2, 3)])
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_MESH)
+            self.assertTrue(cm.exception.message.startswith("lfem_body_add_mesh"))
+            self.assertEqual(world.node_count(body), 0)
+            world.add_mesh_arrays(body, nodes, [(0, 2, 1, 3)])
+            self.assertEqual((world.node_count(body), world.tet_count(body)), (4, 1))
+
+        bad = lfem.WorldDef.default()
+        bad.step_safety = 1.5
+        with self.assertRaises(lfem.LfemError) as cm:
+            lfem.World(bad)
+        self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+        self.assertIn("step_safety", cm.exception.message)
+
+        with self.assertRaises(lfem.LfemError) as cm:
+            lfem.Mesh.load_gmsh("/nonexistent/lfem/mesh.msh")
+        self.assertEqual(cm.exception.status, lfem.Status.IO_ERROR)
+        with self.assertRaises(lfem.LfemError) as cm:
+            lfem.Mesh.box(SIZE, (0, 2, 1))
+        self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+
+    def test_null_pointers_are_refused(self):
+        # Straight through the raw declarations: NULL is answered, never a crash.
+        with self.assertRaises(lfem.LfemError) as cm:
+            lfem.native.lfem_world_step(None, 0.01)
+        self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+        self.assertEqual(lfem.last_error(), cm.exception.message)
+        with self.assertRaises(lfem.LfemError) as cm:
+            lfem.native.lfem_world_query_contacts(None, None, 0, None)
+        self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+
+    def test_destroyed_and_foreign_handles_are_refused(self):
+        with lfem.World() as world, lfem.World() as other, lfem.World() as third:
+            block = add_block(world, lfem.Model.PAPER)
+            copy = lfem.Body(block.index, block.generation)
+            self.assertTrue(world.is_valid(block))
+            world.destroy_body(block)
+            self.assertFalse(world.is_valid(copy))
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.positions(copy)
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_HANDLE)
+            self.assertTrue(cm.exception.message.startswith("lfem_body_get_"))
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.destroy_body(copy)
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_HANDLE)
+            self.assertEqual(world.stats.body_count, 0)
+
+            fresh = world.create_body()
+            self.assertTrue(world.is_valid(fresh))
+            self.assertFalse(world.is_valid(copy))
+            self.assertNotEqual(fresh, copy)
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.node_count(lfem.Body())
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_HANDLE)
+
+            foreign = add_block(other, lfem.Model.PAPER)
+            with self.assertRaises(lfem.LfemError) as cm:
+                third.positions(foreign)
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_HANDLE)
+
+    def test_closed_world_is_refused(self):
+        world = lfem.World()
+        world.close()
+        with self.assertRaises(ValueError):
+            world.step(0.01)
+        world.close()  # twice is harmless
+
+    def test_short_buffers_are_refused_untouched(self):
+        with lfem.World() as world:
+            block = add_block(world, lfem.Model.PAPER)
+            n = world.node_count(block)
+            short = np.full((n - 1, 3), 7.0)
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.positions(block, out=short)
+            self.assertEqual(cm.exception.status, lfem.Status.BUFFER_TOO_SMALL)
+            self.assertTrue(np.all(short == 7.0))
+            long = np.full((n + 2, 3), 7.0)
+            self.assertIs(world.positions(block, out=long), long)
+            self.assertTrue(np.all(long[n:] == 7.0))
+            np.testing.assert_array_equal(long[:n], world.positions(block))
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.positions(block, out=np.zeros((n, 3), dtype=np.float32))
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+
+
+class Contacts(unittest.TestCase):
+    def test_two_bar_impact_matches_the_one_dimensional_wave_solution(self):
+        # The paper's Fig. 3: steel bars of L = 0.254 m, sections 0.0254 x 0.0254 and
+        # 0.0254 x 0.0224 m, approaching at 5.1359 m/s each across a gap of 2.54e-4 m, nu = 0, no
+        # gravity, no friction. 1-D wave solution: the force plateau Z1 Z2/(Z1 + Z2) 2v
+        # (Z = rho c A, c = sqrt(E/rho)) over 2L/c gives an impulse of 12.375 N s and final
+        # velocities -4.491 and +5.781 m/s. Tolerances as in tests/physics/test_two_bar_impact.cpp:
+        # 2 % on the impulse (mesh dispersion, 40 elements per bar), 3 % on the velocities;
+        # forces and momentum changes are the same multipliers, equal to round-off.
+        L, b, h1, h2, gap = 0.254, 0.0254, 0.0254, 0.0224, 2.54e-4
+        v0, rho, E = 5.1359, 7844.0, 206.82e9
+        wd = lfem.WorldDef.default()
+        wd.gravity[:] = (0.0, 0.0, 0.0)
+        with lfem.World(wd) as world:
+            def bar(size, offset, v):
+                mesh = lfem.Mesh.box(size, (40, 4, 4))
+                mesh.translate(offset)
+                d = lfem.BodyDef.default()
+                d.young_modulus, d.poisson_ratio, d.density, d.friction = E, 0.0, rho, 0.0
+                d.linear_velocity[:] = (v, 0.0, 0.0)
+                body = world.create_body(d)
+                world.add_mesh(body, mesh)
+                return body
+
+            bar1 = bar((L, b, h1), (-L - gap / 2, -b / 2, -h1 / 2), v0)
+            bar2 = bar((L, b, h2), (gap / 2, -b / 2, -h2 / 2), -v0)
+            m1, m2 = world.mass(bar1), world.mass(bar2)
+            self.assertAlmostEqual(m1, rho * L * b * h1, delta=1e-12 * m1)
+            p10, p20 = world.momentum(bar1)[0][0], world.momentum(bar2)[0][0]
+            h = 0.9 * world.stable_step
+            impulse, seen = 0.0, 0
+            while world.stats.time < 200e-6:
+                world.step(h)
+                c = world.contacts()
+                seen = max(seen, c.size)
+                if c.size:
+                    self.assertTrue(np.all(c["shape"] == lfem.NO_SHAPE))
+                    on_bar2 = c["body_a"]["index"] == bar2.index
+                    impulse += h * np.sum(np.where(on_bar2, 1.0, -1.0) * c["force"][:, 0])
+            self.assertGreater(seen, 0, "the bars never touched")
+            p1, p2 = world.momentum(bar1)[0][0], world.momentum(bar2)[0][0]
+            self.assertAlmostEqual(impulse, 12.375, delta=0.02 * 12.375)
+            self.assertAlmostEqual(impulse, p2 - p20, delta=1e-9 * 12.375)
+            self.assertAlmostEqual(impulse, p10 - p1, delta=1e-9 * 12.375)
+            self.assertAlmostEqual(p1 / m1, -4.491, delta=0.03 * 4.491)
+            self.assertAlmostEqual(p2 / m2, 5.781, delta=0.03 * 5.781)
+
+    def test_block_on_a_static_plane_touches_the_shape(self):
+        # A block released 1 mm above a static plane (z = 0, normal +z): after 0.1 s it has
+        # landed; every contact names the floor's shape 0, its normal is +z and its force pushes
+        # up (frictionless: along the normal). A buffer one short is refused untouched.
+        with lfem.World() as world:
+            fd = lfem.BodyDef.default()
+            fd.type = lfem.BodyType.STATIC
+            floor = world.create_body(fd)
+            world.add_shape(floor)
+            mesh = lfem.Mesh.box(SIZE, (3, 2, 1))
+            mesh.translate((0.0, 0.0, 0.001))
+            d = lfem.BodyDef.default()
+            d.young_modulus, d.density, d.friction, d.damping = 2e5, DENSITY, 0.0, 5.0
+            block = world.create_body(d)
+            world.add_mesh(block, mesh)
+            world.step(0.1)
+            c = world.contacts()
+            self.assertGreater(c.size, 0, "the block did not land")
+            self.assertEqual(world.contact_count(), c.size)
+            self.assertTrue(np.all(c["body_a"]["index"] == block.index))
+            self.assertTrue(np.all(c["body_b"]["index"] == floor.index))
+            self.assertTrue(np.all(c["shape"] == 0))
+            np.testing.assert_allclose(c["normal"], np.tile([0.0, 0.0, 1.0], (c.size, 1)),
+                                       rtol=0, atol=1e-12)
+            self.assertTrue(np.all(c["force"][:, 2] >= 0))
+            np.testing.assert_allclose(c["force"][:, :2], 0.0, rtol=0, atol=1e-9)
+            if c.size > 1:
+                short = np.zeros(c.size - 1, dtype=lfem.CONTACT_DTYPE)
+                short["node"] = 12345
+                with self.assertRaises(lfem.LfemError) as cm:
+                    world.contacts(out=short)
+                self.assertEqual(cm.exception.status, lfem.Status.BUFFER_TOO_SMALL)
+                self.assertTrue(np.all(short["node"] == 12345))
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.add_shape(block)
+            self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
+            self.assertTrue(cm.exception.message.startswith("lfem_body_add_shape"))
+
+    def test_contact_query_of_a_single_body_is_empty(self):
+        # A lone falling block touches nothing: the query gives a count of 0, an empty structured
+        # array, and leaves a caller's buffer alone.
+        with lfem.World() as world:
+            add_block(world, lfem.Model.NEO_HOOKEAN)
+            world.step(0.05)
+            self.assertEqual(world.contact_count(), 0)
+            c = world.contacts()
+            self.assertEqual(c.shape, (0,))
+            self.assertEqual(c.dtype, lfem.CONTACT_DTYPE)
+            self.assertEqual(c["normal"].shape, (0, 3))
+            buf = np.zeros(4, dtype=lfem.CONTACT_DTYPE)
+            buf["node"] = 12345
+            self.assertEqual(world.contacts(out=buf).shape, (0,))
+            self.assertTrue(np.all(buf["node"] == 12345))
+            self.assertEqual(world.contacts(out=buf[:0]).shape, (0,))
+            self.assertEqual(world.stats.contact_count, 0)
+            with self.assertRaises(lfem.LfemError):
+                world.contacts(out=np.zeros(4, dtype=np.float64))
+
+
+if __name__ == "__main__":
+    unittest.main()
