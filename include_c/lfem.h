@@ -168,6 +168,9 @@ typedef enum lfem_body_type {
     LFEM_BODY_DEFORMABLE = 0, /* finite elements, moves and deforms */
     LFEM_BODY_STATIC = 1,     /* never moves (a floor, a wall) */
     LFEM_BODY_KINEMATIC = 2,  /* moves rigidly with a prescribed velocity, unaffected by forces */
+    LFEM_BODY_RIGID = 3,      /* the paper's global translation and rotation alone (eq. 2, no
+                                 local deformation): mass and inertia from its tet mesh and
+                                 density, moved by gravity, node forces and contacts */
     LFEM_BODY_TYPE_FORCE32 = 0x7fffffff
 } lfem_body_type;
 
@@ -268,8 +271,8 @@ LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, l
 LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
                                                     double* out, uint32_t tet_capacity);
 
-/* The body's global rotation (row-major 3x3) of the "paper" model: the rotation of the
- * floating frame, re-fitted to the nodes. Identity for the other models. */
+/* The body's global rotation (row-major 3x3): a rigid body's rotation, or the floating frame
+ * of the "paper" model (re-fitted to the nodes). Identity otherwise. */
 LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body body,
                                             double out[9]);
 

@@ -17,7 +17,7 @@ void check_body_def(const lfem_body_def& d) {
     require(d.internal_value == body_def_cookie,
             "def was not initialised by lfem_body_def_default()");
     require(d.type == LFEM_BODY_DEFORMABLE || d.type == LFEM_BODY_STATIC ||
-                d.type == LFEM_BODY_KINEMATIC,
+                d.type == LFEM_BODY_KINEMATIC || d.type == LFEM_BODY_RIGID,
             "def->type " + std::to_string(int(d.type)) + " is not a body type");
     require(d.model == LFEM_MODEL_PAPER || d.model == LFEM_MODEL_COROTATIONAL ||
                 d.model == LFEM_MODEL_NEO_HOOKEAN || d.model == LFEM_MODEL_LINEAR,
@@ -231,7 +231,8 @@ LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body b
         const double* q = b.state.rotation;
         const Mat3 R = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
         for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) out[3 * r + c] = b.def.model == LFEM_MODEL_PAPER ? R(r, c) : (r == c);
+            for (int c = 0; c < 3; ++c)
+                out[3 * r + c] = (b.is_rigid() || (b.is_deformable() && b.def.model == LFEM_MODEL_PAPER)) ? R(r, c) : (r == c);
     });
 }
 

@@ -8,6 +8,8 @@
 
 namespace lfem {
 
+struct RigidResponse;  // rigid/rigid_body.h
+
 struct ContactBody {
     uint32_t slot = 0;                 // the body's slot in the world (for handles)
     const uint32_t* triangles = nullptr; // boundary triangles, 3 node indices each
@@ -16,7 +18,8 @@ struct ContactBody {
     uint32_t node_count = 0;
     const double* x_start = nullptr;   // 3 per node: positions at the start of the step, x^n
     double* x = nullptr;               // 3 per node: predicted x*, corrected in place to x^{n+1}
-    const double* inv_mass = nullptr;  // per node: 1/mhat (m per N); nullptr = immovable body
+    const double* inv_mass = nullptr;  // per node: 1/mhat (m per N); nullptr = no node moves alone
+    RigidResponse* rigid = nullptr;    // a rigid body: its nodes move together (x holds x*)
     double friction = 0;               // Coulomb coefficient of the body's surface
     uint32_t category = 1, mask = ~0u; // collision filter
     double edge_length = 0;            // mean boundary edge length (m): sets the tolerances
@@ -30,7 +33,7 @@ struct ContactBody {
 // mask, and at least one of them can move.
 inline bool bodies_may_touch(const ContactBody& a, const ContactBody& b) {
     return (a.category & b.mask) != 0 && (b.category & a.mask) != 0 &&
-           (a.inv_mass != nullptr || b.inv_mass != nullptr);
+           (a.inv_mass != nullptr || b.inv_mass != nullptr || a.rigid != nullptr || b.rigid != nullptr);
 }
 
 // Friction of a pair: the geometric mean, so a frictionless surface (mu = 0) makes every

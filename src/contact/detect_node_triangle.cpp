@@ -14,14 +14,14 @@ namespace {
 //   (possibly inactive) constraint, so resting contacts do not flicker in and out;
 // - depth allowance: a node that starts the step behind a face is that face's only as deep as
 //   the previous step left that (node, body) pair: a kept overlap or the solver's residual,
-//   times 1.25, plus 1e-6 l. Any deeper and the node is not inside the body at all:
+//   times 1.25, plus 1e-3 l. Any deeper and the node is not inside the body at all:
 //   above a thin plate, it lies 'behind' the plate's far face by the plate's thickness plus
 //   its height, and pulling it through would be a disaster. Paths that cross a face in this
 //   step are found by the crossing test, not by depth;
 // - edge tolerance: barycentric weights down to -0.01 count as inside, so nodes on a shared
 //   edge do not drop out of both neighbouring faces (DESIGN.md section 6).
 constexpr double kCaptureBand = 0.05;
-constexpr double kResidualDepth = 1e-6;
+constexpr double kResidualDepth = 1e-3;
 // Bodies created overlapping: a node up to 0.5 l behind a face it was never in contact with is
 // taken as inside (and let out gradually) only if nothing of the other body lies between it
 // and the face, i.e. the face really is the nearest way out.

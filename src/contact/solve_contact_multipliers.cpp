@@ -4,49 +4,91 @@
 #include <cmath>
 
 #include "fem/tet_element.h"
+#include "rigid/rigid_body.h"
 
 namespace lfem {
 namespace {
 
+// One of the four points of a constraint (the node, or a triangle node): a free node that the
+// solve moves directly, or a point of a rigid body, moved through the body's centre and
+// rotation corrections (its position is evaluated from them when asked).
+struct PointRef {
+    double* x = nullptr;         // free node: its position (x*, corrected in place)
+    const double* x0 = nullptr;  // position at the start of the step
+    double w = 0;                // free node: 1/mhat
+    RigidResponse* rigid = nullptr;
+    Vec3 base = Vec3::Zero();    // rigid point: its predicted position
+    Vec3 arm = Vec3::Zero();     // rigid point: predicted position minus predicted centre
+
+    Vec3 position() const {
+        if (rigid) return base + rigid->dc + rigid->dtheta.cross(arm);
+        return Vec3(x[0], x[1], x[2]);
+    }
+    // Inverse effective mass along unit direction n.
+    double response(const Vec3& n) const {
+        if (rigid) {
+            const Vec3 rn = arm.cross(n);
+            return rigid->inv_mass + rn.dot(rigid->inv_inertia * rn);
+        }
+        return w;
+    }
+    // Apply the force increment d (N) to this point; returns how far it moved.
+    double push(const Vec3& d) {
+        if (rigid) {
+            const Vec3 before = position();
+            rigid->dc += rigid->inv_mass * d;
+            rigid->dtheta += rigid->inv_inertia * arm.cross(d);
+            return (position() - before).cwiseAbs().maxCoeff();
+        }
+        for (int k = 0; k < 3; ++k) x[k] += w * d[k];
+        return w * d.cwiseAbs().maxCoeff();
+    }
+};
+
 // The pieces of one constraint the sweeps need, resolved once.
 struct Pair {
-    double* xp;          // the node
-    const double* xp0;   // its step-start position
-    double wp;           // its 1/mhat
-    double* xk[3];       // the triangle's nodes
-    const double* xk0[3];
-    double wk[3];        // N_k / mhat_k
-    double N[3];         // barycentric weights (1 - t1 - t2, t2, t1)
-    double H;            // 1/mhat_node + sum N_k^2 / mhat_k: the pair's scalar block of G M^-1 G^T
+    PointRef node;
+    PointRef tri[3];
+    double N[3];   // barycentric weights (1 - t1 - t2, t2, t1)
+    double H;      // the pair's scalar block of G Mhat^-1 G^T along the normal
     double mu;
 };
 
-// Move the pair's nodes by Mhat^-1 G_j^T d: the node by +d/mhat, triangle node k by
-// -N_k d/mhat_k. Linear momentum is kept exactly. Returns the largest move.
-double apply(Pair& q, const Vec3& d) {
-    double largest = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        q.xp[k] += q.wp * d[k];
-        largest = std::max(largest, std::fabs(q.wp * d[k]));
+PointRef point_of(const ContactBody& b, uint32_t i) {
+    PointRef p;
+    p.x = b.x + 3 * std::size_t(i);
+    p.x0 = b.x_start + 3 * std::size_t(i);
+    if (b.rigid) {
+        p.rigid = b.rigid;
+        p.base = Vec3(p.x[0], p.x[1], p.x[2]);
+        p.arm = p.base - b.rigid->center;
+    } else {
+        p.w = b.inv_mass ? b.inv_mass[i] : 0.0;
     }
+    return p;
+}
+
+// Move the pair's points by Mhat^-1 G_j^T d: the node by +d, triangle node k by -N_k d.
+// Linear momentum is kept exactly. Returns the largest move.
+double apply(Pair& q, const Vec3& d) {
+    double largest = q.node.push(d);
     for (int v = 0; v < 3; ++v)
-        for (int k = 0; k < 3; ++k) {
-            const double move = q.N[v] * q.wk[v] * d[k];
-            q.xk[v][k] -= move;
-            largest = std::max(largest, std::fabs(move));
-        }
+        if (q.N[v] != 0.0) largest = std::max(largest, q.tri[v].push(-q.N[v] * d));
     return largest;
 }
 
-// Gap n . (x_node - sum N_k x_k) of the pair's current positions.
-double gap_of(const Pair& q, const Vec3& n) {
-    double g = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        double s = q.xp[k];
-        for (int v = 0; v < 3; ++v) s -= q.N[v] * q.xk[v][k];
-        g += n[k] * s;
-    }
-    return g;
+// n . (x_node - sum N_k x_k) and the relative displacement over the step.
+Vec3 relative_position(const Pair& q) {
+    Vec3 r = q.node.position();
+    for (int v = 0; v < 3; ++v)
+        if (q.N[v] != 0.0) r -= q.N[v] * q.tri[v].position();
+    return r;
+}
+Vec3 relative_motion(const Pair& q) {
+    Vec3 r = q.node.position() - Vec3(q.node.x0);
+    for (int v = 0; v < 3; ++v)
+        if (q.N[v] != 0.0) r -= q.N[v] * (q.tri[v].position() - Vec3(q.tri[v].x0));
+    return r;
 }
 
 }  // namespace
@@ -62,27 +104,31 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         const ContactBody& a = bodies[body_of_slot[r.body_a]];
         const ContactBody& b = bodies[body_of_slot[r.body_b]];
         Pair& q = pairs[j];
-        q.xp = a.x + 3 * std::size_t(r.node);
-        q.xp0 = a.x_start + 3 * std::size_t(r.node);
-        q.wp = a.inv_mass ? a.inv_mass[r.node] : 0.0;
+        const Vec3 n(r.normal);
+        q.node = point_of(a, r.node);
         q.N[0] = 1.0 - r.t1 - r.t2;
         q.N[1] = r.t2;
         q.N[2] = r.t1;
-        q.H = q.wp;
+        q.H = q.node.response(n);
         if (r.shape != UINT32_MAX) {
             // A rigid shape: one immovable point, the touched surface point, moving with the
             // shape from its start to its end position (friction slips relative to it).
-            for (int v = 0; v < 3; ++v) {
-                q.xk[v] = r.point_end;
-                q.xk0[v] = r.point_start;
-                q.wk[v] = 0.0;
-            }
+            q.N[0] = 1.0, q.N[1] = q.N[2] = 0.0;
+            q.tri[0].x = r.point_end;
+            q.tri[0].x0 = r.point_start;
         } else {
             for (int v = 0; v < 3; ++v) {
-                q.xk[v] = b.x + 3 * std::size_t(r.triangle[v]);
-                q.xk0[v] = b.x_start + 3 * std::size_t(r.triangle[v]);
-                q.wk[v] = b.inv_mass ? b.inv_mass[r.triangle[v]] : 0.0;
-                q.H += q.N[v] * q.N[v] * q.wk[v];
+                q.tri[v] = point_of(b, r.triangle[v]);
+                q.H += q.N[v] * q.N[v] * q.tri[v].response(n);
+            }
+            // Two weights on one rigid body add up before squaring: the exact block is
+            // (sum N_k J_k) M^-1 (sum N_k J_k)^T; with the centre and arm of a barycentric
+            // point of a rigid triangle, it is the response at that point.
+            if (b.rigid) {
+                PointRef p = q.tri[0];
+                p.base = Vec3::Zero(), p.arm = Vec3::Zero();
+                for (int v = 0; v < 3; ++v) p.base += q.N[v] * q.tri[v].base, p.arm += q.N[v] * q.tri[v].arm;
+                q.H = q.node.response(n) + p.response(n);
             }
         }
         q.mu = pair_friction(a.friction, b.friction);
@@ -112,19 +158,14 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
             const Vec3 n(r.normal);
             // Normal: lambda_n <- max(0, lambda_n - (g - g_target)/H); the clamp is the
             // paper's tension release.
-            const double g = gap_of(q, n) + r.offset;
+            const double g = n.dot(relative_position(q)) + r.offset;
             const double lambda_n = std::max(0.0, r.lambda_n - g / q.H);
             largest = std::max(largest, apply(q, (lambda_n - r.lambda_n) * n));
             r.lambda_n = lambda_n;
             if (q.mu == 0.0) continue;  // frictionless: no tangential work at all
             // Friction: the tangential slip of the node relative to the triangle over the step,
             // cancelled by the stick trial, then returned onto the Coulomb cone (eq. 7).
-            Vec3 slip;
-            for (int k = 0; k < 3; ++k) {
-                double s = q.xp[k] - q.xp0[k];
-                for (int v = 0; v < 3; ++v) s -= q.N[v] * (q.xk[v][k] - q.xk0[v][k]);
-                slip[k] = s;
-            }
+            Vec3 slip = relative_motion(q);
             slip -= n * n.dot(slip);
             const Vec3 lt_old(r.lambda_t);
             Vec3 lt = lt_old - slip / q.H;
@@ -139,7 +180,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         if (largest <= tolerance) break;
     }
     for (std::size_t j = 0; j < records.size(); ++j) {
-        records[j].gap_after = gap_of(pairs[j], Vec3(records[j].normal));
+        records[j].gap_after = Vec3(records[j].normal).dot(relative_position(pairs[j]));
         result.max_penetration = std::max(result.max_penetration, -(records[j].gap_after + records[j].offset));
     }
     return result;

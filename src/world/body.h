@@ -27,6 +27,7 @@ struct BodyReference {
     double total_mass = 0;
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
+    double inertia[9] = {0};        // rigid bodies: inertia about the COM, reference frame
 
     uint32_t node_count() const { return uint32_t(mass.size()); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }
@@ -44,7 +45,8 @@ struct BodyState {
     double strain_energy = 0;      // J, at x
     double rotation[4] = {1, 0, 0, 0}; // paper model: global rotation (quaternion w,x,y,z)
     double angular_momentum[3] = {0, 0, 0}; // paper model: L of eq. (2) about the COM
-    double center[3] = {0, 0, 0};  // kinematic bodies: current centre
+    double center[3] = {0, 0, 0};  // kinematic bodies: current centre; rigid: centre of mass
+    double velocity[3] = {0, 0, 0}; // rigid bodies: velocity of the centre over the last step
     std::vector<double> shape_pose;  // 7 per rigid shape: its current placement
 };
 
@@ -60,6 +62,8 @@ struct Body {
     std::vector<RigidShape> shapes;           // rigid shapes (static and kinematic bodies)
 
     bool is_deformable() const { return def.type == LFEM_BODY_DEFORMABLE; }
+    bool is_rigid() const { return def.type == LFEM_BODY_RIGID; }
+    bool is_dynamic() const { return is_deformable() || is_rigid(); }  // moved by forces
     bool has_mesh() const { return !ref.mass.empty(); }
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
 };

@@ -198,12 +198,13 @@ void World::solve_contacts(double h) {
         cb.triangle_count = uint32_t(b.ref.boundary.size() / 3);
         // Slave nodes: every boundary node of a deformable body; only the edge and corner
         // nodes of a static or kinematic one (its flat faces are enforced by the other pass).
-        const std::vector<uint32_t>& slaves = b.is_deformable() ? b.ref.boundary_nodes : b.ref.feature_nodes;
+        const std::vector<uint32_t>& slaves = b.is_dynamic() ? b.ref.boundary_nodes : b.ref.feature_nodes;
         cb.nodes = slaves.data();
         cb.node_count = uint32_t(slaves.size());
         cb.x = b.state.x.data();
         cb.x_start = b.def.type == LFEM_BODY_STATIC ? b.state.x.data() : scratch_[i].x_start.data();
         cb.inv_mass = b.is_deformable() ? scratch_[i].inv_mass.data() : nullptr;
+        cb.rigid = b.is_rigid() ? &rigid_responses_[i] : nullptr;
         cb.friction = b.def.friction;
         cb.category = b.def.category_bits;
         cb.mask = b.def.mask_bits;
@@ -215,7 +216,7 @@ void World::solve_contacts(double h) {
                                                                  : b.state.shape_pose.data();
         contact_body_of_slot_[i] = uint32_t(contact_bodies_.size());
         contact_bodies_.push_back(cb);
-        movable += b.is_deformable();
+        movable += b.is_dynamic();
     }
     detected_.clear();
     counters_.solver_iterations = 0;
@@ -275,7 +276,7 @@ void World::solve_contacts(double h) {
 double World::step_velocity(uint32_t slot, uint32_t i, int k, double h) const {
     const Body& b = slots_[slot].body;
     if (b.is_deformable()) return scratch_[slot].v_old[3 * i + k];
-    if (b.def.type == LFEM_BODY_KINEMATIC)
+    if (b.def.type == LFEM_BODY_KINEMATIC || b.is_rigid())
         return (b.state.x[3 * i + k] - scratch_[slot].x_start[3 * i + k]) / h;
     return 0.0;
 }
@@ -290,6 +291,13 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         if (b.generation == 0 || !b.has_geometry()) continue;
         if (b.is_deformable()) {
             predict_positions(b, def_.gravity, h, scratch_[i]);
+        } else if (b.is_rigid()) {
+            scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
+            scratch_[i].support_torque[0] = b.state.center[0];  // the centre at the start
+            scratch_[i].support_torque[1] = b.state.center[1];
+            scratch_[i].support_torque[2] = b.state.center[2];
+            rigid_responses_.resize(slots_.size());
+            predict_rigid(b, def_.gravity, h, rigid_responses_[i]);
         } else if (b.def.type == LFEM_BODY_KINEMATIC) {
             scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
             scratch_[i].shape_pose_start.assign(b.state.shape_pose.begin(), b.state.shape_pose.end());
@@ -303,9 +311,22 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         if (r.active()) touched[r.body_a] = touched[r.body_b] = 1;
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         Body& b = slots_[i].body;
-        if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;
-        commit_step(b, def_.gravity, h, scratch_[i], touched[i] != 0, tally);
-        strain += b.state.strain_energy;
+        if (b.generation == 0 || !b.has_mesh()) continue;
+        if (b.is_deformable()) {
+            commit_step(b, def_.gravity, h, scratch_[i], touched[i] != 0, tally);
+            strain += b.state.strain_energy;
+        } else if (b.is_rigid()) {
+            tally.contact_work += commit_rigid(b, h, rigid_responses_[i]);
+            // Work of gravity and node forces on the moving centre (node forces' torques act
+            // through eq. 2; their work is booked with the translation only).
+            const Vec3 dc = Vec3(b.state.center) - Vec3(scratch_[i].support_torque);
+            Vec3 force = b.ref.total_mass * Vec3(def_.gravity);
+            for (std::size_t k = 0; k < b.node_force.size(); k += 3) force += Vec3(&b.node_force[k]);
+            tally.work += force.dot(dc);
+            tally.kinetic += rigid_kinetic_energy(b);
+            for (std::size_t k = 0; k < b.state.x.size(); ++k)
+                b.state.v_half[k] = (b.state.x[k] - scratch_[i].x_start[k]) / h;
+        }
     }
     kinetic = tally.kinetic;
     work += tally.work + tally.contact_work;
@@ -351,7 +372,7 @@ void World::step(double dt) {
     double start_energy = 0.0, scale = 0.0;
     for (const Slot& s : slots_) {
         const Body& b = s.body;
-        if (b.generation == 0 || !b.is_deformable() || !b.has_mesh()) continue;
+        if (b.generation == 0 || !b.is_dynamic() || !b.has_mesh()) continue;
         start_energy += b.state.strain_energy;
         for (uint32_t i = 0; i < b.ref.node_count(); ++i)
             for (int k = 0; k < 3; ++k)

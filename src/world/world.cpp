@@ -13,6 +13,7 @@
 #include "mesh/boundary.h"
 #include "mesh/mesh_check.h"
 #include "rigid/global_rotation.h"
+#include "rigid/rigid_body.h"
 
 namespace lfem {
 namespace {
@@ -84,6 +85,8 @@ uint32_t World::body_count() const {
 void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
                      const uint32_t* tets, uint32_t tet_count) {
     check_tet_mesh(positions, node_count, tets, tet_count);
+    if (body.is_rigid() && body.has_mesh())
+        throw Error(LFEM_INVALID_ARGUMENT, "a rigid body takes one mesh (give it all its parts at once)");
     const uint32_t old_nodes = body.ref.node_count();
     const uint32_t old_tets = body.ref.tet_count();
     if (uint64_t(old_nodes) + node_count > 0xFFFFFFF0ull ||
@@ -206,13 +209,26 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
         }
         compute_elastic_forces(candidate, state);
     }
+    if (candidate.is_rigid()) {
+        // The paper's global motion alone: centre of mass, rotation (identity: the reference
+        // is the mesh as given) and angular momentum L = I omega of the def's spin.
+        rigid_reference_inertia(candidate.ref, candidate.ref.inertia);
+        const Eigen::Matrix3d I = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(candidate.ref.inertia);
+        const Vec3 L = I * ang;
+        for (int k = 0; k < 3; ++k) {
+            state.center[k] = C[k];
+            state.velocity[k] = lin[k];
+            state.angular_momentum[k] = L[k];
+        }
+        state.rotation[0] = 1.0, state.rotation[1] = state.rotation[2] = state.rotation[3] = 0.0;
+    }
     // Commit: moves only from here on (no allocation, nothing can fail).
     body.ref = std::move(candidate.ref);
     body.state = std::move(state);
     body.node_mode = std::move(candidate.node_mode);
     body.prescribed_velocity = std::move(prescribed);
     body.node_force = std::move(forces);
-    if (body.is_deformable()) counters_.initial_energy += added_kinetic;
+    if (body.is_dynamic()) counters_.initial_energy += added_kinetic;
     counters_.scan_overlaps = true;
 }
 
@@ -262,6 +278,15 @@ double World::stable_step() const {
 void World::synchronized_velocities(const Body& body, double* out) const {
     const BodyState& s = body.state;
     const uint32_t n = body.ref.node_count();
+    if (body.is_rigid()) {
+        Vec3 V, omega;
+        rigid_synchronized_velocity(body, def_.gravity, V, omega);
+        for (uint32_t i = 0; i < n; ++i) {
+            const Vec3 v = V + omega.cross(Vec3(&s.x[3 * i]) - Vec3(s.center));
+            for (int k = 0; k < 3; ++k) out[3 * i + k] = v[k];
+        }
+        return;
+    }
     if (!body.is_deformable()) {
         // Static: at rest. Kinematic: rigid motion about the moving centre.
         const Vec3 lin(body.def.linear_velocity), ang(body.def.angular_velocity);
@@ -320,7 +345,14 @@ lfem_world_stats World::stats() const {
     st.max_penetration = counters_.max_penetration;
     std::vector<double> v;
     for_each_body([&](const Body& b, uint32_t) {
-        if (!b.is_deformable() || !b.has_mesh()) return;
+        if (!b.is_dynamic() || !b.has_mesh()) return;
+        if (b.is_rigid()) {
+            st.kinetic_energy += rigid_kinetic_energy(b);
+            double P[3], L[3];
+            body_momentum(b, P, L);
+            for (int k = 0; k < 3; ++k) st.linear_momentum[k] += P[k], st.angular_momentum[k] += L[k];
+            return;
+        }
         v.resize(b.state.v_half.size());
         synchronized_velocities(b, v.data());
         for (uint32_t i = 0; i < b.ref.node_count(); ++i)
@@ -344,7 +376,12 @@ namespace lfem {
 
 void World::body_momentum(const Body& b, double linear[3], double angular[3]) const {
     Vec3 P = Vec3::Zero(), L = Vec3::Zero();
-    if (b.is_deformable() && b.has_mesh()) {
+    if (b.is_rigid() && b.has_mesh()) {
+        Vec3 V, omega;
+        const Vec3 L_centre = rigid_synchronized_velocity(b, def_.gravity, V, omega);
+        P = b.ref.total_mass * V;
+        L = Vec3(b.state.center).cross(P) + L_centre;
+    } else if (b.is_deformable() && b.has_mesh()) {
         std::vector<double> v(b.state.v_half.size());
         synchronized_velocities(b, v.data());
         for (uint32_t i = 0; i < b.ref.node_count(); ++i) {

@@ -10,6 +10,7 @@
 #include "contact/contact_record.h"
 #include "contact/detect_node_triangle.h"
 #include "lfem.h"
+#include "rigid/rigid_body.h"
 #include "world/body.h"
 
 namespace lfem {
@@ -99,6 +100,7 @@ private:
     WorldCounters counters_;
     std::vector<ContactRecord> contacts_;
     std::vector<StepScratch> scratch_;
+    std::vector<RigidResponse> rigid_responses_;  // per slot, rigid bodies only
     std::vector<ContactBody> contact_bodies_;
     std::vector<uint32_t> contact_body_of_slot_;
     std::vector<ContactRecord> detected_;
