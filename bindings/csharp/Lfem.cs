@@ -34,6 +34,7 @@ namespace Lfem
         Deformable = 0, // finite elements, moves and deforms
         Static = 1,     // never moves (a floor, a wall)
         Kinematic = 2,  // moves rigidly with a prescribed velocity
+        Rigid = 3,      // global translation and rotation alone, moved by forces and contacts
     }
 
     public enum Model : int

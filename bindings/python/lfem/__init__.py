@@ -92,6 +92,7 @@ class BodyType(enum.IntEnum):
     DEFORMABLE = 0
     STATIC = 1
     KINEMATIC = 2
+    RIGID = 3
 
 
 class Model(enum.IntEnum):

@@ -31,6 +31,7 @@ pub type lfem_body_type = c_int;
 pub const LFEM_BODY_DEFORMABLE: lfem_body_type = 0;
 pub const LFEM_BODY_STATIC: lfem_body_type = 1;
 pub const LFEM_BODY_KINEMATIC: lfem_body_type = 2;
+pub const LFEM_BODY_RIGID: lfem_body_type = 3;
 
 pub type lfem_model = c_int;
 pub const LFEM_MODEL_PAPER: lfem_model = 0;

@@ -251,6 +251,8 @@ pub enum BodyType {
     Static,
     /// Moves rigidly with a prescribed velocity, unaffected by forces.
     Kinematic,
+    /// The paper's global translation and rotation alone: moved by forces and contacts.
+    Rigid,
 }
 
 /// The material model of a deformable body.
@@ -302,6 +304,7 @@ impl Default for BodyDef {
             body_type: match d.type_ {
                 sys::LFEM_BODY_STATIC => BodyType::Static,
                 sys::LFEM_BODY_KINEMATIC => BodyType::Kinematic,
+                sys::LFEM_BODY_RIGID => BodyType::Rigid,
                 _ => BodyType::Deformable,
             },
             model: match d.model {
@@ -331,6 +334,7 @@ impl BodyDef {
                 BodyType::Deformable => sys::LFEM_BODY_DEFORMABLE,
                 BodyType::Static => sys::LFEM_BODY_STATIC,
                 BodyType::Kinematic => sys::LFEM_BODY_KINEMATIC,
+                BodyType::Rigid => sys::LFEM_BODY_RIGID,
             },
             model: match self.model {
                 Model::Paper => sys::LFEM_MODEL_PAPER,
