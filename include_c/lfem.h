@@ -229,6 +229,15 @@ LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body,
                                         const double* positions, uint32_t node_count,
                                         const uint32_t* tets, uint32_t tet_count);
 
+/* Give a static or kinematic body a surface of triangles instead of tets (terrain, a wall, a
+ * ramp): 3 node indices per triangle, counter-clockwise seen from the side bodies touch (the
+ * normal (b-a)x(c-a) points towards them). Only one mesh per such body. Its boundary
+ * triangles are the triangles themselves. */
+LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body body,
+                                                 const double* positions, uint32_t node_count,
+                                                 const uint32_t* triangles,
+                                                 uint32_t triangle_count);
+
 LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body body,
                                               uint32_t* out);
 LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body,

@@ -108,6 +108,21 @@ LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body, const
     });
 }
 
+LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body body, const double* positions,
+                                                 uint32_t node_count, const uint32_t* triangles,
+                                                 uint32_t triangle_count) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        Body& b = w.body(body);
+        require_pointer(positions, "positions");
+        require_pointer(triangles, "triangles");
+        require(node_count >= 3, "node_count must be >= 3");
+        require(triangle_count >= 1, "triangle_count must be >= 1");
+        require_finite(positions, 3 * std::size_t(node_count), "positions");
+        w.add_triangle_mesh(b, positions, node_count, triangles, triangle_count);
+    });
+}
+
 LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body body, uint32_t* out) {
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(body);

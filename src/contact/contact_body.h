@@ -16,6 +16,7 @@ struct ContactBody {
     uint32_t triangle_count = 0;
     const uint32_t* nodes = nullptr;   // boundary nodes (the candidate slave nodes)
     uint32_t node_count = 0;
+    uint32_t total_nodes = 0;          // all nodes of the body (x has 3 per node)
     const double* x_start = nullptr;   // 3 per node: positions at the start of the step, x^n
     double* x = nullptr;               // 3 per node: predicted x*, corrected in place to x^{n+1}
     const double* inv_mass = nullptr;  // per node: 1/mhat (m per N); nullptr = no node moves alone

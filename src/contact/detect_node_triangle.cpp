@@ -240,7 +240,8 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
         const ContactBody& a = bodies[ai];
         // Outward normals of the body's boundary nodes at x*: area-weighted means of the
         // normals of the triangles around each node.
-        s.node_normals.assign(3 * std::size_t(a.node_count ? a.nodes[a.node_count - 1] + 1 : 0), 0.0);
+        if (a.node_count == 0) continue;  // no slave nodes (a flat static surface)
+        s.node_normals.assign(3 * std::size_t(a.total_nodes), 0.0);
         for (uint32_t t = 0; t < a.triangle_count; ++t) {
             const uint32_t* tri = &a.triangles[3 * t];
             const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));

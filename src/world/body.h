@@ -29,7 +29,7 @@ struct BodyReference {
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
     double inertia[9] = {0};        // rigid bodies: inertia about the COM, reference frame
 
-    uint32_t node_count() const { return uint32_t(mass.size()); }
+    uint32_t node_count() const { return uint32_t(X.size() / 3); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }
 };
 
@@ -64,7 +64,7 @@ struct Body {
     bool is_deformable() const { return def.type == LFEM_BODY_DEFORMABLE; }
     bool is_rigid() const { return def.type == LFEM_BODY_RIGID; }
     bool is_dynamic() const { return is_deformable() || is_rigid(); }  // moved by forces
-    bool has_mesh() const { return !ref.mass.empty(); }
+    bool has_mesh() const { return !ref.X.empty(); }  // tets, or a static triangle surface
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
 };
 

@@ -201,6 +201,7 @@ void World::solve_contacts(double h) {
         const std::vector<uint32_t>& slaves = b.is_dynamic() ? b.ref.boundary_nodes : b.ref.feature_nodes;
         cb.nodes = slaves.data();
         cb.node_count = uint32_t(slaves.size());
+        cb.total_nodes = b.ref.node_count();
         cb.x = b.state.x.data();
         cb.x_start = b.def.type == LFEM_BODY_STATIC ? b.state.x.data() : scratch_[i].x_start.data();
         cb.inv_mass = b.is_deformable() ? scratch_[i].inv_mass.data() : nullptr;

@@ -28,6 +28,48 @@ uint32_t next_generation() {
     return g;
 }
 
+// From the boundary triangles: the boundary nodes (contact slaves), the mean edge length
+// (contact tolerances) and the feature nodes.
+void compute_surface_data(BodyReference& ref) {
+    std::vector<uint8_t> on_boundary(ref.X.size() / 3, 0);
+    double edges = 0.0;
+    for (std::size_t t = 0; t < ref.boundary.size(); t += 3)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t i = ref.boundary[t + v], j = ref.boundary[t + (v + 1) % 3];
+            on_boundary[i] = 1;
+            edges += (Vec3(&ref.X[3 * i]) - Vec3(&ref.X[3 * j])).norm();
+        }
+    ref.edge_length = edges / double(ref.boundary.size());
+    ref.boundary_nodes.clear();
+    for (uint32_t i = 0; i < on_boundary.size(); ++i)
+        if (on_boundary[i]) ref.boundary_nodes.push_back(i);
+    // Feature nodes: where the surface bends by more than 15 degrees (edges, corners). A
+    // node inside a flat face of an immovable body adds nothing the other body's nodes do
+    // not already enforce, and as a second, redundant support it makes the load jump
+    // between the two from step to step (a soft cube resting on a floor shook at 1e-4 m/s
+    // with them, 2e-6 m/s without).
+    std::vector<double> normal(ref.X.size(), 0.0), face(3 * (ref.boundary.size() / 3));
+    for (std::size_t t = 0; t < ref.boundary.size(); t += 3) {
+        const uint32_t* f = &ref.boundary[t];
+        const Vec3 n = (Vec3(&ref.X[3 * f[1]]) - Vec3(&ref.X[3 * f[0]]))
+                           .cross(Vec3(&ref.X[3 * f[2]]) - Vec3(&ref.X[3 * f[0]]));
+        for (int k = 0; k < 3; ++k) face[t + k] = n[k];
+        for (int v = 0; v < 3; ++v)
+            for (int k = 0; k < 3; ++k) normal[3 * f[v] + k] += n[k];
+    }
+    std::vector<uint8_t> feature(on_boundary.size(), 0);
+    const double cos15 = std::cos(15.0 * 3.14159265358979323846 / 180.0);
+    for (std::size_t t = 0; t < ref.boundary.size(); t += 3)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t i = ref.boundary[t + v];
+            if (Vec3(&normal[3 * i]).normalized().dot(Vec3(&face[t]).normalized()) < cos15)
+                feature[i] = 1;
+        }
+    ref.feature_nodes.clear();
+    for (uint32_t i = 0; i < feature.size(); ++i)
+        if (feature[i]) ref.feature_nodes.push_back(i);
+}
+
 }  // namespace
 
 void World::set_gravity(const double g[3]) {
@@ -102,45 +144,7 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     std::vector<uint32_t> boundary = extract_boundary_triangles(tets, tet_count);
     for (uint32_t& v : boundary) v += old_nodes;
     ref.boundary.insert(ref.boundary.end(), boundary.begin(), boundary.end());
-    {
-        std::vector<uint8_t> on_boundary(ref.X.size() / 3, 0);
-        double edges = 0.0;
-        for (std::size_t t = 0; t < ref.boundary.size(); t += 3)
-            for (int v = 0; v < 3; ++v) {
-                const uint32_t i = ref.boundary[t + v], j = ref.boundary[t + (v + 1) % 3];
-                on_boundary[i] = 1;
-                edges += (Vec3(&ref.X[3 * i]) - Vec3(&ref.X[3 * j])).norm();
-            }
-        ref.edge_length = edges / double(ref.boundary.size());
-        ref.boundary_nodes.clear();
-        for (uint32_t i = 0; i < on_boundary.size(); ++i)
-            if (on_boundary[i]) ref.boundary_nodes.push_back(i);
-        // Feature nodes: where the surface bends by more than 15 degrees (edges, corners). A
-        // node inside a flat face of an immovable body adds nothing the other body's nodes do
-        // not already enforce, and as a second, redundant support it makes the load jump
-        // between the two from step to step (a soft cube resting on a floor shook at 1e-4 m/s
-        // with them, 2e-6 m/s without).
-        std::vector<double> normal(ref.X.size(), 0.0), face(3 * (ref.boundary.size() / 3));
-        for (std::size_t t = 0; t < ref.boundary.size(); t += 3) {
-            const uint32_t* f = &ref.boundary[t];
-            const Vec3 n = (Vec3(&ref.X[3 * f[1]]) - Vec3(&ref.X[3 * f[0]]))
-                               .cross(Vec3(&ref.X[3 * f[2]]) - Vec3(&ref.X[3 * f[0]]));
-            for (int k = 0; k < 3; ++k) face[t + k] = n[k];
-            for (int v = 0; v < 3; ++v)
-                for (int k = 0; k < 3; ++k) normal[3 * f[v] + k] += n[k];
-        }
-        std::vector<uint8_t> feature(on_boundary.size(), 0);
-        const double cos15 = std::cos(15.0 * 3.14159265358979323846 / 180.0);
-        for (std::size_t t = 0; t < ref.boundary.size(); t += 3)
-            for (int v = 0; v < 3; ++v) {
-                const uint32_t i = ref.boundary[t + v];
-                if (Vec3(&normal[3 * i]).normalized().dot(Vec3(&face[t]).normalized()) < cos15)
-                    feature[i] = 1;
-            }
-        ref.feature_nodes.clear();
-        for (uint32_t i = 0; i < feature.size(); ++i)
-            if (feature[i]) ref.feature_nodes.push_back(i);
-    }
+    compute_surface_data(ref);
     ref.Dm_inv.resize(9 * std::size_t(old_tets + tet_count));
     ref.volume.resize(old_tets + tet_count);
     const double rho = body.def.density;
@@ -229,6 +233,47 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     body.prescribed_velocity = std::move(prescribed);
     body.node_force = std::move(forces);
     if (body.is_dynamic()) counters_.initial_energy += added_kinetic;
+    counters_.scan_overlaps = true;
+}
+
+void World::add_triangle_mesh(Body& body, const double* positions, uint32_t node_count,
+                              const uint32_t* triangles, uint32_t triangle_count) {
+    if (body.is_dynamic())
+        throw Error(LFEM_INVALID_ARGUMENT, "triangle meshes belong to static or kinematic bodies");
+    if (body.has_mesh())
+        throw Error(LFEM_INVALID_ARGUMENT, "the body already has a mesh");
+    // Each triangle: indices in range, three different nodes, an area above 1e-12 of its
+    // longest edge squared (the same round-off argument as for tets).
+    for (uint32_t t = 0; t < triangle_count; ++t) {
+        const uint32_t* f = &triangles[3 * t];
+        for (int v = 0; v < 3; ++v)
+            if (f[v] >= node_count)
+                throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " has node index " +
+                                                   std::to_string(f[v]) + ", beyond the " +
+                                                   std::to_string(node_count) + " nodes");
+        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+            throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " repeats a node");
+        const Vec3 a(&positions[3 * f[0]]), b(&positions[3 * f[1]]), c(&positions[3 * f[2]]);
+        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        if (!((b - a).cross(c - a).norm() > 1e-12 * longest * longest))
+            throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " has no area");
+    }
+    BodyReference ref;
+    ref.X.assign(positions, positions + 3 * std::size_t(node_count));
+    ref.boundary.assign(triangles, triangles + 3 * std::size_t(triangle_count));
+    compute_surface_data(ref);
+    BodyState state = body.state;
+    state.x = ref.X;
+    state.v_half.assign(ref.X.size(), 0.0);
+    if (body.shapes.empty()) {  // kinematic pivot: the vertices' centroid
+        Vec3 c = Vec3::Zero();
+        for (uint32_t i = 0; i < node_count; ++i) c += Vec3(&positions[3 * i]);
+        for (int k = 0; k < 3; ++k) state.center[k] = c[k] / node_count;
+    }
+    std::vector<NodeMode> modes(node_count, NodeMode::free);
+    body.ref = std::move(ref);
+    body.state = std::move(state);
+    body.node_mode = std::move(modes);
     counters_.scan_overlaps = true;
 }
 

@@ -56,6 +56,9 @@ public:
     // Appends a checked mesh to a body (see lfem_body_add_mesh). All or nothing.
     void add_mesh(Body& body, const double* positions, uint32_t node_count, const uint32_t* tets,
                   uint32_t tet_count);
+    // Gives a static or kinematic body a surface of triangles (no tets, no mass), e.g. terrain.
+    void add_triangle_mesh(Body& body, const double* positions, uint32_t node_count,
+                           const uint32_t* triangles, uint32_t triangle_count);
     // Gives a static or kinematic body a rigid shape at the given placement (7 doubles).
     void add_shape(Body& body, const RigidShape& shape, const double pose[7]);
     // Overwrites velocities; the change of kinetic energy is booked as external work.

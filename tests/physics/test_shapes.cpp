@@ -170,3 +170,43 @@ TEST(Shapes, BadShapesAreRefused) {
     EXPECT_EQ(lfem_body_add_shape(w, ground, &s), LFEM_INVALID_ARGUMENT);
     EXPECT_EQ(lfem_body_add_shape(w, ground, nullptr), LFEM_INVALID_ARGUMENT);
 }
+
+TEST(Shapes, BlockRestsOnAStaticTriangleMesh) {
+    // Terrain as two triangles of a 1 m square at z = 0, facing up.
+    World w;
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    lfem_body ground{};
+    ASSERT_EQ(lfem_body_create(w, &fd, &ground), LFEM_OK);
+    const double X[] = {-0.5, -0.5, 0, 0.5, -0.5, 0, 0.5, 0.5, 0, -0.5, 0.5, 0};
+    const uint32_t tris[] = {0, 1, 2, 0, 2, 3};
+    ASSERT_EQ(lfem_body_add_triangle_mesh(w, ground, X, 4, tris, 2), LFEM_OK) << lfem_last_error();
+    Mesh m;
+    make_box_mesh(m, 0.1, 0.1, 0.1, 4, 4, 4, -0.05, -0.05, 0.0);
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 1e6;
+    d.damping = 20.0;
+    const lfem_body block = add_body(w, d, m);
+    double mass = 0;
+    lfem_body_get_mass(w, block, &mass);
+    ASSERT_EQ(lfem_world_step(w, 1.2), LFEM_OK) << lfem_last_error();
+    size_t count = 0;
+    lfem_world_query_contacts(w, nullptr, 0, &count);
+    std::vector<lfem_contact> c(count);
+    ASSERT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
+    double fz = 0;
+    for (const lfem_contact& k : c) fz += k.force[2];
+    std::printf("block on a 2-triangle surface: weight within %.2e, penetration %.2e m\n",
+                std::fabs(fz / (mass * 9.81) - 1), stats(w).max_penetration);
+    EXPECT_NEAR(fz, mass * 9.81, 0.005 * mass * 9.81);
+    EXPECT_LT(stats(w).max_penetration, 1e-9);
+    // Bad surfaces are refused.
+    lfem_body other{};
+    ASSERT_EQ(lfem_body_create(w, &fd, &other), LFEM_OK);
+    const uint32_t out_of_range[] = {0, 1, 7};
+    EXPECT_EQ(lfem_body_add_triangle_mesh(w, other, X, 4, out_of_range, 1), LFEM_INVALID_MESH);
+    const double line[] = {0, 0, 0, 1, 0, 0, 2, 0, 0};
+    const uint32_t one[] = {0, 1, 2};
+    EXPECT_EQ(lfem_body_add_triangle_mesh(w, other, line, 3, one, 1), LFEM_INVALID_MESH);
+    EXPECT_EQ(lfem_body_add_triangle_mesh(w, block, X, 4, tris, 2), LFEM_INVALID_ARGUMENT);  // deformable
+}
