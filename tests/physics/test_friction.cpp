@@ -89,3 +89,43 @@ TEST(Friction, BlockSticksOnAThirtyDegreeInclineWhenMuExceedsTheTangent) {
     std::printf("incline mu = 0.7: bottom face slipped %.2e m in 0.5 s\n", slip);
     EXPECT_LT(slip, 1e-6);  // the bound
 }
+
+TEST(Friction, BlockSlidesDownARealThirtyDegreePlane) {
+    // The same law on a literal incline: a static plane turned 30 degrees about y (its normal
+    // (-sin 30, 0, cos 30)), vertical gravity, the block turned with it and set on it.
+    World w;
+    lfem_shape_def plane = lfem_shape_def_default();
+    plane.rotation[0] = std::cos(-kAngle / 2);
+    plane.rotation[2] = std::sin(-kAngle / 2);
+    lfem_body_def f = lfem_body_def_default();
+    f.type = LFEM_BODY_STATIC;
+    f.friction = 0.3;
+    lfem_body ground{};
+    ASSERT_EQ(lfem_body_create(w, &f, &ground), LFEM_OK);
+    ASSERT_EQ(lfem_body_add_shape(w, ground, &plane), LFEM_OK) << lfem_last_error();
+    Mesh m;
+    make_box_mesh(m, 0.1, 0.1, 0.1, 3, 3, 3, -0.05, -0.05, 0.0);
+    const double axis[3] = {0, 1, 0};
+    ASSERT_EQ(lfem_mesh_rotate(m.m, axis, -kAngle), LFEM_OK);
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 1e6;
+    d.friction = 0.3;
+    const lfem_body block = add_body(w, d, m);
+    double mass = 0;
+    lfem_body_get_mass(w, block, &mass);
+    const auto speed_down_slope = [&] {
+        double P[3];
+        EXPECT_EQ(lfem_body_get_momentum(w, block, P, nullptr), LFEM_OK);
+        // Down the slope: (-cos 30, 0, -sin 30) for a plane rising towards +x.
+        return -(P[0] * std::cos(kAngle) + P[2] * std::sin(kAngle)) / mass;
+    };
+    ASSERT_EQ(lfem_world_step(w, 0.05), LFEM_OK) << lfem_last_error();
+    const double t0 = stats(w).time, v0 = speed_down_slope();
+    ASSERT_EQ(lfem_world_step(w, 0.4), LFEM_OK) << lfem_last_error();
+    const double a = (speed_down_slope() - v0) / (stats(w).time - t0);
+    const double expected = kG * (std::sin(kAngle) - 0.3 * std::cos(kAngle));
+    std::printf("real 30 degree plane, mu = 0.3: acceleration %.4f m/s^2 (%+.2f %%)\n", a,
+                100 * (a / expected - 1));
+    EXPECT_NEAR(a, expected, 0.01 * expected);
+    EXPECT_LT(stats(w).max_penetration, 1e-7);
+}
