@@ -269,18 +269,7 @@ int main(int argc, char** argv) {
         CHECK(lfem_world_get_stats(world, &s));
         if (s.max_penetration > max_penetration) max_penetration = s.max_penetration;
         size_t count = 0;
-        lfem_status status = lfem_world_query_contacts(world, contacts, contact_capacity, &count);
-        if (status == LFEM_BUFFER_TOO_SMALL) {
-            lfem_contact* grown = (lfem_contact*)realloc(contacts, sizeof(lfem_contact) * count);
-            if (!grown) {
-                fprintf(stderr, "out of memory\n");
-                return 1;
-            }
-            contacts = grown;
-            contact_capacity = count;
-            status = lfem_world_query_contacts(world, contacts, contact_capacity, &count);
-        }
-        CHECK(status);
+        CHECK(scene_query_contacts(world, &contacts, &contact_capacity, &count));
         /* The force on bar 2 along +x: its nodes' contact forces, and the opposite of the
          * forces on bar 1's nodes (whose reaction lands on bar 2's triangles). */
         double force = 0;

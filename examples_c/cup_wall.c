@@ -99,18 +99,7 @@ int main(int argc, char** argv) {
         CHECK(lfem_world_get_stats(world, &s));
         if (s.max_penetration > max_penetration) max_penetration = s.max_penetration;
         size_t count = 0;
-        lfem_status status = lfem_world_query_contacts(world, contacts, capacity, &count);
-        if (status == LFEM_BUFFER_TOO_SMALL) {
-            lfem_contact* grown = (lfem_contact*)realloc(contacts, sizeof(lfem_contact) * count);
-            if (!grown) {
-                fprintf(stderr, "out of memory\n");
-                return 1;
-            }
-            contacts = grown;
-            capacity = count;
-            status = lfem_world_query_contacts(world, contacts, capacity, &count);
-        }
-        CHECK(status);
+        CHECK(scene_query_contacts(world, &contacts, &capacity, &count));
         double force = 0; /* the wall's push on the cup, along -x */
         for (size_t c = 0; c < count; ++c) force -= contacts[c].force[0];
         if (force > strongest) {

@@ -143,18 +143,7 @@ int main(int argc, char** argv) {
         /* The hammer's contact force on the table (its nodes' forces and the reactions on its
          * triangles), for choosing the key frame. */
         size_t count = 0;
-        lfem_status status = lfem_world_query_contacts(world, contacts, capacity, &count);
-        if (status == LFEM_BUFFER_TOO_SMALL) {
-            lfem_contact* grown = (lfem_contact*)realloc(contacts, sizeof(lfem_contact) * count);
-            if (!grown) {
-                fprintf(stderr, "out of memory\n");
-                return 1;
-            }
-            contacts = grown;
-            capacity = count;
-            status = lfem_world_query_contacts(world, contacts, capacity, &count);
-        }
-        CHECK(status);
+        CHECK(scene_query_contacts(world, &contacts, &capacity, &count));
         double fz = 0;
         for (size_t c = 0; c < count; ++c) {
             if (contacts[c].body_a.index == bodies[5].index) fz += contacts[c].force[2];

@@ -5,6 +5,7 @@
 
 #include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
@@ -58,6 +59,20 @@ static inline int scene_sibling_path(const char* pvd_path, const char* name, cha
         return -1;
     }
     return 0;
+}
+
+/* The active contacts of the last step into *contacts (grown with realloc as needed; *capacity
+ * is its size), their number into *count. Returns LFEM_OK, or the failing status
+ * (LFEM_OUT_OF_MEMORY when the buffer cannot grow). */
+static inline lfem_status scene_query_contacts(const lfem_world* world, lfem_contact** contacts,
+                                               size_t* capacity, size_t* count) {
+    lfem_status status = lfem_world_query_contacts(world, *contacts, *capacity, count);
+    if (status != LFEM_BUFFER_TOO_SMALL) return status;
+    lfem_contact* grown = (lfem_contact*)realloc(*contacts, sizeof(lfem_contact) * *count);
+    if (!grown) return LFEM_OUT_OF_MEMORY;
+    *contacts = grown;
+    *capacity = *count;
+    return lfem_world_query_contacts(world, *contacts, *capacity, count);
 }
 
 #endif
