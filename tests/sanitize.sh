@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The C++ test suites again, built with AddressSanitizer and UndefinedBehaviorSanitizer: any
+# report (out-of-bounds access, use after free, leak, undefined behaviour) ends the run with a
+# non-zero status. Part of the README's test command and so of CI.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+build=build-sanitize
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLFEM_SANITIZE=ON -DLFEM_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$build" -j2 --target lfem_unit_tests lfem_api_tests
+export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+echo "sanitizers: unit tests"
+"$build/tests/lfem_unit_tests" --gtest_brief=1
+# The cantilever (1e8 tet-steps) and the 10-turn spins run the same code paths as the shorter
+# tests but take minutes under the sanitizers; they run in the plain build only.
+echo "sanitizers: C API and physics tests"
+"$build/tests/lfem_api_tests" --gtest_brief=1 --gtest_filter='-Cantilever.*:SpinningBody.*'
+
