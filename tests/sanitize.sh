@@ -9,10 +9,15 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLFEM_SANITIZE=ON -DLF
 cmake --build "$build" -j2 --target lfem_unit_tests lfem_api_tests
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+log="$build/sanitize.log"
+: >"$log"
 echo "sanitizers: unit tests"
-"$build/tests/lfem_unit_tests" --gtest_brief=1
+"$build/tests/lfem_unit_tests" --gtest_brief=1 | tee -a "$log"
 # The cantilever (1e8 tet-steps) and the 10-turn spins run the same code paths as the shorter
 # tests but take minutes under the sanitizers; they run in the plain build only.
 echo "sanitizers: C API and physics tests"
-"$build/tests/lfem_api_tests" --gtest_brief=1 --gtest_filter='-Cantilever.*:SpinningBody.*'
+"$build/tests/lfem_api_tests" --gtest_brief=1 --gtest_filter='-Cantilever.*:SpinningBody.*' | tee -a "$log"
+# A failing test or a sanitizer report has already ended the script (pipefail); count what ran.
+passed=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) tests\?\.$/\1/p' "$log" | awk '{s += $1} END {print s + 0}')
+echo "sanitizers: $passed passed, 0 failed"
 
