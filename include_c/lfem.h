@@ -112,8 +112,20 @@ LFEM_API void lfem_world_destroy(lfem_world* world);
 
 /* Advance the world by dt seconds (dt > 0, finite). The interval is split into equal sub-steps
  * no larger than the allowed step (automatic or fixed). If the state blows up, the call returns
- * LFEM_UNSTABLE and the world is rolled back, bitwise, to its state before the call. */
+ * LFEM_UNSTABLE; if memory runs out, LFEM_OUT_OF_MEMORY. Whatever the failure, the world is
+ * rolled back, bitwise, to its state before the call, and stepping may go on. */
 LFEM_API lfem_status lfem_world_step(lfem_world* world, double dt);
+
+/* Checkpoints. lfem_world_save writes everything a step depends on (definition, bodies,
+ * counters, the contacts that warm-start the next solve) to a versioned binary file: first to
+ * "<path>.tmp", then renamed over path, so an existing checkpoint is only ever replaced by a
+ * complete one. lfem_world_load creates a new world from such a file; stepping it gives results
+ * bitwise identical to the saved world's. Body handles of the saved world are valid in the
+ * loaded one. user_data pointers are not saved (NULL after loading). A missing, truncated,
+ * corrupted (checksum) or foreign file (other format version, byte order or build layout) gives
+ * LFEM_IO_ERROR and *out unchanged; no partial world is ever returned. */
+LFEM_API lfem_status lfem_world_save(const lfem_world* world, const char* path);
+LFEM_API lfem_status lfem_world_load(const char* path, lfem_world** out);
 
 /* Change gravity (m/s^2) or the fixed time step (s, 0 = automatic) of an existing world. */
 LFEM_API lfem_status lfem_world_set_gravity(lfem_world* world, const double gravity[3]);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "api/definitions.h"
 #include "api/handles.h"
 #include "fem/internal_forces.h"
 #include "fem/tet_element.h"
@@ -11,7 +12,7 @@
 using namespace lfem;
 using namespace lfem::api;
 
-namespace {
+namespace lfem::api {
 
 void check_body_def(const lfem_body_def& d) {
     require(d.internal_value == body_def_cookie,
@@ -32,6 +33,10 @@ void check_body_def(const lfem_body_def& d) {
     require_finite(d.linear_velocity, 3, "def->linear_velocity");
     require_finite(d.angular_velocity, 3, "def->angular_velocity");
 }
+
+}  // namespace lfem::api
+
+namespace {
 
 void require_capacity(uint32_t capacity, uint32_t needed, const char* what) {
     if (capacity < needed)

@@ -1,14 +1,17 @@
 // C shim of the world: validates, translates, and leaves the work to lfem::World.
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 
+#include "api/definitions.h"
 #include "api/handles.h"
+#include "world/checkpoint.h"
 
 using namespace lfem;
 using namespace lfem::api;
 
-namespace {
+namespace lfem::api {
 
 void check_world_def(const lfem_world_def& d) {
     require(d.internal_value == world_def_cookie,
@@ -25,7 +28,7 @@ void check_world_def(const lfem_world_def& d) {
     require(d.allow_unstable_step <= 1, "def->allow_unstable_step must be 0 or 1");
 }
 
-}  // namespace
+}  // namespace lfem::api
 
 extern "C" {
 
@@ -58,6 +61,33 @@ LFEM_API lfem_status lfem_world_step(lfem_world* world, double dt) {
         World& w = world_of(world);
         require(std::isfinite(dt) && dt > 0.0, "dt must be finite and > 0, got " + std::to_string(dt));
         w.step(dt);
+    });
+}
+
+LFEM_API lfem_status lfem_world_save(const lfem_world* world, const char* path) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(path, "path");
+        save_checkpoint(w, path);
+    });
+}
+
+LFEM_API lfem_status lfem_world_load(const char* path, lfem_world** out) {
+    return guard(__func__, [&] {
+        require_pointer(path, "path");
+        require_pointer(out, "out");
+        WorldImage image = read_checkpoint(path);
+        // The definitions must pass the checks a caller's would: a file is not trusted more.
+        try {
+            check_world_def(image.def);
+            for (const Body& b : image.bodies)
+                if (b.generation != 0) check_body_def(b.def);
+        } catch (const Error& e) {
+            throw Error(LFEM_IO_ERROR, std::string("checkpoint ") + path + ": " + e.what());
+        }
+        std::unique_ptr<lfem_world> world(new lfem_world(image.def));
+        world->world.restore(std::move(image));
+        *out = world.release();
     });
 }
 

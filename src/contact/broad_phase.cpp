@@ -32,10 +32,16 @@ uint64_t BroadPhase::bucket_of(uint64_t cell) const {
 }
 
 bool BroadPhase::cell_range(const Aabb& b, int64_t lo[3], int64_t hi[3]) const {
+    // Cell coordinates are formed in double and checked before conversion: a box with NaN,
+    // inverted or astronomically far corners (a state about to be caught as a blow-up) is
+    // handled as oversized instead of overflowing the integer cell range.
+    constexpr double kMaxCoordinate = 1e15;  // far inside int64_t, products included
     int64_t cells = 1;
     for (int k = 0; k < 3; ++k) {
-        lo[k] = int64_t(std::floor(b.lo[k] / cell_size_));
-        hi[k] = int64_t(std::floor(b.hi[k] / cell_size_));
+        const double l = std::floor(b.lo[k] / cell_size_), h = std::floor(b.hi[k] / cell_size_);
+        if (!(l <= h) || !(-kMaxCoordinate < l) || !(h < kMaxCoordinate)) return false;
+        lo[k] = int64_t(l);
+        hi[k] = int64_t(h);
         cells *= hi[k] - lo[k] + 1;
         if (cells > kMaxCellsPerItem) return false;
     }

@@ -29,6 +29,12 @@ std::string seconds(double s) {
     return buf;
 }
 
+std::string number(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
 // What the sub-step adds to the world's energy bookkeeping.
 struct SubstepTally {
     double kinetic = 0;    // J, of the new mid-step velocities
@@ -354,20 +360,26 @@ void World::step(double dt) {
     }
     double count = std::isfinite(h_allowed) ? std::ceil(dt / h_allowed * (1.0 - 1e-12)) : 1.0;
     if (count < 1.0) count = 1.0;
-    if (count > double(def_.max_substeps))
+    if (!(count <= double(def_.max_substeps)))  // also a NaN count; count may exceed 2^64
         throw Error(LFEM_INVALID_ARGUMENT,
-                    "dt " + seconds(dt) + " needs " + std::to_string(uint64_t(count)) +
+                    "dt " + seconds(dt) + " needs " + number(count) +
                         " sub-steps of at most " + seconds(h_allowed) + ", more than max_substeps " +
                         std::to_string(def_.max_substeps));
     const uint32_t substeps = uint32_t(count);
     const double h = dt / substeps;
 
-    // Snapshot for rollback: every body's state and the world's counters.
+    // Snapshot for rollback: every body's state and the world's counters. Taking it may throw
+    // (out of memory) before anything has changed; restoring it only moves, so cannot.
     std::vector<BodyState> saved;
     saved.reserve(slots_.size());
     for (const Slot& s : slots_) saved.push_back(s.body.state);
     const WorldCounters saved_counters = counters_;
-    const std::vector<ContactRecord> saved_contacts = contacts_;
+    std::vector<ContactRecord> saved_contacts = contacts_;
+    auto roll_back = [&] {
+        for (std::size_t i = 0; i < slots_.size(); ++i) slots_[i].body.state = std::move(saved[i]);
+        counters_ = saved_counters;
+        contacts_ = std::move(saved_contacts);
+    };
 
     // Energy of the moving bodies at the start, for the blow-up test below.
     double start_energy = 0.0, scale = 0.0;
@@ -387,7 +399,14 @@ void World::step(double dt) {
     double work = 0.0, work_flow = 0.0;
     for (uint32_t k = 0; k < substeps; ++k) {
         double kinetic = 0.0, strain = 0.0, step_work = 0.0;
-        substep(h, kinetic, strain, step_work);
+        try {
+            substep(h, kinetic, strain, step_work);
+        } catch (...) {
+            // Whatever failed inside (out of memory in detection, say), the caller gets the
+            // world as it was before the call, and the failure's own status.
+            roll_back();
+            throw;
+        }
         work += step_work;
         work_flow += std::fabs(step_work);
         // A stable explicit step cannot create energy: kinetic + strain - work stays near the
@@ -398,9 +417,7 @@ void World::step(double dt) {
         // 1.1x), so it passes that bound within a few steps of becoming visible.
         const double balance = kinetic + strain - work;
         if (!std::isfinite(balance) || balance > 10.0 * (start_energy + work_flow) + scale) {
-            for (std::size_t i = 0; i < slots_.size(); ++i) slots_[i].body.state = std::move(saved[i]);
-            counters_ = saved_counters;
-            contacts_ = saved_contacts;
+            roll_back();
             throw Error(LFEM_UNSTABLE,
                         "the state blew up at sub-step " + std::to_string(k + 1) + " of " +
                             std::to_string(substeps) + " (step " + seconds(h) +

@@ -1,6 +1,7 @@
 // Body slots, mesh insertion and the statistics of a world. The step itself is in step.cpp.
 #include "world/world.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -14,6 +15,7 @@
 #include "mesh/mesh_check.h"
 #include "rigid/global_rotation.h"
 #include "rigid/rigid_body.h"
+#include "world/checkpoint.h"
 
 namespace lfem {
 namespace {
@@ -71,6 +73,26 @@ void compute_surface_data(BodyReference& ref) {
 }
 
 }  // namespace
+
+void World::restore(WorldImage&& image) {
+    std::vector<Slot> slots(image.bodies.size());
+    uint32_t highest = 0;
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        highest = std::max(highest, image.bodies[i].generation);
+        slots[i].body = std::move(image.bodies[i]);
+    }
+    def_ = image.def;
+    slots_ = std::move(slots);
+    free_slots_ = std::move(image.free_slots);
+    counters_ = image.counters;
+    contacts_ = std::move(image.contacts);
+    // Bodies created from now on get generations above the loaded ones, so that no handle of
+    // a destroyed body can become valid again.
+    uint32_t next = g_next_generation.load(std::memory_order_relaxed);
+    while (next <= highest &&
+           !g_next_generation.compare_exchange_weak(next, highest + 1, std::memory_order_relaxed)) {
+    }
+}
 
 void World::set_gravity(const double g[3]) {
     for (int k = 0; k < 3; ++k) def_.gravity[k] = g[k];

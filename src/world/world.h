@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "contact/contact_body.h"
@@ -14,6 +15,8 @@
 #include "world/body.h"
 
 namespace lfem {
+
+struct WorldImage;
 
 // The world's own scalars that a step changes (rolled back with the bodies).
 struct WorldCounters {
@@ -70,6 +73,10 @@ public:
     // front, LFEM_UNSTABLE after rolling back to the state before the call.
     void step(double dt);
 
+    // Takes over the definition, bodies, counters and contacts of a checkpoint (see
+    // checkpoint.h); meant for a new world (the shim discards it if this throws).
+    void restore(WorldImage&& image);
+
     lfem_world_stats stats() const;
     // Linear momentum and angular momentum about the origin of one body.
     void body_momentum(const Body& body, double linear[3], double angular[3]) const;
@@ -83,6 +90,7 @@ public:
     lfem_contact contact_as_c(const ContactRecord& c) const;
 
 private:
+    friend void save_checkpoint(const World& world, const std::string& path);
     struct Slot {
         Body body;  // generation 0 = free slot
     };

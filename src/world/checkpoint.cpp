@@ -1,0 +1,323 @@
+// Checkpoint file: a fixed header, then the payload, protected by a checksum.
+//
+//   "LFEMCKPT"  u32 format version  u32 byte-order mark  u32 x4 layout sizes
+//   u64 payload size  u64 FNV-1a checksum of the payload  payload
+//
+// The payload lists every field a step reads, in one order that serves both directions: the
+// `fields` functions below are called with a Writer to save and with a Reader to load, so the
+// two can never disagree. A loaded image is then checked for consistency (sizes, indices,
+// enums), since a well-formed checksum does not make a file trustworthy.
+#include "world/checkpoint.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <type_traits>
+
+#include "common/error.h"
+
+namespace lfem {
+namespace {
+
+constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
+constexpr uint32_t kFormatVersion = 1;
+constexpr uint32_t kByteOrderMark = 0x01020304u;
+constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
+
+// A new field in these structs must be added to the `fields` functions below (and the format
+// version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
+#if defined(__x86_64__) || defined(__aarch64__)
+static_assert(sizeof(BodyReference) == 312, "BodyReference changed: update the checkpoint");
+static_assert(sizeof(BodyState) == 264, "BodyState changed: update the checkpoint");
+static_assert(sizeof(WorldCounters) == 96, "WorldCounters changed: update the checkpoint");
+static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
+static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
+#endif
+
+uint64_t fnv1a(const char* data, std::size_t n) {
+    uint64_t h = 1469598103934665603ull;
+    for (std::size_t i = 0; i < n; ++i) {
+        h ^= uint8_t(data[i]);
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw Error(LFEM_IO_ERROR, "checkpoint " + path + ": " + what);
+}
+
+class Writer {
+public:
+    static constexpr bool loading = false;
+    template <class T>
+    void operator()(const T& v) {
+        static_assert(std::is_trivially_copyable<T>::value, "plain data only");
+        bytes_.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+    template <class T>
+    void operator()(const std::vector<T>& v) {
+        operator()(uint64_t(v.size()));
+        bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    }
+    std::string& bytes() { return bytes_; }
+
+private:
+    std::string bytes_;
+};
+
+class Reader {
+public:
+    static constexpr bool loading = true;
+    Reader(const std::string& path, const char* data, std::size_t size)
+        : path_(path), data_(data), size_(size) {}
+    template <class T>
+    void operator()(T& v) {
+        static_assert(std::is_trivially_copyable<T>::value, "plain data only");
+        take(&v, sizeof v);
+    }
+    template <class T>
+    void operator()(std::vector<T>& v) {
+        uint64_t n = 0;
+        operator()(n);
+        // Checked against what is left before allocating: a corrupted count cannot ask for
+        // terabytes.
+        if (n > (size_ - pos_) / sizeof(T)) fail(path_, "truncated (an array runs past the end)");
+        v.resize(std::size_t(n));
+        take(v.data(), std::size_t(n) * sizeof(T));
+    }
+    bool at_end() const { return pos_ == size_; }
+
+private:
+    void take(void* out, std::size_t n) {
+        if (n > size_ - pos_) fail(path_, "truncated");
+        if (n) std::memcpy(out, data_ + pos_, n);
+        pos_ += n;
+    }
+    const std::string& path_;
+    const char* data_;
+    std::size_t size_;
+    std::size_t pos_ = 0;
+};
+
+// Field lists, one per struct, used for both saving (Writer, const_cast-free through the
+// template) and loading (Reader).
+template <class A, class C>
+void counter_fields(A& a, C& c) {
+    a(c.time), a(c.steps), a(c.step_size), a(c.substeps_last_call), a(c.external_work);
+    a(c.dissipated_energy), a(c.initial_energy), a(c.rotation_drift), a(c.solver_iterations);
+    a(c.solver_residual), a(c.max_penetration), a(c.scan_overlaps);
+}
+
+template <class A, class C>
+void contact_fields(A& a, C& c) {
+    a(c.body_a), a(c.node), a(c.body_b), a(c.triangle), a(c.shape), a(c.point_start);
+    a(c.point_end), a(c.t1), a(c.t2), a(c.normal), a(c.lambda_n), a(c.lambda_t), a(c.offset);
+    a(c.gap_after), a(c.sliding);
+}
+
+template <class A, class S>
+void shape_fields(A& a, S& s) {
+    a(s.type), a(s.half_extents), a(s.radius), a(s.half_length), a(s.points);
+}
+
+// user_data is a pointer into the saving process: never written, NULL after loading.
+void def_field(Writer& a, const lfem_body_def& d) {
+    lfem_body_def c = d;
+    c.user_data = nullptr;
+    a(c);
+}
+void def_field(Reader& a, lfem_body_def& d) {
+    a(d);
+    d.user_data = nullptr;
+}
+
+template <class A, class B>
+void body_fields(A& a, B& b) {
+    a(b.generation);
+    if (b.generation == 0) return;  // a free slot
+    def_field(a, b.def);
+    a(b.lame.mu), a(b.lame.lambda);
+    auto& r = b.ref;
+    a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.boundary), a(r.boundary_nodes);
+    a(r.feature_nodes), a(r.edge_length), a(r.total_mass), a(r.com), a(r.stable_step), a(r.inertia);
+    auto& s = b.state;
+    a(s.x), a(s.v_half), a(s.elastic), a(s.tet_rotation), a(s.contact_force), a(s.h_last);
+    a(s.strain_energy), a(s.rotation), a(s.angular_momentum), a(s.center), a(s.velocity);
+    a(s.shape_pose);
+    a(b.node_mode), a(b.prescribed_velocity), a(b.node_force);
+    uint64_t shapes = b.shapes.size();
+    a(shapes);
+    if constexpr (A::loading) {
+        if (shapes > (1u << 20)) throw Error(LFEM_IO_ERROR, "checkpoint: implausible shape count");
+        b.shapes.resize(std::size_t(shapes));
+    }
+    for (auto& shape : b.shapes) shape_fields(a, shape);
+}
+
+// Consistency of what a Reader produced: every size and index a step relies on.
+void check_body(const Body& b, const std::string& path, std::size_t slot) {
+    const std::string where = "body in slot " + std::to_string(slot) + ": ";
+    auto require = [&](bool ok, const char* what) {
+        if (!ok) fail(path, where + what);
+    };
+    const BodyReference& r = b.ref;
+    const BodyState& s = b.state;
+    require(b.def.type >= LFEM_BODY_DEFORMABLE && b.def.type <= LFEM_BODY_RIGID, "bad body type");
+    require(b.def.model >= LFEM_MODEL_PAPER && b.def.model <= LFEM_MODEL_LINEAR, "bad model");
+    require(r.X.size() % 3 == 0, "bad reference positions");
+    const std::size_t n = r.X.size() / 3, t = r.tets.size() / 4;
+    require(r.tets.size() % 4 == 0 && r.mass.size() == n && r.Dm_inv.size() == 9 * t &&
+                r.volume.size() == t && r.boundary.size() % 3 == 0,
+            "array sizes disagree");
+    for (uint32_t i : r.tets) require(i < n, "tet node index out of range");
+    for (uint32_t i : r.boundary) require(i < n, "boundary node index out of range");
+    for (uint32_t i : r.boundary_nodes) require(i < n, "boundary node out of range");
+    for (uint32_t i : r.feature_nodes) require(i < n, "feature node out of range");
+    require(s.x.size() == 3 * n && s.v_half.size() == 3 * n && s.elastic.size() == 3 * n,
+            "state size disagrees with the mesh");
+    require(s.tet_rotation.size() == 4 * t, "tet rotations disagree with the mesh");
+    require(s.contact_force.empty() || s.contact_force.size() == 3 * n, "bad contact forces");
+    require(b.node_mode.size() == n, "bad node modes");
+    for (NodeMode m : b.node_mode) require(uint8_t(m) <= uint8_t(NodeMode::prescribed), "bad node mode");
+    require(b.prescribed_velocity.empty() || b.prescribed_velocity.size() == 3 * n,
+            "bad prescribed velocities");
+    require(b.node_force.empty() || b.node_force.size() == 3 * n, "bad node forces");
+    require(s.shape_pose.size() == 7 * b.shapes.size(), "shape poses disagree with the shapes");
+    for (const RigidShape& sh : b.shapes)
+        require(sh.type >= LFEM_SHAPE_PLANE && sh.type <= LFEM_SHAPE_CONVEX_HULL &&
+                    sh.points.size() % 3 == 0,
+                "bad shape");
+    bool prescribed = false;
+    for (NodeMode m : b.node_mode) prescribed = prescribed || m == NodeMode::prescribed;
+    require(!prescribed || b.prescribed_velocity.size() == 3 * n, "prescribed nodes without velocities");
+    require(b.shapes.empty() || b.def.type == LFEM_BODY_STATIC || b.def.type == LFEM_BODY_KINEMATIC,
+            "shapes on a body that cannot have them");
+    require(!b.is_deformable() || n == 0 || (std::isfinite(r.stable_step) && r.stable_step > 0.0),
+            "bad stable step");
+    for (const std::vector<double>* a : {&r.X, &r.mass, &r.Dm_inv, &r.volume, &s.x, &s.v_half,
+                                         &s.elastic, &s.tet_rotation, &s.contact_force,
+                                         &s.shape_pose, &b.prescribed_velocity, &b.node_force})
+        for (double v : *a) require(std::isfinite(v), "a non-finite number");
+}
+
+void check_image(const WorldImage& im, const std::string& path) {
+    for (std::size_t i = 0; i < im.bodies.size(); ++i)
+        if (im.bodies[i].generation != 0) check_body(im.bodies[i], path, i);
+    for (uint32_t f : im.free_slots)
+        if (f >= im.bodies.size() || im.bodies[f].generation != 0) fail(path, "bad free slot list");
+    for (const ContactRecord& c : im.contacts) {
+        const bool ok = c.body_a < im.bodies.size() && c.body_b < im.bodies.size() &&
+                        im.bodies[c.body_a].generation != 0 && im.bodies[c.body_b].generation != 0;
+        if (!ok) fail(path, "a contact names a missing body");
+        const Body& a = im.bodies[c.body_a];
+        const Body& b = im.bodies[c.body_b];
+        bool in_range = c.node < a.ref.node_count();
+        if (c.shape == UINT32_MAX)
+            for (uint32_t v : c.triangle) in_range = in_range && v < b.ref.node_count();
+        else
+            in_range = in_range && c.shape < b.shapes.size();
+        if (!in_range) fail(path, "a contact index is out of range");
+    }
+}
+
+void put_u32(std::string& s, uint32_t v) { s.append(reinterpret_cast<const char*>(&v), 4); }
+void put_u64(std::string& s, uint64_t v) { s.append(reinterpret_cast<const char*>(&v), 8); }
+template <class T>
+T get(const char* p) {
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+const uint32_t kLayout[4] = {uint32_t(sizeof(lfem_world_def)), uint32_t(sizeof(lfem_body_def)),
+                             uint32_t(sizeof(Body)), uint32_t(sizeof(ContactRecord))};
+
+}  // namespace
+
+void save_checkpoint(const World& world, const std::string& path) {
+    Writer w;
+    w(world.def_);
+    counter_fields(w, world.counters_);
+    w(uint64_t(world.slots_.size()));
+    for (const World::Slot& slot : world.slots_) body_fields(w, slot.body);
+    w(world.free_slots_);
+    w(uint64_t(world.contacts_.size()));
+    for (const ContactRecord& c : world.contacts_) contact_fields(w, c);
+
+    std::string file(kMagic, sizeof kMagic);
+    put_u32(file, kFormatVersion);
+    put_u32(file, kByteOrderMark);
+    for (uint32_t v : kLayout) put_u32(file, v);
+    const std::string& payload = w.bytes();
+    put_u64(file, payload.size());
+    put_u64(file, fnv1a(payload.data(), payload.size()));
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) fail(path, "cannot open " + tmp + " for writing");
+        out.write(file.data(), std::streamsize(file.size()));
+        out.write(payload.data(), std::streamsize(payload.size()));
+        out.flush();
+        if (!out) {
+            out.close();
+            std::remove(tmp.c_str());
+            fail(path, "write failed (disk full?)");
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        fail(path, "cannot rename " + tmp + " to it");
+    }
+}
+
+WorldImage read_checkpoint(const std::string& path) {
+    std::string file;
+    {
+        std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"), &std::fclose);
+        if (!in) fail(path, "cannot open it for reading");
+        char chunk[1 << 16];
+        std::size_t got;
+        while ((got = std::fread(chunk, 1, sizeof chunk, in.get())) > 0) file.append(chunk, got);
+        // A directory, say, opens but cannot be read.
+        if (std::ferror(in.get())) fail(path, "cannot be read");
+    }
+    if (file.size() < kHeaderSize) fail(path, "truncated (shorter than its header)");
+    if (std::memcmp(file.data(), kMagic, sizeof kMagic) != 0) fail(path, "not an lfem checkpoint");
+    const char* p = file.data() + sizeof kMagic;
+    if (get<uint32_t>(p) != kFormatVersion)
+        fail(path, "format version " + std::to_string(get<uint32_t>(p)) + ", this library reads " +
+                       std::to_string(kFormatVersion));
+    if (get<uint32_t>(p + 4) != kByteOrderMark) fail(path, "written on a machine of other byte order");
+    for (int i = 0; i < 4; ++i)
+        if (get<uint32_t>(p + 8 + 4 * i) != kLayout[i])
+            fail(path, "written by a build of lfem with another data layout");
+    const uint64_t size = get<uint64_t>(p + 24), checksum = get<uint64_t>(p + 32);
+    if (size != file.size() - kHeaderSize)
+        fail(path, size > file.size() - kHeaderSize ? "truncated" : "has trailing bytes");
+    const char* payload = file.data() + kHeaderSize;
+    if (fnv1a(payload, std::size_t(size)) != checksum) fail(path, "corrupted (checksum mismatch)");
+
+    Reader r(path, payload, std::size_t(size));
+    WorldImage im;
+    r(im.def);
+    counter_fields(r, im.counters);
+    uint64_t slots = 0;
+    r(slots);
+    if (slots > size) fail(path, "truncated (slot count)");
+    im.bodies.resize(std::size_t(slots));
+    for (Body& b : im.bodies) body_fields(r, b);
+    r(im.free_slots);
+    uint64_t contacts = 0;
+    r(contacts);
+    if (contacts > size) fail(path, "truncated (contact count)");
+    im.contacts.resize(std::size_t(contacts));
+    for (ContactRecord& c : im.contacts) contact_fields(r, c);
+    if (!r.at_end()) fail(path, "has bytes after its last record");
+    check_image(im, path);
+    return im;
+}
+
+}  // namespace lfem

@@ -1,0 +1,120 @@
+// Out of memory anywhere inside a call: the call returns LFEM_OUT_OF_MEMORY and the world is
+// exactly as before (bit for bit), and usable afterwards. The allocation that fails is chosen
+// by a replacement of the global operator new in this test program, which the shared library
+// uses too: the test fails the 1st, 2nd, ... allocation of a call in turn, until the call
+// needs no more than that.
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+
+#include "robustness/robustness_scene.h"
+
+namespace {
+
+// -1: no failure planned. Otherwise the number of allocations still allowed to succeed; the
+// next one fails (once: the error handling itself must be able to allocate its message).
+std::atomic<long> g_allow{-1};
+std::atomic<long> g_count{0};
+
+void* allocate(std::size_t n) {
+    g_count.fetch_add(1, std::memory_order_relaxed);
+    long left = g_allow.load(std::memory_order_relaxed);
+    if (left == 0) {
+        g_allow.store(-1, std::memory_order_relaxed);
+        throw std::bad_alloc();
+    }
+    if (left > 0) g_allow.store(left - 1, std::memory_order_relaxed);
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+
+}  // namespace
+
+void* operator new(std::size_t n) { return allocate(n); }
+void* operator new[](std::size_t n) { return allocate(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace lfem_test;
+
+namespace {
+
+// Runs `call` with its k-th allocation failing, for k = 0, 1, ... until a run succeeds.
+// Returns how many failure points were tried.
+template <class Call, class Check>
+long fail_each_allocation(Call&& call, Check&& check_unchanged) {
+    for (long k = 0;; ++k) {
+        g_allow.store(k);
+        const lfem_status s = call();
+        const bool failed_inside = g_allow.load() == -1;  // the planned failure happened
+        g_allow.store(-1);
+        if (!failed_inside) {
+            EXPECT_EQ(s, LFEM_OK) << lfem_last_error();
+            return k;
+        }
+        EXPECT_EQ(s, LFEM_OUT_OF_MEMORY) << "allocation " << k << ": " << lfem_last_error();
+        check_unchanged(k);
+        if (k > 100000) {
+            ADD_FAILURE() << "the call never stopped allocating";
+            return k;
+        }
+    }
+}
+
+}  // namespace
+
+TEST(OutOfMemory, FailedStepLeavesTheWorldUnchanged) {
+    RobustnessScene scene;
+    EXPECT_GT(scene.run(30), 5u);  // in contact: detection and the solve allocate too
+    // Each failing call is compared against the state before it; a successful one moves on.
+    std::vector<unsigned char> before = scene.state();
+    const long points = fail_each_allocation(
+        [&] { return lfem_world_step(scene.w, 0.005); },
+        [&](long k) { ASSERT_EQ(before, scene.state()) << "allocation " << k << " changed the world"; });
+    EXPECT_GT(points, 10) << "the step allocates: the replacement operator new must be in use";
+    std::printf("step: failed at each of its %ld allocations in turn, world unchanged each time\n", points);
+    // The world steps on normally.
+    EXPECT_GT(scene.run(5), 0u);
+}
+
+TEST(OutOfMemory, FailedCreateAddMeshSaveAndLoadChangeNothing) {
+    RobustnessScene scene;
+    scene.run(5);
+    const std::vector<unsigned char> before = scene.state();
+    const lfem_body_def def = lfem_body_def_default();
+    lfem_body body{};
+    fail_each_allocation([&] { return lfem_body_create(scene.w, &def, &body); },
+                         [&](long k) { ASSERT_EQ(before, scene.state()) << "allocation " << k; });
+    // The new body has no mesh yet (nothing to read back): its node count stands for it.
+    std::vector<lfem_body> all = scene.bodies;
+    auto state = [&] {
+        std::vector<unsigned char> f = fingerprint(scene.w, all);
+        f.push_back(uint8_t(node_count(scene.w, body)));
+        return f;
+    };
+    const std::vector<unsigned char> with_empty_body = state();
+    Mesh mesh;
+    make_box_mesh(mesh, 0.1, 0.1, 0.1, 2, 2, 2, 0.0, 0.3, 0.3);
+    fail_each_allocation(
+        [&] {
+            return lfem_body_add_mesh(scene.w, body, lfem_mesh_get_positions(mesh.m), mesh.nodes(),
+                                      lfem_mesh_get_tets(mesh.m), mesh.tets());
+        },
+        [&](long k) { ASSERT_EQ(with_empty_body, state()) << "allocation " << k; });
+
+    const std::string path = std::string(::testing::TempDir()) + "lfem_oom.ckpt";
+    all.push_back(body);  // now with its mesh
+    const std::vector<unsigned char> saved = fingerprint(scene.w, all);
+    fail_each_allocation([&] { return lfem_world_save(scene.w, path.c_str()); },
+                         [&](long k) { ASSERT_EQ(saved, fingerprint(scene.w, all)) << "allocation " << k; });
+    lfem_world* loaded = nullptr;
+    fail_each_allocation([&] { return lfem_world_load(path.c_str(), &loaded); },
+                         [&](long) { ASSERT_EQ(loaded, nullptr); });
+    ASSERT_NE(loaded, nullptr);
+    EXPECT_EQ(saved, fingerprint(loaded, all));
+    lfem_world_destroy(loaded);
+    std::remove(path.c_str());
+}
