@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang-14 (AddressSanitizer and UndefinedBehaviorSanitizer
+# on) and runs each for a bounded time, starting from the seed corpus in tests/fuzz/corpus.
+#   bash tests/fuzz/run.sh                   # 60 s per target (what CI runs)
+#   bash tests/fuzz/run.sh -runs=1000000     # a million executions per target
+# Extra arguments go to libFuzzer. A crash stops the run with a non-zero status and leaves the
+# input as build-fuzz/crash-*: copy it into tests/fuzz/regressions/<target>/ (replayed by ctest)
+# and fix the bug. New inputs found go to build-fuzz/corpus-<target>, not to the source tree.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+args=("$@")
+[ ${#args[@]} -eq 0 ] && args=(-max_total_time=60)
+build=build-fuzz
+CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLFEM_FUZZ=ON \
+  -DLFEM_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$build" -j2 --target fuzz_gmsh fuzz_api
+export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+for target in gmsh api; do
+  work="$build/corpus-$target"
+  mkdir -p "$work"
+  log="$build/fuzz_$target.log"
+  echo "fuzz_$target: ${args[*]}"
+  # -timeout: one input may take at most 10 s (a step is capped by max_substeps);
+  # -rss_limit_mb: a leak or runaway allocation is reported, not swapped.
+  if ! (cd "$build" && "./tests/fuzz/fuzz_$target" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+        "${args[@]}" "corpus-$target" "../tests/fuzz/corpus/$target") >"$log" 2>&1; then
+    tail -n 60 "$log"
+    echo "fuzz_$target: FAILED (input saved as $build/crash-* or similar; see $log)"
+    exit 1
+  fi
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  corpus=$(find "$work" -type f | wc -l)
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1)
+  echo "fuzz_$target: ${runs:-0} executions, ${cov:-cov: ?} edges, corpus $corpus inputs, 0 crashes"
+done
