@@ -286,6 +286,26 @@ namespace Lfem
             handle = h;
         }
 
+        private World(WorldHandle h) { handle = h; }
+
+        /// <summary>A new world from a checkpoint written by Save; stepping it continues the
+        /// saved run bit for bit. Body handles of the saved world are valid in it.</summary>
+        public static World Load(string path)
+        {
+            WorldHandle h;
+            Status s = Native.lfem_world_load(Library.ToCString(path), out h);
+            if (s != Status.Ok)
+            {
+                LfemException e = LfemException.FromLastError(s);
+                if (h != null) h.Dispose();
+                throw e;
+            }
+            return new World(h);
+        }
+
+        /// <summary>Write a checkpoint of the whole world (replaces path only once complete).</summary>
+        public void Save(string path) { LfemException.Check(Native.lfem_world_save(handle, Library.ToCString(path))); }
+
         public WorldHandle Handle { get { return handle; } }
 
         public void Dispose() { handle.Dispose(); }
@@ -670,6 +690,10 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern void lfem_world_destroy(IntPtr world);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_step(WorldHandle world, double dt);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_step(IntPtr world, double dt);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_save(WorldHandle world, [In] byte[] path);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_save(IntPtr world, [In] byte[] path);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_load([In] byte[] path, out WorldHandle world);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_load([In] byte[] path, IntPtr world);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_set_gravity(WorldHandle world, ref Vec3 gravity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_set_time_step(WorldHandle world, double timeStep);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_stable_step(WorldHandle world, out double stableStep);

@@ -316,6 +316,8 @@ _declare("lfem_world_def_default", WorldDef)
 _declare("lfem_world_create", _st, _p(WorldDef), _p(_vp))
 _declare("lfem_world_destroy", None, _vp)
 _declare("lfem_world_step", _st, _vp, _dbl)
+_declare("lfem_world_save", _st, _vp, ctypes.c_char_p)
+_declare("lfem_world_load", _st, ctypes.c_char_p, _p(_vp))
 _declare("lfem_world_set_gravity", _st, _vp, _dp)
 _declare("lfem_world_set_time_step", _st, _vp, _dbl)
 _declare("lfem_world_get_stable_step", _st, _vp, _dp)
@@ -450,6 +452,20 @@ class World:
         handle = _vp()
         _lib.lfem_world_create(ctypes.byref(definition), ctypes.byref(handle))
         self._handle = handle
+
+    @classmethod
+    def load(cls, path):
+        """A new world from a checkpoint written by save(); stepping it continues the saved
+        run bit for bit. Body handles of the saved world are valid in it."""
+        handle = _vp()
+        _lib.lfem_world_load(os.fsencode(path), ctypes.byref(handle))
+        world = cls.__new__(cls)
+        world._handle = handle
+        return world
+
+    def save(self, path):
+        """Write a checkpoint of the whole world (replaces path only once complete)."""
+        _lib.lfem_world_save(self.handle, os.fsencode(path))
 
     @property
     def handle(self):

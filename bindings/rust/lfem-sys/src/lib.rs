@@ -196,6 +196,8 @@ extern "C" {
     pub fn lfem_world_create(def: *const lfem_world_def, out: *mut *mut lfem_world) -> lfem_status;
     pub fn lfem_world_destroy(world: *mut lfem_world);
     pub fn lfem_world_step(world: *mut lfem_world, dt: c_double) -> lfem_status;
+    pub fn lfem_world_save(world: *const lfem_world, path: *const c_char) -> lfem_status;
+    pub fn lfem_world_load(path: *const c_char, out: *mut *mut lfem_world) -> lfem_status;
     pub fn lfem_world_set_gravity(world: *mut lfem_world, gravity: *const c_double) -> lfem_status;
     pub fn lfem_world_set_time_step(world: *mut lfem_world, time_step: c_double) -> lfem_status;
     pub fn lfem_world_get_stable_step(world: *const lfem_world, out: *mut c_double) -> lfem_status;

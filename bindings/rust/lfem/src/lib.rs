@@ -545,6 +545,25 @@ impl World {
             .ok_or_else(|| Error::local(Status::InternalError, "lfem_world_create returned NULL".into()))
     }
 
+    /// A new world from a checkpoint written by [`World::save`]; stepping it continues the
+    /// saved run bit for bit. Body handles of the saved world are valid in it.
+    pub fn load<P: AsRef<Path>>(path: P) -> Result<World> {
+        let c_path = to_c_path(path.as_ref())?;
+        let mut out: *mut sys::lfem_world = ptr::null_mut();
+        // SAFETY: NUL-terminated path, valid output.
+        check(unsafe { sys::lfem_world_load(c_path.as_ptr(), &mut out) })?;
+        NonNull::new(out)
+            .map(|raw| World { raw })
+            .ok_or_else(|| Error::local(Status::InternalError, "lfem_world_load returned NULL".into()))
+    }
+
+    /// Write a checkpoint of the whole world (replaces `path` only once complete).
+    pub fn save<P: AsRef<Path>>(&self, path: P) -> Result<()> {
+        let c_path = to_c_path(path.as_ref())?;
+        // SAFETY: live world, NUL-terminated path.
+        check(unsafe { sys::lfem_world_save(self.ptr(), c_path.as_ptr()) })
+    }
+
     /// The C pointer, for calls this crate does not wrap. Stays owned by `self`.
     pub fn as_ptr(&self) -> *mut sys::lfem_world {
         self.raw.as_ptr()
