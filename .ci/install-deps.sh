@@ -28,6 +28,9 @@ PACKAGES=(
   mono-runtime
   python3-numpy
   python3-pytest
+  # fuzzing (tests/fuzz/run.sh): clang with libFuzzer and the sanitizer runtimes
+  clang-14
+  libclang-rt-14-dev
 )
 
 export DEBIAN_FRONTEND=noninteractive
