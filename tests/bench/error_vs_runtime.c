@@ -1,0 +1,393 @@
+/* Error against run time (issue 4): runs the validation problems of DESIGN.md section 4 over
+ * mesh resolutions, step safety factors and material models, and records for each run the
+ * errors against the closed forms and the wall time; then the same two-bar impact with the
+ * penalty-contact baseline (penalty_baseline.h) at three stiffnesses, with the stable step each
+ * one needs found by bisection.
+ *
+ *   bench_error_vs_runtime [--quick] [--out file.csv]
+ *     --quick  a small subset in a few seconds (the ctest smoke test)
+ *     --out    the CSV, default tests/bench/results/error_vs_runtime.csv in the source tree
+ *
+ * Prints a line per run, then Markdown tables: for each error level the fastest setting that
+ * reaches it, and the penalty baseline against the multipliers. Wall times are of one run each
+ * (clock_gettime MONOTONIC), set-up included, on whatever else the machine is doing. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_common.h"
+#include "two_bar_scene.h"
+#include "validation_cases.h"
+
+#ifndef LFEM_BENCH_RESULTS_DIR
+#define LFEM_BENCH_RESULTS_DIR "."
+#endif
+
+/* One row of the CSV. Errors are relative (signed); NAN where a column does not apply (written
+ * as an empty field). */
+typedef struct run_row {
+    const char* problem;  /* two_bar, spin, cantilever, incline */
+    char contact[24];     /* multipliers, or penalty_k<factor>x (the baseline); none */
+    const char* model;
+    uint32_t cells[3];
+    uint32_t tets;
+    double safety;        /* step / elastic stable limit */
+    double step;          /* s */
+    uint64_t steps;
+    double wall;          /* s */
+    int stable;
+    double error;         /* the problem's main error (see the CSV header) */
+    double impulse, plateau, peak_force, duration, v1, v2; /* two_bar */
+    double penetration;   /* m */
+    double kinetic, volume; /* spin */
+} run_row;
+
+typedef struct row_list {
+    run_row* rows;
+    size_t count, capacity;
+} row_list;
+
+static run_row* new_row(row_list* list) {
+    if (list->count == list->capacity) {
+        const size_t capacity = list->capacity ? 2 * list->capacity : 64;
+        run_row* grown = (run_row*)realloc(list->rows, sizeof(run_row) * capacity);
+        if (!grown) return NULL;
+        list->rows = grown;
+        list->capacity = capacity;
+    }
+    run_row* r = &list->rows[list->count++];
+    memset(r, 0, sizeof *r);
+    r->impulse = r->plateau = r->peak_force = r->duration = r->v1 = r->v2 = NAN;
+    r->penetration = r->kinetic = r->volume = NAN;
+    r->stable = 1;
+    return r;
+}
+
+static const char* model_name(lfem_model m) {
+    switch (m) {
+    case LFEM_MODEL_PAPER: return "paper";
+    case LFEM_MODEL_COROTATIONAL: return "corotational";
+    case LFEM_MODEL_NEO_HOOKEAN: return "neo_hookean";
+    case LFEM_MODEL_LINEAR: return "linear";
+    default: return "unknown";
+    }
+}
+
+static void print_row(const run_row* r) {
+    printf("%-10s %-13s %-12s %4ux%ux%u %6u tets  safety %.2f  %7llu steps  %8.3f s  error %+.3e%s\n",
+           r->problem, r->contact, r->model, r->cells[0], r->cells[1], r->cells[2], r->tets,
+           r->safety, (unsigned long long)r->steps, r->wall, r->error,
+           r->stable ? "" : "  BLEW UP");
+    fflush(stdout);
+}
+
+/* ---- the runs ------------------------------------------------------------------------------ */
+
+static int run_two_bar(row_list* list, const two_bar_config* c, two_bar_result* out) {
+    two_bar_result res;
+    if (two_bar_run(c, &res) != 0) return -1;
+    const two_bar_exact e = two_bar_exact_solution();
+    run_row* r = new_row(list);
+    if (!r) return -1;
+    r->problem = "two_bar";
+    if (c->penalty_factor > 0)
+        snprintf(r->contact, sizeof r->contact, "penalty_k%gx", c->penalty_factor);
+    else
+        snprintf(r->contact, sizeof r->contact, "multipliers");
+    r->model = model_name(c->model);
+    memcpy(r->cells, c->cells, sizeof r->cells);
+    r->tets = res.tets;
+    r->safety = c->step_ratio;
+    r->step = res.step;
+    r->steps = res.steps;
+    r->wall = res.wall;
+    r->stable = res.stable;
+    r->impulse = res.impulse / e.impulse - 1;
+    r->error = r->impulse;
+    r->plateau = res.plateau / e.force - 1;
+    r->peak_force = res.peak_force / e.force - 1;
+    r->duration = res.duration / e.duration - 1;
+    r->v1 = res.v1 / e.v1 - 1;
+    r->v2 = res.v2 / e.v2 - 1;
+    r->penetration = res.max_penetration;
+    print_row(r);
+    if (out) *out = res;
+    return 0;
+}
+
+typedef int (*case_function)(const case_config*, case_result*);
+
+static int run_case(row_list* list, const char* problem, case_function run, lfem_model model,
+                    const uint32_t cells[3], double safety, double duration) {
+    const case_config c = {model, {cells[0], cells[1], cells[2]}, safety, duration};
+    case_result res;
+    if (run(&c, &res) != 0) return -1;
+    run_row* r = new_row(list);
+    if (!r) return -1;
+    r->problem = problem;
+    snprintf(r->contact, sizeof r->contact, strcmp(problem, "incline") == 0 ? "multipliers" : "none");
+    r->model = model_name(model);
+    memcpy(r->cells, cells, sizeof r->cells);
+    r->tets = res.tets;
+    r->safety = safety;
+    r->step = res.step;
+    r->steps = res.steps;
+    r->wall = res.wall;
+    r->error = res.error;
+    if (strcmp(problem, "spin") == 0) r->kinetic = res.second_error, r->volume = res.third_error;
+    if (strcmp(problem, "incline") == 0) r->penetration = res.second_error;
+    print_row(r);
+    return 0;
+}
+
+/* The largest step ratio (fixed step / elastic limit) at which the two-bar impact does not
+ * blow up, by bisection on a log scale between lo and hi. Returns 0 and the ratio (hi when even
+ * hi is stable, 0 when even lo is not), or -1. */
+static int find_stable_ratio(two_bar_config c, double lo, double hi, int iterations,
+                             double* ratio) {
+    two_bar_result res;
+    c.step_ratio = hi;
+    if (two_bar_run(&c, &res) != 0) return -1;
+    if (res.stable) return *ratio = hi, 0;
+    c.step_ratio = lo;
+    if (two_bar_run(&c, &res) != 0) return -1;
+    if (!res.stable) return *ratio = 0, 0;
+    for (int k = 0; k < iterations; ++k) {
+        c.step_ratio = sqrt(lo * hi);
+        if (two_bar_run(&c, &res) != 0) return -1;
+        if (res.stable)
+            lo = c.step_ratio;
+        else
+            hi = c.step_ratio;
+    }
+    *ratio = lo;
+    return 0;
+}
+
+/* ---- output -------------------------------------------------------------------------------- */
+
+static void csv_number(FILE* f, double v) {
+    if (isnan(v))
+        fputc(',', f);
+    else
+        fprintf(f, ",%.6g", v);
+}
+
+static int write_csv(const char* path, const row_list* list) {
+    FILE* f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "cannot write %s\n", path);
+        return -1;
+    }
+    /* error: two_bar impulse; spin |L - L0|/|L0|; cantilever tip deflection; incline
+     * acceleration. All errors relative; penetration in m. */
+    fprintf(f, "problem,contact,model,cells_x,cells_y,cells_z,tets,safety,step_s,steps,wall_s,stable,"
+               "error,impulse_err,plateau_err,peak_force_err,duration_err,v1_err,v2_err,"
+               "max_penetration_m,kinetic_err,volume_change\n");
+    for (size_t i = 0; i < list->count; ++i) {
+        const run_row* r = &list->rows[i];
+        fprintf(f, "%s,%s,%s,%u,%u,%u,%u,%.4g,%.6g,%llu,%.4f,%d", r->problem, r->contact, r->model,
+                r->cells[0], r->cells[1], r->cells[2], r->tets, r->safety, r->step,
+                (unsigned long long)r->steps, r->wall, r->stable);
+        csv_number(f, r->error);
+        csv_number(f, r->impulse);
+        csv_number(f, r->plateau);
+        csv_number(f, r->peak_force);
+        csv_number(f, r->duration);
+        csv_number(f, r->v1);
+        csv_number(f, r->v2);
+        csv_number(f, r->penetration);
+        csv_number(f, r->kinetic);
+        csv_number(f, r->volume);
+        fputc('\n', f);
+    }
+    if (fclose(f) != 0) {
+        fprintf(stderr, "cannot write %s\n", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* For each problem and error level, the fastest stable lfem run (no baseline) within it. */
+static void print_levels_table(const row_list* list) {
+    static const char* problems[] = {"two_bar", "spin", "cantilever", "incline"};
+    static const char* what[] = {"impulse", "angular momentum", "tip deflection", "acceleration"};
+    static const double levels[] = {0.05, 0.02, 0.01, 0.005, 0.003};
+    printf("\n| problem (error) | level | fastest setting: mesh, model, safety | wall time | error |\n");
+    printf("| --- | --- | --- | --- | --- |\n");
+    for (int p = 0; p < 4; ++p)
+        for (int l = 0; l < 5; ++l) {
+            const run_row* best = NULL;
+            for (size_t i = 0; i < list->count; ++i) {
+                const run_row* r = &list->rows[i];
+                if (strcmp(r->problem, problems[p]) != 0 || !r->stable ||
+                    strncmp(r->contact, "penalty", 7) == 0 || !(fabs(r->error) <= levels[l]))
+                    continue;
+                if (!best || r->wall < best->wall) best = r;
+            }
+            if (best)
+                printf("| %s (%s) | %g %% | %ux%ux%u, %s, %.2f | %.3f s | %+.3f %% |\n", problems[p],
+                       what[p], 100 * levels[l], best->cells[0], best->cells[1], best->cells[2],
+                       best->model, best->safety, best->wall, 100 * best->error);
+            else
+                printf("| %s (%s) | %g %% | not reached | | |\n", problems[p], what[p], 100 * levels[l]);
+        }
+}
+
+/* ---- the sweep ----------------------------------------------------------------------------- */
+
+int main(int argc, char** argv) {
+    int quick = 0;
+    const char* out = LFEM_BENCH_RESULTS_DIR "/error_vs_runtime.csv";
+    for (int i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--quick") == 0)
+            quick = 1;
+        else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc)
+            out = argv[++i];
+        else {
+            fprintf(stderr, "usage: bench_error_vs_runtime [--quick] [--out file.csv]\n");
+            return 2;
+        }
+    }
+    const double start = bench_now();
+    row_list list = {0};
+    const lfem_model all_models[4] = {LFEM_MODEL_PAPER, LFEM_MODEL_LINEAR, LFEM_MODEL_COROTATIONAL,
+                                      LFEM_MODEL_NEO_HOOKEAN};
+    printf("lfem %s: error against run time%s\n", lfem_version_string(), quick ? " (quick subset)" : "");
+
+    /* Two-bar impact, nu = 0, Lagrange multipliers. Refining along the bar is what pays: with
+     * nu = 0 nothing couples the cross-section, so one cell across is enough. */
+    two_bar_config bar = {LFEM_MODEL_PAPER, {40, 1, 1}, 0.0, 0.9, 0.0, 200e-6};
+    static const uint32_t ladder[5] = {40, 80, 160, 240, 320};
+    const int ladder_count = quick ? 2 : 5;
+    for (int m = 0; m < (quick ? 2 : 4); ++m)
+        for (int i = 0; i < ladder_count; ++i) {
+            bar.model = all_models[m];
+            bar.cells[0] = ladder[i];
+            bar.cells[1] = bar.cells[2] = 1;
+            if (run_two_bar(&list, &bar, NULL) != 0) return 1;
+        }
+    if (!quick) {
+        /* Step safety factors (paper model), and cells across the bar. */
+        static const double safeties[3] = {0.5, 0.7, 1.0};
+        for (int s = 0; s < 3; ++s)
+            for (int i = 0; i < 4; ++i) {
+                bar.model = LFEM_MODEL_PAPER;
+                bar.cells[0] = ladder[i == 3 ? 4 : i];
+                bar.cells[1] = bar.cells[2] = 1;
+                bar.step_ratio = safeties[s];
+                if (run_two_bar(&list, &bar, NULL) != 0) return 1;
+            }
+        static const uint32_t across[5][3] = {{40, 2, 2}, {40, 4, 4}, {80, 2, 2}, {80, 4, 4}, {160, 2, 2}};
+        for (int i = 0; i < 5; ++i) {
+            bar.model = LFEM_MODEL_PAPER;
+            bar.step_ratio = 0.9;
+            memcpy(bar.cells, across[i], sizeof bar.cells);
+            if (run_two_bar(&list, &bar, NULL) != 0) return 1;
+        }
+    }
+
+    /* Spinning body (one turn), cantilever, incline: four meshes each, the four models, and a
+     * smaller step on one model. */
+    static const uint32_t spin_meshes[4][3] = {{2, 1, 1}, {4, 2, 2}, {6, 3, 3}, {8, 4, 4}};
+    static const uint32_t beam_meshes[7][3] = {{20, 1, 2}, {40, 1, 4}, {60, 1, 6}, {80, 1, 8},
+                                               {20, 1, 4}, {20, 1, 8}, {40, 1, 8}};
+    static const uint32_t block_meshes[4][3] = {{2, 2, 2}, {3, 3, 3}, {4, 4, 4}, {6, 6, 6}};
+    if (quick) {
+        if (run_case(&list, "spin", spin_run, LFEM_MODEL_COROTATIONAL, spin_meshes[0], 0.9, 0.2) != 0 ||
+            run_case(&list, "cantilever", cantilever_run, LFEM_MODEL_COROTATIONAL, beam_meshes[0], 0.9, 0) != 0 ||
+            run_case(&list, "incline", incline_run, LFEM_MODEL_PAPER, block_meshes[0], 0.9, 0) != 0)
+            return 1;
+    } else {
+        for (int m = 0; m < 4; ++m)
+            for (int i = 0; i < 4; ++i) {
+                /* The finest spin and beam meshes on the rotating models only: the linear model
+                 * cannot spin (rotation read as strain), and the beam's finest mesh is costly. */
+                const int rotating = all_models[m] != LFEM_MODEL_LINEAR;
+                if ((i < 3 || rotating) &&
+                    run_case(&list, "spin", spin_run, all_models[m], spin_meshes[i], 0.9, 0) != 0)
+                    return 1;
+                if ((i < 3 || all_models[m] == LFEM_MODEL_COROTATIONAL) &&
+                    run_case(&list, "cantilever", cantilever_run, all_models[m], beam_meshes[i], 0.9, 0) != 0)
+                    return 1;
+                if (run_case(&list, "incline", incline_run, all_models[m], block_meshes[i], 0.9, 0) != 0)
+                    return 1;
+            }
+        for (int i = 4; i < 7; ++i)
+            if (run_case(&list, "cantilever", cantilever_run, LFEM_MODEL_COROTATIONAL, beam_meshes[i], 0.9, 0) != 0)
+                return 1;
+        for (int i = 0; i < 3; ++i)
+            if (run_case(&list, "spin", spin_run, LFEM_MODEL_COROTATIONAL, spin_meshes[i], 0.5, 0) != 0 ||
+                run_case(&list, "cantilever", cantilever_run, LFEM_MODEL_COROTATIONAL, beam_meshes[i], 0.5, 0) != 0 ||
+                run_case(&list, "incline", incline_run, LFEM_MODEL_PAPER, block_meshes[i], 0.5, 0) != 0)
+                return 1;
+    }
+
+    /* The penalty baseline against the multipliers on one mesh: the largest step that does not
+     * blow up (bisection on the fixed step, between 1/64 and 2 times the elastic limit), then a
+     * run at 0.9 of it, as a user would run either. */
+    static const double factors[4] = {0.0, 1.0, 10.0, 100.0};
+    const uint32_t penalty_cells = quick ? 40 : 80;
+    double stable_ratio[4], elastic_step = 0;
+    two_bar_result pen[4];
+    size_t pen_row[4];
+    for (int f = 0; f < 4; ++f) {
+        if (quick && (f == 1 || f == 3)) continue; /* multipliers and k = 10x only */
+        two_bar_config c = {LFEM_MODEL_PAPER, {penalty_cells, 1, 1}, 0.0, 1.0, factors[f], 200e-6};
+        if (find_stable_ratio(c, 1.0 / 64, 2.0, quick ? 3 : 8, &stable_ratio[f]) != 0) return 1;
+        c.step_ratio = 0.9 * stable_ratio[f];
+        pen_row[f] = list.count;
+        if (c.step_ratio <= 0 || run_two_bar(&list, &c, &pen[f]) != 0) return 1;
+        elastic_step = pen[f].elastic_step;
+    }
+    if (!quick) /* the baseline on the other meshes too, for the plot */
+        for (int f = 1; f < 4; ++f)
+            for (int i = 0; i < 3; i += 2) {
+                two_bar_config c = {LFEM_MODEL_PAPER, {ladder[i], 1, 1}, 0.0,
+                                    0.9 * stable_ratio[f], factors[f], 200e-6};
+                if (run_two_bar(&list, &c, NULL) != 0) return 1;
+            }
+
+    if (write_csv(out, &list) != 0) return 1;
+    printf("\nwrote %s (%zu runs) in %.1f s\n", out, list.count, bench_now() - start);
+
+    print_levels_table(&list);
+    /* The issue's target. */
+    const run_row* target = NULL;
+    for (size_t i = 0; i < list.count; ++i) {
+        const run_row* r = &list.rows[i];
+        if (strcmp(r->problem, "two_bar") == 0 && strcmp(r->contact, "multipliers") == 0 &&
+            r->stable && fabs(r->error) <= 0.005 && (!target || r->wall < target->wall))
+            target = r;
+    }
+    if (target)
+        printf("\ntarget (two-bar impulse error <= 0.5 %% in <= 1 s): %s, %ux%ux%u %s safety %.2f, "
+               "%.3f s, %+.3f %%\n", target->wall <= 1.0 ? "met" : "NOT met", target->cells[0],
+               target->cells[1], target->cells[2], target->model, target->safety, target->wall,
+               100 * target->error);
+    else
+        printf("\ntarget (two-bar impulse error <= 0.5 %% in <= 1 s): NOT met (no run within 0.5 %%)\n");
+
+    printf("\nPenalty baseline against Lagrange multipliers: two-bar impact, %ux1x1 cells a bar, paper "
+           "model, elastic stable limit %.4g s; k in multiples of E A2 / l_e\n\n",
+           penalty_cells, elastic_step);
+    printf("| contact | largest stable step / elastic limit | step used | max penetration | impulse error "
+           "| plateau error | peak force error | duration error | wall time |\n");
+    printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    for (int f = 0; f < 4; ++f) {
+        if (quick && (f == 1 || f == 3)) continue;
+        const run_row* r = &list.rows[pen_row[f]];
+        char name[48];
+        if (factors[f] > 0)
+            snprintf(name, sizeof name, "penalty baseline, k = %gx", factors[f]);
+        else
+            snprintf(name, sizeof name, "Lagrange multipliers (lfem)");
+        printf("| %s | %s%.3f | %.4g s | %.2e m | %+.3f %% | %+.3f %% | %+.2f %% | %+.2f %% | %.3f s%s |\n",
+               name, stable_ratio[f] >= 2.0 ? ">= " : "", stable_ratio[f], pen[f].step,
+               pen[f].max_penetration, 100 * r->impulse, 100 * r->plateau, 100 * r->peak_force,
+               100 * r->duration, r->wall, r->stable ? "" : " (blew up)");
+    }
+    free(list.rows);
+    return 0;
+}
