@@ -93,6 +93,8 @@ static int run_two_bar(row_list* list, const two_bar_config* c, two_bar_result* 
     r->problem = "two_bar";
     if (c->penalty_factor > 0)
         snprintf(r->contact, sizeof r->contact, "penalty_k%gx", c->penalty_factor);
+    else if (c->penalty_factor < 0)
+        snprintf(r->contact, sizeof r->contact, "no_contact");
     else
         snprintf(r->contact, sizeof r->contact, "multipliers");
     r->model = model_name(c->model);
@@ -142,26 +144,28 @@ static int run_case(row_list* list, const char* problem, case_function run, lfem
 }
 
 /* The largest step ratio (fixed step / elastic limit) at which the two-bar impact does not
- * blow up, by bisection on a log scale between lo and hi. Returns 0 and the ratio (hi when even
- * hi is stable, 0 when even lo is not), or -1. */
-static int find_stable_ratio(two_bar_config c, double lo, double hi, int iterations,
-                             double* ratio) {
-    two_bar_result res;
-    c.step_ratio = hi;
-    if (two_bar_run(&c, &res) != 0) return -1;
-    if (res.stable) return *ratio = hi, 0;
-    c.step_ratio = lo;
-    if (two_bar_run(&c, &res) != 0) return -1;
-    if (!res.stable) return *ratio = 0, 0;
-    for (int k = 0; k < iterations; ++k) {
-        c.step_ratio = sqrt(lo * hi);
+ * blow up. Explicit penalty contact is not monotonic near its limit (a step may blow up while a
+ * slightly larger one survives), so this sweeps down a geometric grid (factor `grid`) from hi
+ * and answers the top of the first `confirm` consecutive stable grid steps: every step between
+ * it and confirm grid points below it is stable. *highest: the largest stable grid step met at
+ * all. Runs that blow up stop early, so sweeping from above is cheap. Returns 0, or -1. */
+static int find_stable_ratio(two_bar_config c, double hi, double grid, int confirm, double* ratio,
+                             double* highest) {
+    double top = 0;
+    int run = 0;
+    *highest = 0;
+    for (double r = hi; r >= 1.0 / 256 && run < confirm; r /= grid) {
+        two_bar_result res;
+        c.step_ratio = r;
         if (two_bar_run(&c, &res) != 0) return -1;
-        if (res.stable)
-            lo = c.step_ratio;
-        else
-            hi = c.step_ratio;
+        if (!res.stable) {
+            top = 0, run = 0;
+            continue;
+        }
+        if (*highest == 0) *highest = r;
+        if (run++ == 0) top = r;
     }
-    *ratio = lo;
+    *ratio = top;
     return 0;
 }
 
@@ -233,6 +237,15 @@ static void print_levels_table(const row_list* list) {
             else
                 printf("| %s (%s) | %g %% | not reached | | |\n", problems[p], what[p], 100 * levels[l]);
         }
+}
+
+/* "1.05e-06 s (x1.000)", with the isolated stable steps above it when there are any. */
+static void stable_cell(char* out, size_t size, double ratio, double highest, double elastic_step) {
+    if (highest > ratio * 1.001)
+        snprintf(out, size, "%.4g s (x%.3f; isolated stable steps up to x%.3f)", ratio * elastic_step,
+                 ratio, highest);
+    else
+        snprintf(out, size, "%s%.4g s (x%.3f)", ratio >= 2.0 ? ">= " : "", ratio * elastic_step, ratio);
 }
 
 /* ---- the sweep ----------------------------------------------------------------------------- */
@@ -325,17 +338,25 @@ int main(int argc, char** argv) {
     }
 
     /* The penalty baseline against the multipliers on one mesh: the largest step that does not
-     * blow up (bisection on the fixed step, between 1/64 and 2 times the elastic limit), then a
-     * run at 0.9 of it, as a user would run either. */
+     * blow up (a sweep down from 2 times the elastic limit in steps of 5 %, see
+     * find_stable_ratio), then a run at 0.9 of it, as a user would run either. The bars without any contact give their own
+     * critical step: the one the multipliers should keep. */
     static const double factors[4] = {0.0, 1.0, 10.0, 100.0};
     const uint32_t penalty_cells = quick ? 40 : 80;
-    double stable_ratio[4], elastic_step = 0;
+    const double grid = quick ? 1.25 : 1.05;
+    const int confirm = quick ? 2 : 6;
+    double stable_ratio[4], highest_ratio[4], free_ratio = 0, free_highest = 0, elastic_step = 0;
     two_bar_result pen[4];
     size_t pen_row[4];
+    {
+        const two_bar_config c = {LFEM_MODEL_PAPER, {penalty_cells, 1, 1}, 0.0, 1.0, -1.0, 200e-6};
+        if (find_stable_ratio(c, 2.0, grid, confirm, &free_ratio, &free_highest) != 0) return 1;
+    }
     for (int f = 0; f < 4; ++f) {
         if (quick && (f == 1 || f == 3)) continue; /* multipliers and k = 10x only */
         two_bar_config c = {LFEM_MODEL_PAPER, {penalty_cells, 1, 1}, 0.0, 1.0, factors[f], 200e-6};
-        if (find_stable_ratio(c, 1.0 / 64, 2.0, quick ? 3 : 8, &stable_ratio[f]) != 0) return 1;
+        if (find_stable_ratio(c, 2.0, grid, confirm, &stable_ratio[f], &highest_ratio[f]) != 0)
+            return 1;
         c.step_ratio = 0.9 * stable_ratio[f];
         pen_row[f] = list.count;
         if (c.step_ratio <= 0 || run_two_bar(&list, &c, &pen[f]) != 0) return 1;
@@ -372,9 +393,12 @@ int main(int argc, char** argv) {
     printf("\nPenalty baseline against Lagrange multipliers: two-bar impact, %ux1x1 cells a bar, paper "
            "model, elastic stable limit %.4g s; k in multiples of E A2 / l_e\n\n",
            penalty_cells, elastic_step);
-    printf("| contact | largest stable step / elastic limit | step used | max penetration | impulse error "
-           "| plateau error | peak force error | duration error | wall time |\n");
+    printf("| contact | largest stable step (x elastic limit) | step used | max penetration | impulse "
+           "error | plateau error | peak force error | duration error | wall time |\n");
     printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    char cell[96];
+    stable_cell(cell, sizeof cell, free_ratio, free_highest, elastic_step);
+    printf("| no contact (bars pass through each other) | %s | | | | | | | |\n", cell);
     for (int f = 0; f < 4; ++f) {
         if (quick && (f == 1 || f == 3)) continue;
         const run_row* r = &list.rows[pen_row[f]];
@@ -383,8 +407,9 @@ int main(int argc, char** argv) {
             snprintf(name, sizeof name, "penalty baseline, k = %gx", factors[f]);
         else
             snprintf(name, sizeof name, "Lagrange multipliers (lfem)");
-        printf("| %s | %s%.3f | %.4g s | %.2e m | %+.3f %% | %+.3f %% | %+.2f %% | %+.2f %% | %.3f s%s |\n",
-               name, stable_ratio[f] >= 2.0 ? ">= " : "", stable_ratio[f], pen[f].step,
+        stable_cell(cell, sizeof cell, stable_ratio[f], highest_ratio[f], elastic_step);
+        printf("| %s | %s | %.4g s | %.2e m | %+.3f %% | %+.3f %% | %+.2f %% | %+.2f %% | %.3f s%s |\n",
+               name, cell, pen[f].step,
                pen[f].max_penetration, 100 * r->impulse, 100 * r->plateau, 100 * r->peak_force,
                100 * r->duration, r->wall, r->stable ? "" : " (blew up)");
     }

@@ -31,7 +31,9 @@ typedef struct two_bar_config {
                                (lfem_world_get_stable_step); above 1 only to find where a
                                contact model blows up */
     double penalty_factor;  /* 0: lfem's Lagrange multipliers. > 0: the penalty baseline with
-                               springs of total stiffness penalty_factor * E A2 / (L / cells[0]) */
+                               springs of total stiffness penalty_factor * E A2 / (L / cells[0]).
+                               < 0: no contact at all (the bars pass through each other): the
+                               bars' own critical step, for comparison */
     double end_time;        /* s, 200 us: contact is over by ~124 us */
 } two_bar_config;
 
