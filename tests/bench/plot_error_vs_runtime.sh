@@ -35,7 +35,7 @@ unset arrow 2
 unset label 1
 set title "Spinning body, cantilever, incline: main error against the closed form"
 set ylabel "|error| (%)"
-plot "$csv" skip 1 using (sel("spin", "", "") ? \$11 : NaN):(abs(\$13) * 100) with points pt 7 ps 1.1 title "spin: angular momentum", \
+plot "$csv" skip 1 using (sel("spin", "", "") ? \$11 : NaN):(abs(\$13) * 100) with points pt 7 ps 1.1 title "spin: largest of angular momentum, kinetic energy, volume", \
      "" skip 1 using (sel("cantilever", "", "") ? \$11 : NaN):(abs(\$13) * 100) with points pt 5 ps 1.1 title "cantilever: tip deflection", \
      "" skip 1 using (sel("incline", "", "") ? \$11 : NaN):(abs(\$13) * 100) with points pt 9 ps 1.3 title "incline: acceleration"
 unset multiplot
