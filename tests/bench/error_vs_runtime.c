@@ -307,7 +307,7 @@ int main(int argc, char** argv) {
         /* Step safety factors (paper model), and cells across the bar. */
         static const double safeties[3] = {0.5, 0.7, 1.0};
         for (int s = 0; s < 3; ++s)
-            for (int i = 0; i < 4; ++i) {
+            for (int i = 0; i < (s == 2 ? 5 : 4); ++i) { /* 320 cells at the largest step only */
                 bar.model = LFEM_MODEL_PAPER;
                 bar.cells[0] = ladder[i];
                 bar.cells[1] = bar.cells[2] = 1;

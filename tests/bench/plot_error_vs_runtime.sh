@@ -13,7 +13,7 @@ set output "$png"
 set logscale xy
 set format y "10^{%L}"
 set grid
-set key bottom left
+set key below
 set multiplot layout 1,2
 # Columns: 1 problem, 2 contact, 3 model, 11 wall_s, 12 stable, 13 error (relative).
 sel(p, c, m) = strcol(1) eq p && (c eq "" || strcol(2) eq c) && (m eq "" || strcol(3) eq m) && \$12 == 1
