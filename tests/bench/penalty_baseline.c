@@ -124,7 +124,9 @@ int penalty_contact_create(lfem_world* world, lfem_body master, double master_fa
             hi[d] = fmax(hi[d], p->x_master[3 * master_tris[t] + 1 + d]);
         }
     const int grid = (int)ceil(sqrt(n_master / 2.0));
-    const double cell[2] = {(hi[0] - lo[0]) / grid, (hi[1] - lo[1]) / grid};
+    /* A face of zero extent in y or z (a degenerate strip) still gets cells of positive size. */
+    const double cell[2] = {hi[0] > lo[0] ? (hi[0] - lo[0]) / grid : 1.0,
+                            hi[1] > lo[1] ? (hi[1] - lo[1]) / grid : 1.0};
     cell_start = (uint32_t*)calloc((size_t)grid * grid + 1, sizeof(uint32_t));
     cell_tris = (uint32_t*)malloc(sizeof(uint32_t) * n_master);
     if (!cell_start || !cell_tris) goto fail;
