@@ -275,3 +275,170 @@ TEST(Extreme, SoftNeoHookeanCubeHitNearAndAboveItsWaveSpeed) {
         EXPECT_LT(o.rise, 0.10) << label;
     }
 }
+
+TEST(Extreme, MassRatio1e4BetweenCollidingBodies) {
+    // A 2 cm cube of 100 kg/m^3 (0.8 g) at 10 m/s against a free 10 cm block of 8000 kg/m^3
+    // (8 kg): mass ratio 1e4, both deformable, no gravity, frictionless. The contact pair's
+    // H = 1/mhat_node + sum N_k^2/mhat_k spans four decades, where projected Gauss-Seidel is
+    // slowest. Linear momentum is exchanged exactly (the multipliers act equal and opposite),
+    // and the light cube comes back at most as fast as it came (the heavy block is nearly a
+    // wall: rebound below v, momentum given to the block at most 2 m v).
+    std::printf("mass ratio 1e4, 0.8 g cube at 10 m/s on a free 8 kg block:\n");
+    for (lfem_model m : kModels) {
+        lfem_world_def wd = lfem_world_def_default();
+        wd.gravity[2] = 0.0;
+        World w(wd);
+        Mesh heavy_mesh, light_mesh;
+        make_box_mesh(heavy_mesh, 0.1, 0.1, 0.1, 3, 3, 3, -0.05, -0.05, -0.1);
+        make_box_mesh(light_mesh, 0.02, 0.02, 0.02, 3, 3, 3, -0.01, -0.01, 3e-4);
+        const lfem_body heavy = add_body(w, deformable(m, 1e8, 0.3, 8000.0), heavy_mesh);
+        lfem_body_def d = deformable(m, 1e8, 0.3, 100.0);
+        d.linear_velocity[2] = -10.0;
+        const lfem_body light = add_body(w, d, light_mesh);
+        double M = 0, mass = 0;
+        lfem_body_get_mass(w, heavy, &M);
+        lfem_body_get_mass(w, light, &mass);
+        double P0[3], Q0[3];
+        lfem_body_get_momentum(w, light, P0, nullptr);
+        lfem_body_get_momentum(w, heavy, Q0, nullptr);
+        // Until 8 L / c of the light cube (c = 1000 m/s) after the touch.
+        const Outcome o = run(w, light, 100, (3e-4 / 10.0 + 8 * 0.02 / 1000.0) / 100, 10.0);
+        double P[3], Q[3];
+        lfem_body_get_momentum(w, light, P, nullptr);
+        lfem_body_get_momentum(w, heavy, Q, nullptr);
+        const double drift = std::fabs(P[2] + Q[2] - P0[2] - Q0[2]) / std::fabs(P0[2]);
+        char label[96];
+        std::snprintf(label, sizeof label, "%s (M/m = %.0f)", model_name(m), M / mass);
+        Outcome shown = o;
+        shown.below = 0;  // the block's face is pushed below z = 0: only the stats measure here
+        print(label, shown);
+        std::printf("    momentum drift %.1e of m v, block took %.3f m v\n", drift, Q[2] / P0[2]);
+        EXPECT_NEAR(M / mass, 1e4, 1e-6 * 1e4);
+        EXPECT_EQ(o.status, LFEM_OK) << label << ": " << o.message;
+        EXPECT_TRUE(o.finite) << label;
+        EXPECT_LT(o.rise, 0.10) << label;
+        // Penetration: as above; the block's face sits at z = 0 until it moves (< 2 m v / M
+        // times the run time: 1e-7 m), which the allowance of the light cube covers.
+        EXPECT_LT(o.penetration, 1e-2 * o.v_h + 1e-9) << label;
+        // Momentum is exact up to round-off of the positions (eps |x|, |x| ~ 0.1 m), which
+        // the solve turns into force errors of eps |x| mhat, i.e. eps |x| m / h of momentum
+        // per contact node and step: ~100 steps x ~50 pairs x 2.2e-16 x 0.1 m x 0.125 kg /
+        // 1.9e-6 s ~ 1e-11 kg m/s ~ 1.4e-9 m v. Allowed: 1e-8 m v.
+        EXPECT_LT(drift, 1e-8) << label;
+        EXPECT_GT(o.bounce, 0.0) << label;
+        EXPECT_LE(o.bounce, 1.0) << label;
+        EXPECT_LE(Q[2] / P0[2], 2.0 + 1e-9) << label;
+    }
+}
+
+TEST(Extreme, GradedMeshWithElementSizesDifferingBy100) {
+    // A 10 cm cube whose cells grow geometrically by 100^(1/5) = 2.51 from one corner: from
+    // 0.6 mm to 6 cm along each axis. The stable limit follows the smallest cells (l / c_d within
+    // the 0.3 to 0.75 band of DESIGN.md section 6); the cube, small cells first, hits the block
+    // at 2 m/s.
+    std::vector<double> grid(7);
+    double sum = 0;
+    for (int k = 0; k < 6; ++k) sum += std::pow(100.0, k / 5.0);
+    grid[0] = 0;
+    for (int k = 0; k < 6; ++k) grid[k + 1] = grid[k] + 0.1 * std::pow(100.0, k / 5.0) / sum;
+    std::vector<double> axes[3];
+    for (int a = 0; a < 2; ++a)
+        for (double g : grid) axes[a].push_back(g - 0.05);
+    for (double g : grid) axes[2].push_back(g + 5e-4);
+    const RawMesh graded = mapped_box(axes);
+    const double smallest = grid[1] - grid[0], largest = grid[6] - grid[5];
+    std::printf("graded mesh, cells %.2e to %.2e m (ratio %.0f), cube at 2 m/s on a static block:\n",
+                smallest, largest, largest / smallest);
+    EXPECT_NEAR(largest / smallest, 100.0, 1e-9);
+    for (lfem_model m : kModels) {
+        lfem_world_def wd = lfem_world_def_default();
+        wd.gravity[2] = 0.0;
+        World w(wd);
+        Mesh block;
+        add_static_block(w, block);
+        lfem_body_def d = deformable(m, 1e6, 0.3, 1000.0);
+        d.linear_velocity[2] = -2.0;
+        const lfem_body b = add_raw(w, d, graded);
+        const double cd = std::sqrt(1e6 * 0.7 / (1000.0 * 1.3 * 0.4));
+        const double limit = stable_step(w);
+        // Until 2.5 L / c (c = 31.6 m/s) after the touch: the contact and the rebound.
+        const Outcome o = run(w, b, 100, (5e-4 / 2.0 + 2.5 * 0.1 / 31.6) / 100, 2.0);
+        char label[96];
+        std::snprintf(label, sizeof label, "%s (limit %.2e s = %.2f l_min / c_d)", model_name(m),
+                      limit, limit * cd / smallest);
+        print(label, o);
+        expect_bounded(o, label);
+        // The tet's shortest altitude is l / sqrt(3) for these cells (a cube split in six):
+        // the limit lies between 0.2 and 1 of l_min / c_d.
+        EXPECT_GT(limit * cd / smallest, 0.2) << label;
+        EXPECT_LT(limit * cd / smallest, 1.0) << label;
+    }
+}
+
+TEST(Extreme, SliverTetsAreAcceptedWithAStepScaledToTheirHeightOrRefusedWhenFlat) {
+    // A 2 cm cube of 3^3 cells (l = 6.7 mm) whose middle layer is squashed to a height t: its
+    // tets have all four nodes within t of a plane and edges of ~l (slivers, 6V / L^3 ~ t / l).
+    // lfem accepts any tet with 6V > 1e-12 L^3 (src/mesh/tet_geometry.h) and simulates it at
+    // the stable step its stiffness allows; flatter tets are refused as zero-volume
+    // (LFEM_INVALID_MESH), and a dt that would need more than max_substeps sub-steps is refused
+    // before anything changes (LFEM_INVALID_ARGUMENT).
+    // Closed form of the limit: the layer's stiffness is ~E l^2 / t, while its nodes carry the
+    // lumped mass of the regular cells beside it, ~rho l^3; so omega ~ c_d / sqrt(l t) and the
+    // limit scales with sqrt(t / l) (not t / l: the slivers' own mass is negligible).
+    const double l = 0.02 / 3;
+    auto sliver_cube = [&](double t) {
+        std::vector<double> axes[3];
+        axes[0] = axes[1] = uniform_grid(-0.01, 0.02, 3);
+        axes[2] = {1e-4, 1e-4 + l, 1e-4 + l + t, 1e-4 + 2 * l + t};
+        return mapped_box(axes);
+    };
+    double regular_limit = 0;
+    std::printf("sliver tets (a layer of height t in a cube of 6.7 mm cells), 1 m/s on a block:\n");
+    for (double ratio : {1.0, 1e-2, 1e-4, 1e-8}) {
+        for (lfem_model m : kModels) {
+            lfem_world_def wd = lfem_world_def_default();
+            wd.gravity[2] = 0.0;
+            World w(wd);
+            Mesh block;
+            add_static_block(w, block);
+            lfem_body_def d = deformable(m, 1e6, 0.3, 1000.0);
+            d.linear_velocity[2] = -1.0;
+            const lfem_body b = add_raw(w, d, sliver_cube(ratio * l));
+            const double limit = stable_step(w);
+            if (ratio == 1.0) regular_limit = limit;
+            char label[96];
+            std::snprintf(label, sizeof label, "%s t/l = %.0e: limit %.2e s (x%.1e)", model_name(m),
+                          ratio, limit, limit / regular_limit);
+            // Within a factor 2 of sqrt(t / l) times the regular cube's limit.
+            EXPECT_GT(limit / regular_limit, std::sqrt(ratio) / 2) << label;
+            EXPECT_LT(limit / regular_limit, std::sqrt(ratio) * 2) << label;
+            if (ratio == 1e-8) {
+                // One second would take ~1e8 sub-steps: refused up front, nothing changed.
+                const auto before = fingerprint(w, {b});
+                EXPECT_EQ(lfem_world_step(w, 1.0), LFEM_INVALID_ARGUMENT) << label;
+                const std::string message = lfem_last_error();
+                std::printf("  %s: dt = 1 s refused: %s\n", label, message.c_str());
+                EXPECT_NE(message.find("max_substeps"), std::string::npos) << message;
+                EXPECT_EQ(before, fingerprint(w, {b})) << label;
+                continue;
+            }
+            // 2 ms: the flight (0.1 ms), the contact (~2 L / c = 1.3 ms) and the rebound.
+            const Outcome o = run(w, b, 40, 5e-5, 1.0);
+            print(label, o);
+            expect_bounded(o, label);
+            EXPECT_GT(o.bounce, 0.0) << label;
+        }
+    }
+    // Flatter than 1e-12 L^3: refused with a message naming the tet.
+    World w;
+    lfem_body body{};
+    const lfem_body_def d = lfem_body_def_default();
+    ASSERT_EQ(lfem_body_create(w, &d, &body), LFEM_OK);
+    const RawMesh flat = sliver_cube(1e-14 * l);
+    EXPECT_EQ(lfem_body_add_mesh(w, body, flat.x.data(), uint32_t(flat.x.size() / 3), flat.tets.data(),
+                                 uint32_t(flat.tets.size() / 4)),
+              LFEM_INVALID_MESH);
+    const std::string message = lfem_last_error();
+    std::printf("  t/l = 1e-14: refused: %s\n", message.c_str());
+    EXPECT_NE(message.find("zero volume"), std::string::npos) << message;
+}
