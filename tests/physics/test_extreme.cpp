@@ -442,3 +442,165 @@ TEST(Extreme, SliverTetsAreAcceptedWithAStepScaledToTheirHeightOrRefusedWhenFlat
     std::printf("  t/l = 1e-14: refused: %s\n", message.c_str());
     EXPECT_NE(message.find("zero volume"), std::string::npos) << message;
 }
+
+TEST(Extreme, CallerDtOf100StableStepsIsSubSteppedAndCounted) {
+    // A soft spinning block under gravity, three calls of dt = 100 times the stable limit each:
+    // every call takes exactly ceil(dt / (step_safety * limit)) sub-steps, the limit read just
+    // before the call (the neo-Hookean limit is the current shape's), and reports the count.
+    std::printf("dt = 100 x the stable limit:\n");
+    for (lfem_model m : kModels) {
+        World w;
+        Mesh mesh;
+        make_box_mesh(mesh, 0.2, 0.1, 0.1, 8, 4, 4);
+        lfem_body_def d = deformable(m, 1e6, 0.3, 1000.0);
+        d.linear_velocity[0] = 0.5;
+        d.angular_velocity[1] = 3.0;
+        const lfem_body b = add_body(w, d, mesh);
+        const double dt = 100 * stable_step(w);
+        for (int call = 0; call < 3; ++call) {
+            const double limit = stable_step(w);
+            const uint32_t expected = uint32_t(std::ceil(dt / (0.9 * limit)));
+            ASSERT_EQ(lfem_world_step(w, dt), LFEM_OK) << lfem_last_error();
+            const lfem_world_stats s = stats(w);
+            std::printf("  %-13s call %d: limit %.4e s, %u sub-steps (expected %u), step %.4e s, "
+                        "energy error %.1e of the energy\n",
+                        model_name(m), call, limit, s.substeps_last_call, expected, s.step_size,
+                        s.energy_error / (s.kinetic_energy + s.strain_energy));
+            EXPECT_EQ(s.substeps_last_call, expected) << model_name(m);
+            EXPECT_NEAR(s.step_size, dt / expected, 1e-12 * dt);
+            // Undamped, no contact: kinetic + strain = initial + work of gravity up to the
+            // scheme's O(h^2) error; 1 % of the energy is generous (the test_stability bound).
+            EXPECT_LT(std::fabs(s.energy_error), 0.01 * (s.kinetic_energy + s.strain_energy));
+            EXPECT_TRUE(all_finite(positions(w, b)));
+        }
+    }
+}
+
+TEST(Extreme, HundredThousandStepsOfRestingContactWithoutDriftJitterOrCreep) {
+    // A 10 cm cube of 2^3 cells (l = 5 cm), E = 1e5 Pa: a 2 ms stable step, so 1e5 steps are
+    // 200 s of resting on a static block under gravity (friction 0.5, damping 20 / s). After
+    // 5e3 steps of settling (the slowest mode, ~100 rad/s, has decayed by e^-100), 9.5e4 more.
+    // Bounds, with l = 5 cm and h the step:
+    // - creep and drift: the resting solve stops at 1e-9 l; were that error to accumulate every
+    //   step, the centre of mass would move by ~1e-4 l over 9.5e4 steps. Required: 1e-6 l.
+    // - jitter: a position noise of 1e-9 l per step reads as a velocity of 1e-9 l / h; allowed
+    //   ten times that, RMS over the nodes, at every call.
+    const double l = 0.05;
+    std::printf("1e5 steps of resting contact (cube of 2^3 cells on a static block):\n");
+    for (lfem_model m : kModels) {
+        World w;
+        Mesh block, cube;
+        make_box_mesh(block, 0.2, 0.2, 0.05, 2, 2, 1, -0.1, -0.1, -0.05);
+        lfem_body_def sd = lfem_body_def_default();
+        sd.type = LFEM_BODY_STATIC;
+        add_body(w, sd, block);
+        make_box_mesh(cube, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0);
+        lfem_body_def d = deformable(m, 1e5, 0.3, 1000.0);
+        d.friction = 0.5;
+        d.damping = 20.0;
+        const lfem_body b = add_body(w, d, cube);
+        // Lumped node masses, rho V_e / 4 per tet, for the centre of mass.
+        std::vector<double> mass(cube.nodes(), 0.0);
+        const uint32_t* tets = lfem_mesh_get_tets(cube.m);
+        const std::vector<double> X = positions(w, b);
+        for (uint32_t e = 0; e < cube.tets(); ++e) {
+            const double V = volume(X, tets + 4 * e, 1);
+            for (int a = 0; a < 4; ++a) mass[tets[4 * e + a]] += 1000.0 * V / 4;
+        }
+        auto centre = [&] {
+            const std::vector<double> x = positions(w, b);
+            double c[3] = {0, 0, 0}, M = 0;
+            for (size_t i = 0; i < mass.size(); ++i) {
+                for (int k = 0; k < 3; ++k) c[k] += mass[i] * x[3 * i + k];
+                M += mass[i];
+            }
+            return std::vector<double>{c[0] / M, c[1] / M, c[2] / M};
+        };
+        const double h = 0.9 * stable_step(w);
+        ASSERT_EQ(lfem_world_set_time_step(w, h), LFEM_OK);
+        std::vector<double> c0;
+        double drift = 0, rms = 0, penetration = 0;
+        for (int call = 0; call < 1000; ++call) {  // 100 sub-steps per call
+            ASSERT_EQ(lfem_world_step(w, 100 * h), LFEM_OK) << lfem_last_error();
+            ASSERT_EQ(stats(w).substeps_last_call, 100u);
+            if (call == 49) c0 = centre();
+            if (call < 50) continue;
+            const std::vector<double> c = centre();
+            drift = std::fmax(drift, std::sqrt((c[0] - c0[0]) * (c[0] - c0[0]) + (c[1] - c0[1]) * (c[1] - c0[1]) +
+                                               (c[2] - c0[2]) * (c[2] - c0[2])));
+            const std::vector<double> v = velocities(w, b);
+            double s = 0;
+            for (double x : v) s += x * x;
+            rms = std::fmax(rms, std::sqrt(s / (v.size() / 3)));
+            penetration = std::fmax(penetration, stats(w).max_penetration);
+        }
+        const lfem_world_stats s = stats(w);
+        std::printf("  %-13s %llu steps of %.2e s: centre moved %.1e m (bound %.0e), RMS velocity "
+                    "<= %.1e m/s (bound %.1e), penetration <= %.1e m, %u contacts\n",
+                    model_name(m), (unsigned long long)s.steps, h, drift, 1e-6 * l, rms,
+                    10 * 1e-9 * l / h, penetration, s.contact_count);
+        EXPECT_EQ(s.steps, 100000u);
+        EXPECT_LT(drift, 1e-6 * l) << model_name(m);
+        EXPECT_LT(rms, 10 * 1e-9 * l / h) << model_name(m);
+        EXPECT_LT(penetration, 1e-9 * l * 10) << model_name(m);  // ten sweeps of the tolerance
+        EXPECT_GT(s.contact_count, 0u);
+    }
+}
+
+TEST(Extreme, BodiesStartingInterpenetratedSeparateWithoutBlowingUp) {
+    // Two 10 cm blocks (4^3 cells, l = 2.5 cm) created overlapping by 0.1 l and 0.4 l (the
+    // detection takes a node up to 0.5 l behind a face as inside, src/contact). No gravity,
+    // frictionless, damping 5 / s. The overlap is let out at most 1e-3 l per step
+    // (detect_node_triangle.cpp), so no node pair separates faster than 1e-3 l / h; elastic
+    // recoil can at most double that per body: fastest node below 4e-3 l / h, and the energy
+    // gained below that of both bodies moving at it, 1/2 M (4e-3 l / h)^2.
+    const double l = 0.025;
+    std::printf("bodies created interpenetrated:\n");
+    for (double overlap : {0.1 * l, 0.4 * l})
+        for (lfem_model m : kModels) {
+            lfem_world_def wd = lfem_world_def_default();
+            wd.gravity[2] = 0.0;
+            World w(wd);
+            Mesh a_mesh, b_mesh;
+            make_box_mesh(a_mesh, 0.1, 0.1, 0.1, 4, 4, 4, -0.1, -0.05, -0.05);
+            make_box_mesh(b_mesh, 0.1, 0.1, 0.1, 4, 4, 4, -overlap, -0.05, -0.05);
+            lfem_body_def d = deformable(m, 1e6, 0.3, 1000.0);
+            d.damping = 5.0;
+            const lfem_body a = add_body(w, d, a_mesh);
+            const lfem_body b = add_body(w, d, b_mesh);
+            double M = 0, mb = 0;
+            lfem_body_get_mass(w, a, &M);
+            lfem_body_get_mass(w, b, &mb);
+            M += mb;
+            double h = 0, fastest = 0, gained = 0;
+            bool finite = true;
+            lfem_status status = LFEM_OK;
+            for (int i = 0; i < 200 && status == LFEM_OK; ++i) {
+                status = lfem_world_step(w, 5e-3);
+                h = stats(w).step_size;  // the sub-step actually taken
+                gained = std::fmax(gained, energy(stats(w)));
+                for (lfem_body body : {a, b}) {
+                    const std::vector<double> v = velocities(w, body);
+                    finite = finite && all_finite(v) && all_finite(positions(w, body));
+                    for (size_t k = 0; k < v.size(); k += 3)
+                        fastest = std::fmax(fastest, std::sqrt(v[k] * v[k] + v[k + 1] * v[k + 1] + v[k + 2] * v[k + 2]));
+                }
+            }
+            const std::vector<double> xa = positions(w, a), xb = positions(w, b);
+            double a_right = -1, b_left = 1;
+            for (size_t k = 0; k < xa.size(); k += 3) a_right = std::fmax(a_right, xa[k]);
+            for (size_t k = 0; k < xb.size(); k += 3) b_left = std::fmin(b_left, xb[k]);
+            const double v_bound = 4e-3 * l / h, e_bound = 0.5 * M * v_bound * v_bound;
+            std::printf("  %-13s overlap %.2f l: %s, left %.1e m, fastest node %.3f m/s (bound %.3f), "
+                        "energy gained %.1e J (bound %.1e)\n",
+                        model_name(m), overlap / l, lfem_status_string(status), a_right - b_left,
+                        fastest, v_bound, gained, e_bound);
+            EXPECT_EQ(status, LFEM_OK) << lfem_last_error();
+            EXPECT_TRUE(finite);
+            // Separated: what is left is below the contact's capture band of the solve
+            // (the residual depth allowance, 1e-3 l).
+            EXPECT_LT(a_right - b_left, 1e-3 * l) << model_name(m);
+            EXPECT_LT(fastest, v_bound) << model_name(m);
+            EXPECT_LT(gained, e_bound) << model_name(m);
+        }
+}
