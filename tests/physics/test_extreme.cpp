@@ -117,6 +117,8 @@ struct Outcome {
     double v_h = 0;          // m, largest impact speed times the smallest sub-step
     uint64_t steps = 0;
     uint32_t most_substeps = 0;  // in one call
+    int retried_calls = 0;       // calls that took more sub-steps than the limit before them asked
+    bool counted = true;         // every call's reported sub-steps are the steps it added
     bool finite = true;
 };
 
@@ -127,6 +129,8 @@ Outcome run(lfem_world* w, lfem_body body, int calls, double dt, double speed) {
     const double E0 = energy(stats(w));
     double h_min = HUGE_VAL;
     for (int i = 0; i < calls; ++i) {
+        const uint64_t steps_before = stats(w).steps;
+        const double asked = std::ceil(dt / (0.9 * stable_step(w)) * (1 - 1e-12));
         o.status = lfem_world_step(w, dt);
         if (o.status != LFEM_OK) {
             o.message = lfem_last_error();
@@ -136,6 +140,8 @@ Outcome run(lfem_world* w, lfem_body body, int calls, double dt, double speed) {
         o.rise = std::fmax(o.rise, (energy(s) - E0) / E0);
         o.penetration = std::fmax(o.penetration, s.max_penetration);
         o.most_substeps = std::max(o.most_substeps, s.substeps_last_call);
+        o.retried_calls += s.substeps_last_call > std::max(asked, 1.0);
+        o.counted = o.counted && s.steps - steps_before == s.substeps_last_call;
         h_min = std::fmin(h_min, s.step_size);
         const std::vector<double> x = positions(w, body);
         o.finite = o.finite && all_finite(x) && all_finite(velocities(w, body));
@@ -154,6 +160,7 @@ Outcome run(lfem_world* w, lfem_body body, int calls, double dt, double speed) {
 void expect_bounded(const Outcome& o, const std::string& what) {
     EXPECT_EQ(o.status, LFEM_OK) << what << ": " << o.message;
     EXPECT_TRUE(o.finite) << what;
+    EXPECT_TRUE(o.counted) << what;
     EXPECT_LT(o.rise, 0.10) << what;                       // see the top of the file
     EXPECT_LT(o.penetration, 1e-2 * o.v_h + 1e-9) << what;  // ditto
     EXPECT_LT(o.below, 1e-2 * o.v_h + 1e-9) << what;
@@ -180,11 +187,11 @@ Outcome cube_on_block(const lfem_body_def& def, double speed, uint32_t cells = 3
 }
 
 void print(const char* label, const Outcome& o) {
-    std::printf("  %-44s %s steps %7llu, max %5u per call, energy %+.1e E0, penetration %.1e m "
-                "(1e-2 v h = %.1e), rebound %+.2f v\n",
+    std::printf("  %-44s %s steps %7llu, max %5u per call (%d calls redone), energy %+.1e E0, "
+                "penetration %.1e m (1e-2 v h = %.1e), rebound %+.2f v\n",
                 label, o.status == LFEM_OK ? "ok" : lfem_status_string(o.status),
-                (unsigned long long)o.steps, o.most_substeps, o.rise, std::fmax(o.penetration, o.below),
-                1e-2 * o.v_h, o.bounce);
+                (unsigned long long)o.steps, o.most_substeps, o.retried_calls, o.rise,
+                std::fmax(o.penetration, o.below), 1e-2 * o.v_h, o.bounce);
 }
 
 }  // namespace
@@ -263,6 +270,9 @@ TEST(Extreme, SoftNeoHookeanCubeHitNearAndAboveItsWaveSpeed) {
         print(label, o);
         if (v < 100.0) {
             expect_bounded(o, label);
+            if (v == 50.0) {
+                EXPECT_GT(o.retried_calls, 0) << label;  // the impact's call was redone
+            }
             continue;
         }
         // At and above the wave speed the first layers of tets are crushed through zero volume
@@ -272,8 +282,42 @@ TEST(Extreme, SoftNeoHookeanCubeHitNearAndAboveItsWaveSpeed) {
         // gained.
         EXPECT_EQ(o.status, LFEM_OK) << label << ": " << o.message;
         EXPECT_TRUE(o.finite) << label;
+        EXPECT_TRUE(o.counted) << label;
         EXPECT_LT(o.rise, 0.10) << label;
     }
+}
+
+TEST(Extreme, ACallThatCannotBeRedoneFailsAndLeavesTheWorldBitwiseUnchanged) {
+    // The 100 m/s soft cube again, with max_substeps at the count the first call needs: when
+    // the crushed cube outruns its sub-step, no retry fits, so the call returns LFEM_UNSTABLE,
+    // says why, and the world is exactly as before the call; stepping then goes on with a
+    // shorter dt.
+    lfem_world_def wd = lfem_world_def_default();
+    wd.gravity[2] = 0.0;
+    const double L = 0.1, gap = 0.05 * L / 6, dt = (gap / 100.0 + 8 * L / 100.0) / 10;
+    wd.max_substeps = 9;  // ceil(dt / (0.9 x 1.05e-4 s))
+    World w(wd);
+    Mesh block, cube;
+    add_static_block(w, block);
+    make_box_mesh(cube, L, L, L, 6, 6, 6, -L / 2, -L / 2, gap);
+    lfem_body_def d = deformable(LFEM_MODEL_NEO_HOOKEAN, 1e7, 0.3, 1000.0);
+    d.linear_velocity[2] = -100.0;
+    const lfem_body b = add_body(w, d, cube);
+    lfem_status status = LFEM_OK;
+    std::vector<unsigned char> before;
+    int call = 0;
+    for (; call < 10 && status == LFEM_OK; ++call) {
+        before = fingerprint(w, {b});
+        status = lfem_world_step(w, dt);
+    }
+    const std::string message = lfem_last_error();
+    std::printf("soft cube at 100 m/s with max_substeps 9: call %d: %s\n  %s\n", call,
+                lfem_status_string(status), message.c_str());
+    ASSERT_EQ(status, LFEM_UNSTABLE);
+    EXPECT_NE(message.find("rolled back"), std::string::npos) << message;
+    EXPECT_NE(message.find("max_substeps"), std::string::npos) << message;
+    EXPECT_EQ(before, fingerprint(w, {b}));
+    EXPECT_EQ(lfem_world_step(w, dt / 4), LFEM_OK) << lfem_last_error();
 }
 
 TEST(Extreme, MassRatio1e4BetweenCollidingBodies) {
