@@ -648,3 +648,35 @@ TEST(Extreme, BodiesStartingInterpenetratedSeparateWithoutBlowingUp) {
             EXPECT_LT(gained, e_bound) << model_name(m);
         }
 }
+
+TEST(Extreme, AFixedStepAboveTheCrushedBodysLimitIsRefusedUpFront) {
+    // The 100 m/s soft cube with a fixed time_step of 0.9 of its limit at rest: once the crushed
+    // cube's limit falls below that step, the next call is refused before anything changes
+    // (a fixed step is not retried), with a message naming the limit.
+    lfem_world_def wd = lfem_world_def_default();
+    wd.gravity[2] = 0.0;
+    World w(wd);
+    Mesh block, cube;
+    add_static_block(w, block);
+    const double L = 0.1, gap = 0.05 * L / 6;
+    make_box_mesh(cube, L, L, L, 6, 6, 6, -L / 2, -L / 2, gap);
+    lfem_body_def d = deformable(LFEM_MODEL_NEO_HOOKEAN, 1e7, 0.3, 1000.0);
+    d.linear_velocity[2] = -100.0;
+    const lfem_body b = add_body(w, d, cube);
+    const double h = 0.9 * stable_step(w);
+    ASSERT_EQ(lfem_world_set_time_step(w, h), LFEM_OK);
+    lfem_status status = LFEM_OK;
+    std::vector<unsigned char> before;
+    int call = 0;
+    for (; call < 200 && status == LFEM_OK; ++call) {
+        before = fingerprint(w, {b});
+        status = lfem_world_step(w, h);
+    }
+    const std::string message = lfem_last_error();
+    std::printf("soft cube at 100 m/s, fixed step %.3e s: call %d: %s\n  %s\n", h, call,
+                lfem_status_string(status), message.c_str());
+    ASSERT_EQ(status, LFEM_INVALID_ARGUMENT);
+    EXPECT_NE(message.find("exceeds the stable limit"), std::string::npos) << message;
+    EXPECT_EQ(before, fingerprint(w, {b}));
+    EXPECT_LT(stable_step(w), h);
+}
