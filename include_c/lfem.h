@@ -111,9 +111,13 @@ LFEM_API lfem_status lfem_world_create(const lfem_world_def* def, lfem_world** o
 LFEM_API void lfem_world_destroy(lfem_world* world);
 
 /* Advance the world by dt seconds (dt > 0, finite). The interval is split into equal sub-steps
- * no larger than the allowed step (automatic or fixed). If the state blows up, the call returns
- * LFEM_UNSTABLE; if memory runs out, LFEM_OUT_OF_MEMORY. Whatever the failure, the world is
- * rolled back, bitwise, to its state before the call, and stepping may go on. */
+ * no larger than the allowed step (automatic or fixed). With the automatic step, a call in which
+ * a body stiffens beyond its sub-step (neo-Hookean bodies, re-checked after every sub-step) or
+ * the state blows up is redone from its start with more sub-steps (at least twice as many, up
+ * to 4 times); stats.substeps_last_call reports the sub-steps of the run that was kept. If the
+ * state still blows up, the call returns LFEM_UNSTABLE; if memory runs out,
+ * LFEM_OUT_OF_MEMORY. Whatever the failure, the world is rolled back, bitwise, to its state
+ * before the call, and stepping may go on. */
 LFEM_API lfem_status lfem_world_step(lfem_world* world, double dt);
 
 /* Checkpoints. lfem_world_save writes everything a step depends on (definition, bodies,
@@ -133,7 +137,9 @@ LFEM_API lfem_status lfem_world_set_time_step(lfem_world* world, double time_ste
 
 /* The stable limit of the central difference step, in seconds: 2/omega_max of the stiffest
  * deformable body (power iteration on the element-by-element operator, capped by a proven
- * Gershgorin bound). Infinity (HUGE_VAL) when the world has no deformable body. */
+ * Gershgorin bound). For neo-Hookean bodies it is taken at the current shape (a crushed body is
+ * stiffer), so it may change from step to step. Infinity (HUGE_VAL) when the world has no
+ * deformable body. */
 LFEM_API lfem_status lfem_world_get_stable_step(const lfem_world* world, double* out);
 
 typedef struct lfem_world_stats {

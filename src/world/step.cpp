@@ -365,8 +365,7 @@ void World::step(double dt) {
                     "dt " + seconds(dt) + " needs " + number(count) +
                         " sub-steps of at most " + seconds(h_allowed) + ", more than max_substeps " +
                         std::to_string(def_.max_substeps));
-    const uint32_t substeps = uint32_t(count);
-    const double h = dt / substeps;
+    uint32_t substeps = uint32_t(count);
 
     // Snapshot for rollback: every body's state and the world's counters. Taking it may throw
     // (out of memory) before anything has changed; restoring it only moves, so cannot.
@@ -396,34 +395,68 @@ void World::step(double dt) {
         scale += 1e-12 * b.ref.total_mass * cd * cd;
     }
 
-    double work = 0.0, work_flow = 0.0;
-    for (uint32_t k = 0; k < substeps; ++k) {
-        double kinetic = 0.0, strain = 0.0, step_work = 0.0;
-        try {
-            substep(h, kinetic, strain, step_work);
+    // Under the automatic step a call is retried from the snapshot, with more sub-steps, when
+    // a body stiffened within it beyond its sub-step (the neo-Hookean limit is re-estimated at
+    // the current shape after every sub-step) or the state blew up: up to kMaxRetries times,
+    // each with at least twice the sub-steps. A fixed time_step is the caller's choice: no
+    // retry, and a blow-up fails the call at once.
+    constexpr int kMaxRetries = 4;
+    const bool automatic = def_.time_step == 0.0;
+    for (int attempt = 0;; ++attempt) {
+        const double h = dt / substeps;
+        double work = 0.0, work_flow = 0.0, limit_seen = limit;
+        uint32_t blew_up_at = 0, outran_at = 0;  // 1-based sub-step, 0 = none
+        for (uint32_t k = 0; k < substeps && blew_up_at == 0 && outran_at == 0; ++k) {
+            double kinetic = 0.0, strain = 0.0, step_work = 0.0;
+            try {
+                substep(h, kinetic, strain, step_work);
+            } catch (...) {
+                // Whatever failed inside (out of memory in detection, say), the caller gets the
+                // world as it was before the call, and the failure's own status.
+                roll_back();
+                throw;
+            }
+            work += step_work;
+            work_flow += std::fabs(step_work);
+            // A stable explicit step cannot create energy: kinetic + strain - work stays near
+            // the starting energy (minus damping). Measured with mid-step velocities it still
+            // wobbles, by up to a few times the energy that entered the fastest modes (a sudden
+            // load near the stable limit), so the test allows ten times the energy present or
+            // moved. An unstable step multiplies the energy every step (by about 47 at 1.5x the
+            // limit, 6 at 1.1x), so it passes that bound within a few steps of becoming visible.
+            const double balance = kinetic + strain - work;
+            if (!std::isfinite(balance) || balance > 10.0 * (start_energy + work_flow) + scale)
+                blew_up_at = k + 1;
+            if (automatic) {
+                limit_seen = std::min(limit_seen, stable_step());
+                if (h > limit_seen) outran_at = k + 1;
+            }
+        }
+        if (blew_up_at == 0 && outran_at == 0) break;
+        const double wanted = std::max(2.0 * substeps, std::ceil(dt / (def_.step_safety * limit_seen)));
+        if (!automatic || attempt == kMaxRetries || !(wanted <= double(def_.max_substeps))) {
+            roll_back();
+            const std::string where = std::to_string(blew_up_at ? blew_up_at : outran_at) + " of " +
+                                      std::to_string(substeps) + " (step " + seconds(h) +
+                                      ", stable limit " + seconds(limit_seen) + ", after " +
+                                      std::to_string(attempt) + " retries with more sub-steps)";
+            throw Error(LFEM_UNSTABLE,
+                        (blew_up_at ? "the state blew up at sub-step " + where
+                                    : "a body stiffened beyond the sub-step at sub-step " + where +
+                                          "; the next retry would need " + number(wanted) +
+                                          " sub-steps (max_substeps " +
+                                          std::to_string(def_.max_substeps) + ")") +
+                            "; the world was rolled back to its state before this call");
+        }
+        try {  // back to the snapshot, keeping it for a later failure (copies may allocate)
+            for (std::size_t i = 0; i < slots_.size(); ++i) slots_[i].body.state = saved[i];
+            counters_ = saved_counters;
+            contacts_ = saved_contacts;
         } catch (...) {
-            // Whatever failed inside (out of memory in detection, say), the caller gets the
-            // world as it was before the call, and the failure's own status.
             roll_back();
             throw;
         }
-        work += step_work;
-        work_flow += std::fabs(step_work);
-        // A stable explicit step cannot create energy: kinetic + strain - work stays near the
-        // starting energy (minus damping). Measured with mid-step velocities it still wobbles,
-        // by up to a few times the energy that entered the fastest modes (a sudden load near
-        // the stable limit), so the test allows ten times the energy present or moved. An
-        // unstable step multiplies the energy every step (by about 47 at 1.5x the limit, 6 at
-        // 1.1x), so it passes that bound within a few steps of becoming visible.
-        const double balance = kinetic + strain - work;
-        if (!std::isfinite(balance) || balance > 10.0 * (start_energy + work_flow) + scale) {
-            roll_back();
-            throw Error(LFEM_UNSTABLE,
-                        "the state blew up at sub-step " + std::to_string(k + 1) + " of " +
-                            std::to_string(substeps) + " (step " + seconds(h) +
-                            ", stable limit " + seconds(limit) +
-                            "); the world was rolled back to its state before this call");
-        }
+        substeps = uint32_t(wanted);
     }
     counters_.substeps_last_call = substeps;
 }

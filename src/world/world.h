@@ -67,10 +67,13 @@ public:
     // Overwrites velocities; the change of kinetic energy is booked as external work.
     void set_velocities(Body& body, const double* v);
 
-    // Stable limit 2/omega_max over the deformable bodies; +inf without any.
+    // Stable limit 2/omega_max over the deformable bodies, neo-Hookean ones at their current
+    // shape (O(n)); +inf without any.
     double stable_step() const;
-    // Advance by dt (see lfem_world_step). Throws Error: LFEM_INVALID_ARGUMENT when refused up
-    // front, LFEM_UNSTABLE after rolling back to the state before the call.
+    // Advance by dt (see lfem_world_step; under the automatic step, retried with more
+    // sub-steps when a body outruns its sub-step or blows up). Throws Error:
+    // LFEM_INVALID_ARGUMENT when refused up front, LFEM_UNSTABLE after rolling back to the
+    // state before the call.
     void step(double dt);
 
     // Takes over the definition, bodies, counters and contacts of a checkpoint (see
