@@ -125,6 +125,18 @@ LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_st
     });
 }
 
+LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profile* out) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(out, "out");
+        *out = w.profile();
+    });
+}
+
+LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world) {
+    return guard(__func__, [&] { world_of(world).reset_profile(); });
+}
+
 }  // extern "C"
 
 extern "C" LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
