@@ -32,6 +32,25 @@ CHECK_OFFSET(lfem_world_def, max_substeps, 56);
 CHECK_OFFSET(lfem_world_def, allow_unstable_step, 60);
 CHECK_OFFSET(lfem_world_def, internal_value, 64);
 
+CHECK_SIZE(lfem_phase_time, 16);
+CHECK_OFFSET(lfem_phase_time, seconds, 0);
+CHECK_OFFSET(lfem_phase_time, calls, 8);
+
+CHECK_SIZE(lfem_profile, 184);
+CHECK_OFFSET(lfem_profile, substeps, 0);
+CHECK_OFFSET(lfem_profile, internal_forces, 8);
+CHECK_OFFSET(lfem_profile, predictor, 24);
+CHECK_OFFSET(lfem_profile, kinematic_motion, 40);
+CHECK_OFFSET(lfem_profile, broad_phase, 56);
+CHECK_OFFSET(lfem_profile, narrow_phase, 72);
+CHECK_OFFSET(lfem_profile, shape_queries, 88);
+CHECK_OFFSET(lfem_profile, shape_tests, 104);
+CHECK_OFFSET(lfem_profile, ccd_queries, 112);
+CHECK_OFFSET(lfem_profile, normal_solve, 120);
+CHECK_OFFSET(lfem_profile, friction, 136);
+CHECK_OFFSET(lfem_profile, global_rotation, 152);
+CHECK_OFFSET(lfem_profile, commit, 168);
+
 CHECK_SIZE(lfem_world_stats, 160);
 CHECK_OFFSET(lfem_world_stats, time, 0);
 CHECK_OFFSET(lfem_world_stats, steps, 8);

@@ -60,6 +60,8 @@ typedef enum lfem_status {
     LFEM_IO_ERROR = 6,         /* a file could not be read or written, or is malformed */
     LFEM_OUT_OF_MEMORY = 7,
     LFEM_INTERNAL_ERROR = 8,   /* a bug in lfem: please report it with the message */
+    LFEM_UNSUPPORTED = 9,      /* this build leaves the feature out (LFEM_WITH_CCD,
+                                  LFEM_WITH_IO); the message names the option */
     LFEM_STATUS_FORCE32 = 0x7fffffff
 } lfem_status;
 
@@ -170,6 +172,51 @@ typedef struct lfem_world_stats {
 } lfem_world_stats;
 
 LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_stats* out);
+
+/* Where the step spends its time. Each phase accumulates, over every sub-step since the world
+ * was created (or since lfem_world_reset_profile), the wall time measured around it
+ * (std::chrono::steady_clock, taken once per phase per sub-step, never per element) and how
+ * often it ran. The counts are exact and repeatable; the seconds are measurements. A call of
+ * lfem_world_step that fails is rolled back, the profile with the rest of the world. Not saved
+ * in checkpoints (a loaded world starts from zero). */
+typedef struct lfem_phase_time {
+    double seconds;           /* s, wall time spent in the phase */
+    uint64_t calls;           /* how often it ran (the unit is given per phase below) */
+} lfem_phase_time;
+
+typedef struct lfem_profile {
+    uint64_t substeps;                  /* sub-steps profiled */
+    lfem_phase_time internal_forces;    /* elastic forces element by element at x^{n+1};
+                                           calls: deformable bodies x sub-steps */
+    lfem_phase_time predictor;          /* central-difference predictor (eqs. 1, 3) and the
+                                           rigid bodies' free motion; calls: deformable and
+                                           rigid bodies x sub-steps (never a static body) */
+    lfem_phase_time kinematic_motion;   /* rigid motion of kinematic bodies; calls: kinematic
+                                           bodies x sub-steps */
+    lfem_phase_time broad_phase;        /* swept boxes of the boundary triangles and the spatial
+                                           hash; calls: sub-steps that ran detection */
+    lfem_phase_time narrow_phase;       /* per slave node: hash query and node-triangle tests
+                                           (eqs. 5, 6); calls: sub-steps that ran detection */
+    lfem_phase_time shape_queries;      /* node against rigid shapes; calls: sub-steps in which
+                                           some body had shapes to test against */
+    uint64_t shape_tests;               /* point queries of shapes: closed form and libccd */
+    uint64_t ccd_queries;               /* of those, libccd MPR queries (convex hulls) */
+    lfem_phase_time normal_solve;       /* multiplier solve: set-up, warm start, normal
+                                           (tension release) updates; calls: sub-steps with
+                                           pairs to solve */
+    lfem_phase_time friction;           /* multiplier solve: tangential updates and the return
+                                           onto the Coulomb cone (eq. 7); calls: sub-steps with
+                                           a pair of non-zero friction */
+    lfem_phase_time global_rotation;    /* eq. (2) and the re-fit of the floating frame;
+                                           calls: "paper"-model bodies x sub-steps */
+    lfem_phase_time commit;             /* velocities, contact forces, energy bookkeeping;
+                                           calls: deformable and rigid bodies x sub-steps */
+} lfem_profile;
+
+/* The accumulated profile (see lfem_profile). */
+LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profile* out);
+/* Set every time and count of the profile back to zero. */
+LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world);
 
 /* ---------------------------------------------------------------------------------------- */
 /* Bodies                                                                                     */

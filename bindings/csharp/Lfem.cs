@@ -27,6 +27,7 @@ namespace Lfem
         IoError = 6,         // a file could not be read or written, or is malformed
         OutOfMemory = 7,
         InternalError = 8,   // a bug in lfem: please report it with the message
+        Unsupported = 9,     // this build leaves the feature out (LFEM_WITH_CCD, LFEM_WITH_IO)
     }
 
     public enum BodyType : int
@@ -101,6 +102,33 @@ namespace Lfem
         public double SolverResidual;   // m
         public double MaxPenetration;   // m
         public double RotationDrift;    // rad
+    }
+
+    /// <summary>lfem_phase_time: wall time (s) and run count of one phase of the step.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct PhaseTime
+    {
+        public double Seconds;
+        public ulong Calls;
+    }
+
+    /// <summary>lfem_profile: per-phase time and counts of the step, accumulated.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Profile
+    {
+        public ulong Substeps;
+        public PhaseTime InternalForces;
+        public PhaseTime Predictor;
+        public PhaseTime KinematicMotion;
+        public PhaseTime BroadPhase;
+        public PhaseTime NarrowPhase;
+        public PhaseTime ShapeQueries;
+        public ulong ShapeTests;
+        public ulong CcdQueries;
+        public PhaseTime NormalSolve;
+        public PhaseTime Friction;
+        public PhaseTime GlobalRotation;
+        public PhaseTime Commit;
     }
 
     /// <summary>A body handle (lfem_body): a value. Body.Null is {0, 0}.</summary>
@@ -328,6 +356,14 @@ namespace Lfem
         {
             get { WorldStats s; LfemException.Check(Native.lfem_world_get_stats(handle, out s)); return s; }
         }
+
+        /// <summary>Per-phase time and counts since creation or ResetProfile.</summary>
+        public Profile Profile
+        {
+            get { Profile p; LfemException.Check(Native.lfem_world_get_profile(handle, out p)); return p; }
+        }
+
+        public void ResetProfile() { LfemException.Check(Native.lfem_world_reset_profile(handle)); }
 
         // ---- bodies ----
 
@@ -698,6 +734,8 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_set_time_step(WorldHandle world, double timeStep);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_stable_step(WorldHandle world, out double stableStep);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_stats(WorldHandle world, out WorldStats stats);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_profile(WorldHandle world, out Profile profile);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_reset_profile(WorldHandle world);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern BodyDef lfem_body_def_default();
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_create(WorldHandle world, ref BodyDef def, out Body body);

@@ -51,4 +51,11 @@ inline void require_finite(const double* v, std::size_t n, const char* name) {
                         std::string(name) + "[" + std::to_string(i) + "] is not finite");
 }
 
+// A feature this build leaves out: LFEM_UNSUPPORTED, naming the CMake option that brings it
+// back. Called after the arguments were checked, so a bad argument still gets its own status.
+[[noreturn]] inline void unsupported(const std::string& what, const char* option) {
+    throw Error(LFEM_UNSUPPORTED, what + " is not part of this build of lfem (configured with " +
+                                      option + "=OFF; rebuild with " + option + "=ON)");
+}
+
 }  // namespace lfem::api

@@ -9,7 +9,9 @@
 
 #include "api/guard.h"
 #include "lfem.h"
+#if LFEM_WITH_IO
 #include "mesh/gmsh_reader.h"
+#endif
 #include "mesh/mesh_builders.h"
 #include "mesh/tet_mesh.h"
 
@@ -95,8 +97,12 @@ LFEM_API lfem_status lfem_mesh_load_gmsh(const char* path, lfem_mesh** out) {
     return lfem::api::guard(__func__, [&] {
         require_pointer(path, "path");
         require_pointer(out, "out");
+#if LFEM_WITH_IO
         lfem::TetMesh m = lfem::read_gmsh(path);
         *out = new lfem_mesh{std::move(m)};
+#else
+        lfem::api::unsupported("the Gmsh reader", "LFEM_WITH_IO");
+#endif
     });
 }
 

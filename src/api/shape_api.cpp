@@ -84,6 +84,9 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, cons
             case LFEM_SHAPE_CONVEX_HULL:
                 require_pointer(d.points, "def->points");
                 check_hull(d.points, d.point_count);
+#if !LFEM_WITH_CCD
+                unsupported("convex-hull shapes (libccd)", "LFEM_WITH_CCD");
+#endif
                 shape.points.assign(d.points, d.points + 3 * std::size_t(d.point_count));
                 break;
             default:

@@ -32,6 +32,7 @@ LFEM_API const char* lfem_status_string(lfem_status status) {
         case LFEM_IO_ERROR: return "LFEM_IO_ERROR: file could not be read or written";
         case LFEM_OUT_OF_MEMORY: return "LFEM_OUT_OF_MEMORY: out of memory";
         case LFEM_INTERNAL_ERROR: return "LFEM_INTERNAL_ERROR: internal error";
+        case LFEM_UNSUPPORTED: return "LFEM_UNSUPPORTED: this build leaves the feature out";
         default: return "unknown status";
     }
 }

@@ -1,19 +1,50 @@
-// C shim of the ParaView time series: gathers every body of a world into one frame.
+// C shim of the ParaView time series: gathers every body of a world into one frame. Without
+// LFEM_WITH_IO the entry points check their arguments and answer LFEM_UNSUPPORTED.
 #include <string>
 #include <vector>
 
 #include "api/handles.h"
 #include "fem/internal_forces.h"
+#if LFEM_WITH_IO
 #include "mesh/vtk_writer.h"
+#endif
 
 using namespace lfem;
 using namespace lfem::api;
 
+#if LFEM_WITH_IO
 struct lfem_vtk_series {
     explicit lfem_vtk_series(std::string path) : series(std::move(path)) {}
     PvdSeries series;
 };
+#else
+struct lfem_vtk_series {};  // never created in this build
 
+extern "C" {
+
+LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_series** out) {
+    return guard(__func__, [&] {
+        require_pointer(pvd_path, "pvd_path");
+        require_pointer(out, "out");
+        require(pvd_path[0] != '\0', "pvd_path is empty");
+        unsupported("the VTK writer", "LFEM_WITH_IO");
+    });
+}
+
+LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series, const lfem_world* world) {
+    return guard(__func__, [&] {
+        require_pointer(series, "series");
+        world_of(world);
+        unsupported("the VTK writer", "LFEM_WITH_IO");
+    });
+}
+
+LFEM_API void lfem_vtk_series_destroy(lfem_vtk_series* series) { delete series; }
+
+}  // extern "C"
+#endif
+
+#if LFEM_WITH_IO
 extern "C" {
 
 LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_series** out) {
@@ -59,3 +90,4 @@ LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series, const 
 LFEM_API void lfem_vtk_series_destroy(lfem_vtk_series* series) { delete series; }
 
 }  // extern "C"
+#endif

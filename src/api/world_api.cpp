@@ -68,7 +68,12 @@ LFEM_API lfem_status lfem_world_save(const lfem_world* world, const char* path) 
     return guard(__func__, [&] {
         const World& w = world_of(world);
         require_pointer(path, "path");
+#if LFEM_WITH_IO
         save_checkpoint(w, path);
+#else
+        (void)w;
+        unsupported("checkpoint files", "LFEM_WITH_IO");
+#endif
     });
 }
 
@@ -76,7 +81,15 @@ LFEM_API lfem_status lfem_world_load(const char* path, lfem_world** out) {
     return guard(__func__, [&] {
         require_pointer(path, "path");
         require_pointer(out, "out");
+#if LFEM_WITH_IO
         WorldImage image = read_checkpoint(path);
+#if !LFEM_WITH_CCD
+        for (const Body& b : image.bodies)
+            for (const RigidShape& s : b.shapes)
+                if (s.type == LFEM_SHAPE_CONVEX_HULL)
+                    unsupported(std::string("checkpoint ") + path + " holds a convex-hull shape: hulls (libccd)",
+                                "LFEM_WITH_CCD");
+#endif
         // The definitions must pass the checks a caller's would: a file is not trusted more.
         try {
             check_world_def(image.def);
@@ -88,6 +101,9 @@ LFEM_API lfem_status lfem_world_load(const char* path, lfem_world** out) {
         std::unique_ptr<lfem_world> world(new lfem_world(image.def));
         world->world.restore(std::move(image));
         *out = world.release();
+#else
+        unsupported("checkpoint files", "LFEM_WITH_IO");
+#endif
     });
 }
 
@@ -123,6 +139,18 @@ LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_st
         require_pointer(out, "out");
         *out = w.stats();
     });
+}
+
+LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profile* out) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(out, "out");
+        *out = w.profile();
+    });
+}
+
+LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world) {
+    return guard(__func__, [&] { world_of(world).reset_profile(); });
 }
 
 }  // extern "C"

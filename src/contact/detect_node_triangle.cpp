@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "common/profile.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
@@ -115,7 +116,7 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
 // capture band at the end of the step, no deeper at its start than the pair was left, facing
 // the node's surface.
 void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
-                     uint32_t j, double depth_allowance, Candidate& best) {
+                     uint32_t j, double depth_allowance, Candidate& best, lfem_profile& profile) {
     const RigidShape& shape = b.shapes[j];
     const ShapePose pose_end = ShapePose::load(b.shape_pose + 7 * std::size_t(j));
     const ShapePose pose_start = ShapePose::load(b.shape_pose_start + 7 * std::size_t(j));
@@ -125,9 +126,12 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
     if ((x_end - pose_end.center).norm() > reach) return;  // far from a bounded shape
     double gap, start_gap;
     Vec3 n, n_start;
+    const uint64_t by_ccd = shape.type == LFEM_SHAPE_CONVEX_HULL;
+    profile.shape_tests += 1, profile.ccd_queries += by_ccd;
     if (!shape_signed_distance(shape, pose_end, x_end, band, gap, n)) return;
     // At the start the node may be anywhere along its path: ask with the whole path as reach.
     const double path = (x_end - x_start).norm() + band;
+    profile.shape_tests += 1, profile.ccd_queries += by_ccd;
     if (shape_signed_distance(shape, pose_start, x_start, path, start_gap, n_start) &&
         start_gap < -depth_allowance)
         return;
@@ -142,6 +146,33 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
     // The same material point of the shape at the start of the step.
     best.point_start = pose_start.center +
                        pose_start.rotation * (pose_end.rotation.conjugate() * (best.point_end - pose_end.center));
+}
+
+// The constraint of node p of `a` against the candidate face or shape of `b`.
+ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b, const Candidate& c) {
+    ContactRecord r;
+    r.body_a = a.slot;
+    r.node = p;
+    r.body_b = b.slot;
+    r.shape = c.shape;
+    for (int k = 0; k < 3; ++k) {
+        r.triangle[k] = c.shape == UINT32_MAX ? b.triangles[3 * c.triangle + k] : UINT32_MAX;
+        r.normal[k] = c.normal[k];
+        r.point_start[k] = c.point_start[k];
+        r.point_end[k] = c.point_end[k];
+    }
+    // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c); a shape point: none
+    r.t2 = c.shape == UINT32_MAX ? c.w[1] : 0.0;
+    r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
+    // A node that starts the step inside is let out gradually (target gap < 0): by 20 % of
+    // the overlap per step, but never faster than 1e-3 of an edge per step, so bodies created
+    // deeply overlapping separate slowly instead of jumping apart.
+    if (c.start_gap < 0.0) {
+        const double overlap = -c.start_gap;
+        const double l = c.shape == UINT32_MAX ? b.edge_length : a.edge_length;
+        r.offset = overlap - std::min(kOverlapRecovery * overlap, kMaxRecovery * l);
+    }
+    return r;
 }
 
 // Does the open segment from `from` to `to` cross a boundary triangle of body b other than
@@ -176,7 +207,8 @@ bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t bi, uint32_
 
 void detect_node_triangle(const std::vector<ContactBody>& bodies,
                           const std::vector<ContactRecord>& previous, bool scan_overlaps,
-                          DetectionScratch& s, std::vector<ContactRecord>& out) {
+                          DetectionScratch& s, std::vector<ContactRecord>& out,
+                          lfem_profile& profile) {
     out.clear();
     double max_offset = 0.0;
     for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
@@ -195,127 +227,149 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
         return find_previous(body_a, node, body_b) != nullptr;
     };
     const auto kept_offset = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
-        const auto key = std::make_tuple(body_a, node, body_b);
-        const auto it = std::lower_bound(previous.begin(), previous.end(), key,
-                                         [](const ContactRecord& r, const decltype(key)& k) {
-                                             return std::make_tuple(r.body_a, r.node, r.body_b) < k;
-                                         });
-        return it != previous.end() && it->body_a == body_a && it->node == node && it->body_b == body_b
-                   ? std::max(0.0, -it->gap_after)
-                   : 0.0;
+        const ContactRecord* r = find_previous(body_a, node, body_b);
+        return r ? std::max(0.0, -r->gap_after) : 0.0;
     };
-    // Boxes of every boundary triangle over the whole step, grown by the capture band and the
-    // deepest overlap being recovered.
-    s.boxes.clear();
-    s.box_body.clear();
-    s.box_triangle.clear();
-    double cell = 0.0;
-    for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
-        const ContactBody& b = bodies[bi];
-        const double grow =
-            std::max(kCaptureBand * b.edge_length + max_offset, scan_overlaps ? kInitialDepth * b.edge_length : 0.0);
-        cell = std::max(cell, b.edge_length);
-        for (uint32_t t = 0; t < b.triangle_count; ++t) {
-            Aabb box;
-            for (int k = 0; k < 3; ++k) box.lo[k] = HUGE_VAL, box.hi[k] = -HUGE_VAL;
-            for (int v = 0; v < 3; ++v) {
-                const uint32_t i = b.triangles[3 * t + v];
-                for (int k = 0; k < 3; ++k) {
-                    const double x0 = b.x_start[3 * i + k], x1 = b.x[3 * i + k];
-                    box.lo[k] = std::min({box.lo[k], x0, x1});
-                    box.hi[k] = std::max({box.hi[k], x0, x1});
+    // Broad phase: boxes of every boundary triangle over the whole step, grown by the capture
+    // band and the deepest overlap being recovered, in a spatial hash.
+    {
+        PhaseTimer timer(profile.broad_phase);
+        s.boxes.clear();
+        s.box_body.clear();
+        s.box_triangle.clear();
+        double cell = 0.0;
+        for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+            const ContactBody& b = bodies[bi];
+            const double grow = std::max(kCaptureBand * b.edge_length + max_offset,
+                                         scan_overlaps ? kInitialDepth * b.edge_length : 0.0);
+            cell = std::max(cell, b.edge_length);
+            for (uint32_t t = 0; t < b.triangle_count; ++t) {
+                Aabb box;
+                for (int k = 0; k < 3; ++k) box.lo[k] = HUGE_VAL, box.hi[k] = -HUGE_VAL;
+                for (int v = 0; v < 3; ++v) {
+                    const uint32_t i = b.triangles[3 * t + v];
+                    for (int k = 0; k < 3; ++k) {
+                        const double x0 = b.x_start[3 * i + k], x1 = b.x[3 * i + k];
+                        box.lo[k] = std::min({box.lo[k], x0, x1});
+                        box.hi[k] = std::max({box.hi[k], x0, x1});
+                    }
                 }
+                for (int k = 0; k < 3; ++k) box.lo[k] -= grow, box.hi[k] += grow;
+                s.boxes.push_back(box);
+                s.box_body.push_back(bi);
+                s.box_triangle.push_back(t);
             }
-            for (int k = 0; k < 3; ++k) box.lo[k] -= grow, box.hi[k] += grow;
-            s.boxes.push_back(box);
-            s.box_body.push_back(bi);
-            s.box_triangle.push_back(t);
         }
+        if (!s.boxes.empty()) s.grid.build(s.boxes, 2.0 * cell);
     }
     if (s.boxes.empty()) return;
-    s.grid.build(s.boxes, 2.0 * cell);
 
+    // Narrow phase: every slave node against the triangles near its path. When some body has
+    // rigid shapes, the node normals, where each node's records start in `out` and the gap of
+    // every record are kept for the shape pass below.
+    bool any_shapes = false;
+    for (const ContactBody& b : bodies) any_shapes = any_shapes || b.shape_count > 0;
+    s.slave_normals.clear();
+    s.record_begin.clear();
+    s.record_gap.clear();
     std::vector<Candidate> best(bodies.size()), deep(bodies.size());
+    {
+        PhaseTimer timer(profile.narrow_phase);
+        for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
+            const ContactBody& a = bodies[ai];
+            // Outward normals of the body's boundary nodes at x*: area-weighted means of the
+            // normals of the triangles around each node.
+            if (a.node_count == 0) continue;  // no slave nodes (a flat static surface)
+            s.node_normals.assign(3 * std::size_t(a.total_nodes), 0.0);
+            for (uint32_t t = 0; t < a.triangle_count; ++t) {
+                const uint32_t* tri = &a.triangles[3 * t];
+                const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));
+                for (int v = 0; v < 3; ++v)
+                    for (int k = 0; k < 3; ++k) s.node_normals[3 * tri[v] + k] += n2[k];
+            }
+            for (uint32_t j = 0; j < a.node_count; ++j) {
+                const uint32_t p = a.nodes[j];
+                const Vec3 node_normal = at(s.node_normals.data(), p).normalized();
+                if (any_shapes) {
+                    for (int k = 0; k < 3; ++k) s.slave_normals.push_back(node_normal[k]);
+                    s.record_begin.push_back(uint32_t(out.size()));
+                }
+                Aabb box;
+                for (int k = 0; k < 3; ++k) {
+                    box.lo[k] = std::min(a.x_start[3 * p + k], a.x[3 * p + k]);
+                    box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
+                }
+                s.candidates.clear();
+                s.grid.query(box, s.candidates);
+                for (Candidate& c : best) c.found = false;
+                for (Candidate& c : deep) c.found = false;
+                for (uint32_t id : s.candidates) {
+                    const ContactBody& b = bodies[s.box_body[id]];
+                    if (s.box_body[id] == ai || !bodies_may_touch(a, b)) continue;
+                    const double allowance =
+                        1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * b.edge_length;
+                    const bool first_touch = scan_overlaps && !kept_offset_known(a.slot, p, b.slot);
+                    test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance,
+                                       best[s.box_body[id]], first_touch ? &deep[s.box_body[id]] : nullptr);
+                }
+                // An overlap met for the first time: accepted when nothing of the other body
+                // lies between the node and the face (then the node is inside, and this face is
+                // its nearest way out); otherwise the node is merely beyond a thin part.
+                for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+                    Candidate& c = deep[bi];
+                    if (!c.found || best[bi].found) continue;
+                    const Vec3 x = at(a.x_start, p);
+                    if (!segment_crosses_body(x, x - c.start_gap * c.normal, bi, c.triangle, bodies[bi], s))
+                        best[bi] = c;
+                }
+                for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+                    if (!best[bi].found) continue;
+                    out.push_back(make_record(a, p, bodies[bi], best[bi]));
+                    if (any_shapes) s.record_gap.push_back(best[bi].gap);
+                }
+            }
+        }
+        if (any_shapes) s.record_begin.push_back(uint32_t(out.size()));
+    }
+    if (!any_shapes) return;
+
+    // Rigid shapes: each slave node against the shapes of the other bodies; a shape replaces
+    // the node's triangle of the same body when it is penetrated less. The records are rebuilt
+    // in the same order (body, node, other body).
+    PhaseTimer timer(profile.shape_queries);
+    s.merged.clear();
+    std::size_t g = 0;  // slave node over all bodies, as in the narrow phase
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
         const ContactBody& a = bodies[ai];
-        // Outward normals of the body's boundary nodes at x*: area-weighted means of the
-        // normals of the triangles around each node.
-        if (a.node_count == 0) continue;  // no slave nodes (a flat static surface)
-        s.node_normals.assign(3 * std::size_t(a.total_nodes), 0.0);
-        for (uint32_t t = 0; t < a.triangle_count; ++t) {
-            const uint32_t* tri = &a.triangles[3 * t];
-            const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));
-            for (int v = 0; v < 3; ++v)
-                for (int k = 0; k < 3; ++k) s.node_normals[3 * tri[v] + k] += n2[k];
-        }
-        for (uint32_t j = 0; j < a.node_count; ++j) {
+        if (a.node_count == 0) continue;
+        for (uint32_t j = 0; j < a.node_count; ++j, ++g) {
             const uint32_t p = a.nodes[j];
-            const Vec3 node_normal = at(s.node_normals.data(), p).normalized();
-            Aabb box;
-            for (int k = 0; k < 3; ++k) {
-                box.lo[k] = std::min(a.x_start[3 * p + k], a.x[3 * p + k]);
-                box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
-            }
-            s.candidates.clear();
-            s.grid.query(box, s.candidates);
-            for (Candidate& c : best) c.found = false;
-            for (Candidate& c : deep) c.found = false;
-            for (uint32_t id : s.candidates) {
-                const ContactBody& b = bodies[s.box_body[id]];
-                if (s.box_body[id] == ai || !bodies_may_touch(a, b)) continue;
-                const double allowance =
-                    1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * b.edge_length;
-                const bool first_touch = scan_overlaps && !kept_offset_known(a.slot, p, b.slot);
-                test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance,
-                                   best[s.box_body[id]], first_touch ? &deep[s.box_body[id]] : nullptr);
-            }
-            // An overlap met for the first time: accepted when nothing of the other body lies
-            // between the node and the face (then the node is inside, and this face is its
-            // nearest way out); otherwise the node is merely beyond a thin part.
-            for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
-                Candidate& c = deep[bi];
-                if (!c.found || best[bi].found) continue;
-                const Vec3 x = at(a.x_start, p);
-                if (!segment_crosses_body(x, x - c.start_gap * c.normal, bi, c.triangle, bodies[bi], s))
-                    best[bi] = c;
-            }
+            const Vec3 node_normal = at(s.slave_normals.data(), uint32_t(g));
+            const uint32_t begin = s.record_begin[g], end = s.record_begin[g + 1];
+            uint32_t next = begin;  // this node's records, ordered by body
             for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
                 const ContactBody& b = bodies[bi];
-                if (bi == ai || b.shape_count == 0 || !bodies_may_touch(a, b)) continue;
-                const double allowance = 1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * a.edge_length;
-                for (uint32_t j = 0; j < b.shape_count; ++j)
-                    test_node_shape(a, p, node_normal, b, j, allowance, best[bi]);
-            }
-            for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
-                const Candidate& c = best[bi];
-                if (!c.found) continue;
-                const ContactBody& b = bodies[bi];
-                ContactRecord r;
-                r.body_a = a.slot;
-                r.node = p;
-                r.body_b = b.slot;
-                r.shape = c.shape;
-                for (int k = 0; k < 3; ++k) {
-                    r.triangle[k] = c.shape == UINT32_MAX ? b.triangles[3 * c.triangle + k] : UINT32_MAX;
-                    r.normal[k] = c.normal[k];
-                    r.point_start[k] = c.point_start[k];
-                    r.point_end[k] = c.point_end[k];
+                while (next < end && out[next].body_b < b.slot) s.merged.push_back(out[next++]);
+                const bool has_triangle = next < end && out[next].body_b == b.slot;
+                if (bi != ai && b.shape_count > 0 && bodies_may_touch(a, b)) {
+                    Candidate c;
+                    c.found = has_triangle;
+                    if (has_triangle) c.gap = s.record_gap[next];
+                    const double allowance = 1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * a.edge_length;
+                    for (uint32_t k = 0; k < b.shape_count; ++k)
+                        test_node_shape(a, p, node_normal, b, k, allowance, c, profile);
+                    if (c.found && c.shape != UINT32_MAX) {
+                        s.merged.push_back(make_record(a, p, b, c));
+                        next += has_triangle;  // replaced by the shape
+                        continue;
+                    }
                 }
-                // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c); a shape point: none
-                r.t2 = c.shape == UINT32_MAX ? c.w[1] : 0.0;
-                r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
-                // A node that starts the step inside is let out gradually (target gap < 0): by
-                // 20 % of the overlap per step, but never faster than 1e-3 of an edge per step,
-                // so bodies created deeply overlapping separate slowly instead of jumping apart.
-                if (c.start_gap < 0.0) {
-                    const double overlap = -c.start_gap;
-                    const double l = c.shape == UINT32_MAX ? b.edge_length : a.edge_length;
-                    r.offset = overlap - std::min(kOverlapRecovery * overlap, kMaxRecovery * l);
-                }
-                out.push_back(r);
+                if (has_triangle) s.merged.push_back(out[next++]);
             }
+            while (next < end) s.merged.push_back(out[next++]);
         }
     }
+    out.swap(s.merged);
 }
 
 }  // namespace lfem

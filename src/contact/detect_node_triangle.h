@@ -8,6 +8,7 @@
 #include "contact/broad_phase.h"
 #include "contact/contact_body.h"
 #include "contact/contact_record.h"
+#include "lfem.h"
 
 namespace lfem {
 
@@ -16,6 +17,13 @@ struct DetectionScratch {
     std::vector<uint32_t> box_body, box_triangle;  // which body and triangle a box belongs to
     std::vector<uint32_t> candidates;
     std::vector<double> node_normals;  // 3 per node of the body being tested
+    // Shape pass, used only when some body has rigid shapes: 3 per slave node (all bodies),
+    // where each slave node's records start (+1 at the end), the gap of each record, and the
+    // records rebuilt with the shape contacts.
+    std::vector<double> slave_normals;
+    std::vector<uint32_t> record_begin;
+    std::vector<double> record_gap;
+    std::vector<ContactRecord> merged;
     BroadPhase grid;
 };
 
@@ -24,9 +32,11 @@ struct DetectionScratch {
 // and the target gap (a kept overlap). `previous` is the last step's list (same order: body,
 // node, other body), which says which overlaps are being recovered. With scan_overlaps (the
 // first step after bodies were added) nodes found up to half an edge inside another body are
-// taken as overlaps to be removed gradually.
+// taken as overlaps to be removed gradually. Time and counts of the broad phase, the
+// node-triangle tests and the rigid-shape queries are added to `profile`.
 void detect_node_triangle(const std::vector<ContactBody>& bodies,
                           const std::vector<ContactRecord>& previous, bool scan_overlaps,
-                          DetectionScratch& scratch, std::vector<ContactRecord>& out);
+                          DetectionScratch& scratch, std::vector<ContactRecord>& out,
+                          lfem_profile& profile);
 
 }  // namespace lfem

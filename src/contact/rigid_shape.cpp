@@ -1,6 +1,8 @@
 #include "contact/rigid_shape.h"
 
+#if LFEM_WITH_CCD
 #include <ccd/ccd.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +11,7 @@
 namespace lfem {
 namespace {
 
+#if LFEM_WITH_CCD
 // libccd's view of the two objects of a hull query: the posed hull, and a ball of radius r
 // around the query point (the point inflated so that MPR reports depth for nearby points too).
 struct CcdHull {
@@ -55,6 +58,8 @@ void ball_center(const void* obj, ccd_vec3_t* out) {
     const CcdBall& b = *static_cast<const CcdBall*>(obj);
     for (int k = 0; k < 3; ++k) out->v[k] = b.center[k];
 }
+
+#endif  // LFEM_WITH_CCD
 
 // Signed distance to a box of half extents h centred at the origin, in its own frame.
 double box_distance(const Vec3& p, const double h[3], Vec3& n) {
@@ -118,6 +123,10 @@ bool shape_signed_distance(const RigidShape& s, const ShapePose& pose, const Vec
             break;
         }
         default: {
+#if !LFEM_WITH_CCD
+            // Convex hulls are refused when added (and when loaded) in a build without libccd.
+            return false;
+#else
             // The point as a ball of radius max_distance: MPR's penetration depth of the ball
             // is max_distance minus the point's signed distance, its direction the normal.
             const CcdHull hull{&s, &pose};
@@ -136,6 +145,7 @@ bool shape_signed_distance(const RigidShape& s, const ShapePose& pose, const Vec
             distance = max_distance - depth;
             normal = Vec3(dir.v[0], dir.v[1], dir.v[2]).normalized();
             return distance <= max_distance;
+#endif
         }
     }
     if (distance > max_distance) return false;

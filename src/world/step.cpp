@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "common/error.h"
+#include "common/profile.h"
 #include "contact/solve_contact_multipliers.h"
 #include "fem/internal_forces.h"
 #include "fem/material.h"
@@ -100,10 +101,10 @@ void predict_positions(Body& body, const double gravity[3], double h, Scratch& s
     for (int k = 0; k < 3; ++k) scratch.support_torque[k] = torque[k];
 }
 
-// Commit: velocities from the corrected positions, energy bookkeeping, eq. (2) and the
-// re-fit of the global rotation ("paper"), elastic forces at x^{n+1} for the next step.
+// Commit: velocities from the corrected positions, energy bookkeeping, and ("paper") the
+// torque about the step-start centre that eq. (2) needs.
 template <class Scratch>
-void commit_step(Body& body, const double gravity[3], double h, const Scratch& scratch,
+void commit_step(Body& body, const double gravity[3], double h, Scratch& scratch,
                  bool touched, SubstepTally& tally) {
     BodyState& s = body.state;
     const BodyReference& ref = body.ref;
@@ -111,11 +112,7 @@ void commit_step(Body& body, const double gravity[3], double h, const Scratch& s
     const double alpha = body.def.damping;
     const bool paper = body.def.model == LFEM_MODEL_PAPER;
     Vec3 c_old = Vec3::Zero(), torque(scratch.support_torque);
-    Eigen::Matrix3d inertia;
-    if (paper) {
-        c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n);
-        inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old);
-    }
+    if (paper) c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n);
     if (touched) s.contact_force.assign(3 * std::size_t(n), 0.0);
     else std::vector<double>().swap(s.contact_force);  // nothing held while not touching
     double kinetic = 0.0, work = scratch.support_work, contact_work = 0.0, damping = 0.0;
@@ -144,10 +141,21 @@ void commit_step(Body& body, const double gravity[3], double h, const Scratch& s
     tally.work += work;
     tally.contact_work += contact_work;
     tally.damping += damping;
+    for (int k = 0; k < 3; ++k) scratch.torque[k] = torque[k];
+    s.h_last = h;
+}
 
-    if (paper) {
-        // Eq. (2) predicts the frame's rotation; re-fitting it to the nodes keeps it free of
-        // drift. Their difference is reported as an error indicator.
+// "paper" model: eq. (2) predicts the frame's rotation from the torque of the step; re-fitting
+// it to the nodes keeps it free of drift. Their difference is reported as an error indicator.
+template <class Scratch>
+void update_global_rotation(Body& body, double h, const Scratch& scratch, SubstepTally& tally) {
+    BodyState& s = body.state;
+    const BodyReference& ref = body.ref;
+    const uint32_t n = ref.node_count();
+    const Vec3 c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n);
+    const Eigen::Matrix3d inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old);
+    const Vec3 torque(scratch.torque);
+    {
         Vec3 L(s.angular_momentum);
         Eigen::Quaterniond q = load_q(s.rotation);
         integrate_global_rotation(inertia, torque, h, L, q);
@@ -158,8 +166,6 @@ void commit_step(Body& body, const double gravity[3], double h, const Scratch& s
         s.rotation[0] = q.w(), s.rotation[1] = q.x(), s.rotation[2] = q.y(), s.rotation[3] = q.z();
         for (int k = 0; k < 3; ++k) s.angular_momentum[k] = L[k];
     }
-    s.h_last = h;
-    compute_elastic_forces(body, s);
 }
 
 // Kinematic bodies move rigidly: centre by v h, nodes rotated by omega h about it.
@@ -230,12 +236,14 @@ void World::solve_contacts(double h) {
     counters_.solver_residual = 0.0;
     counters_.max_penetration = 0.0;
     if (movable > 0 && contact_bodies_.size() > 1) {
-        detect_node_triangle(contact_bodies_, contacts_, counters_.scan_overlaps, detection_, detected_);
+        detect_node_triangle(contact_bodies_, contacts_, counters_.scan_overlaps, detection_, detected_,
+                             profile_);
         counters_.scan_overlaps = false;
     }
-    // Warm start: both lists are ordered by (body_a, node, body_b).
-    std::size_t k = 0;
+    // Warm start: both lists are ordered by (body_a, node, body_b). Timed with the solve.
     double motion = 0.0, length = HUGE_VAL;
+    PhaseTimer warm_start_timer(profile_.normal_solve, 0, !detected_.empty());
+    std::size_t k = 0;
     for (ContactRecord& r : detected_) {
         while (k < contacts_.size() &&
                std::tie(contacts_[k].body_a, contacts_[k].node, contacts_[k].body_b) <
@@ -262,12 +270,14 @@ void World::solve_contacts(double h) {
         }
         length = std::min({length, a.edge_length, b.edge_length});
     }
+    warm_start_timer.stop();
     if (!detected_.empty()) {
         // Stop when a sweep moves no node by more than contact_tolerance times the relative
         // motion, or 1e-9 of the finest boundary edge when nothing moves (resting contact).
         const double tolerance = std::max(def_.contact_tolerance * motion, 1e-9 * length);
         const ContactSolveResult res = solve_contact_multipliers(
-            contact_bodies_, contact_body_of_slot_, detected_, def_.contact_iterations, tolerance);
+            contact_bodies_, contact_body_of_slot_, detected_, def_.contact_iterations, tolerance,
+            profile_);
         counters_.solver_iterations = res.iterations;
         counters_.solver_residual = res.residual;
         counters_.max_penetration = res.max_penetration;
@@ -293,9 +303,14 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
     // did over the step (added to `work`).
     SubstepTally tally;
     scratch_.resize(slots_.size());
+    profile_.substeps += 1;
+    uint64_t kinematic = 0;
+    PhaseTimer predictor_timer(profile_.predictor, 0);
+    uint64_t predicted = 0;
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_geometry()) continue;
+        predicted += b.is_dynamic();
         if (b.is_deformable()) {
             predict_positions(b, def_.gravity, h, scratch_[i]);
         } else if (b.is_rigid()) {
@@ -305,23 +320,37 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
             scratch_[i].support_torque[2] = b.state.center[2];
             rigid_responses_.resize(slots_.size());
             predict_rigid(b, def_.gravity, h, rigid_responses_[i]);
-        } else if (b.def.type == LFEM_BODY_KINEMATIC) {
+        }
+        kinematic += b.def.type == LFEM_BODY_KINEMATIC;
+    }
+    predictor_timer.set_calls(predicted);
+    predictor_timer.stop();
+    if (kinematic > 0) {
+        PhaseTimer timer(profile_.kinematic_motion, kinematic);
+        for (uint32_t i = 0; i < slots_.size(); ++i) {
+            Body& b = slots_[i].body;
+            if (b.generation == 0 || !b.has_geometry() || b.def.type != LFEM_BODY_KINEMATIC) continue;
             scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
             scratch_[i].shape_pose_start.assign(b.state.shape_pose.begin(), b.state.shape_pose.end());
             advance_kinematic(b, h);
         }
-        // Static bodies: nothing to do.
     }
+    // Static bodies: nothing to do.
     solve_contacts(h);
     std::vector<uint8_t> touched(slots_.size(), 0);
     for (const ContactRecord& r : contacts_)
         if (r.active()) touched[r.body_a] = touched[r.body_b] = 1;
+    // Commit every moving body; then eq. (2) and the re-fit for "paper" bodies; then the
+    // elastic forces at x^{n+1} (they need the re-fitted rotation).
+    uint64_t committed = 0, paper = 0;
+    PhaseTimer commit_timer(profile_.commit, 0);
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_mesh()) continue;
+        committed += b.is_dynamic();
         if (b.is_deformable()) {
             commit_step(b, def_.gravity, h, scratch_[i], touched[i] != 0, tally);
-            strain += b.state.strain_energy;
+            paper += b.def.model == LFEM_MODEL_PAPER;
         } else if (b.is_rigid()) {
             tally.contact_work += commit_rigid(b, h, rigid_responses_[i]);
             // Work of gravity and node forces on the moving centre (node forces' torques act
@@ -335,6 +364,28 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
                 b.state.v_half[k] = (b.state.x[k] - scratch_[i].x_start[k]) / h;
         }
     }
+    commit_timer.set_calls(committed);
+    commit_timer.stop();
+    if (paper > 0) {
+        PhaseTimer timer(profile_.global_rotation, paper);
+        for (uint32_t i = 0; i < slots_.size(); ++i) {
+            Body& b = slots_[i].body;
+            if (b.generation == 0 || !b.has_mesh() || !b.is_deformable() || b.def.model != LFEM_MODEL_PAPER)
+                continue;
+            update_global_rotation(b, h, scratch_[i], tally);
+        }
+    }
+    PhaseTimer elastic_timer(profile_.internal_forces, 0);
+    uint64_t deformable = 0;
+    for (uint32_t i = 0; i < slots_.size(); ++i) {
+        Body& b = slots_[i].body;
+        if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;
+        compute_elastic_forces(b, b.state);
+        strain += b.state.strain_energy;
+        deformable += 1;
+    }
+    elastic_timer.set_calls(deformable);
+    elastic_timer.stop();
     kinetic = tally.kinetic;
     work += tally.work + tally.contact_work;
     counters_.external_work += tally.work;
@@ -373,10 +424,12 @@ void World::step(double dt) {
     saved.reserve(slots_.size());
     for (const Slot& s : slots_) saved.push_back(s.body.state);
     const WorldCounters saved_counters = counters_;
+    const lfem_profile saved_profile = profile_;
     std::vector<ContactRecord> saved_contacts = contacts_;
     auto roll_back = [&] {
         for (std::size_t i = 0; i < slots_.size(); ++i) slots_[i].body.state = std::move(saved[i]);
         counters_ = saved_counters;
+        profile_ = saved_profile;
         contacts_ = std::move(saved_contacts);
     };
 

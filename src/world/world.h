@@ -86,6 +86,9 @@ public:
     // Synchronized velocities of a body at the current time, 3 per node.
     void synchronized_velocities(const Body& body, double* out) const;
     const WorldCounters& counters() const { return counters_; }
+    // Time and counts per phase of the step, accumulated (see lfem_profile).
+    const lfem_profile& profile() const { return profile_; }
+    void reset_profile() { profile_ = lfem_profile{}; }
     // Pairs found by the last sub-step, in a fixed order (body_a, node, body_b); those with
     // active() are the contacts.
     const std::vector<ContactRecord>& contacts() const { return contacts_; }
@@ -103,6 +106,7 @@ private:
         std::vector<double> x_start, v_old, inv_mass, shape_pose_start;
         double support_work = 0;
         double support_torque[3] = {0, 0, 0};
+        double torque[3] = {0, 0, 0};  // "paper": torque of the step about the start centre
     };
     void substep(double h, double& kinetic, double& strain, double& work);
     void solve_contacts(double h);
@@ -112,6 +116,7 @@ private:
     std::vector<Slot> slots_;
     std::vector<uint32_t> free_slots_;
     WorldCounters counters_;
+    lfem_profile profile_{};
     std::vector<ContactRecord> contacts_;
     std::vector<StepScratch> scratch_;
     std::vector<RigidResponse> rigid_responses_;  // per slot, rigid bodies only

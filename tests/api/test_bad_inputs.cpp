@@ -185,6 +185,7 @@ TEST_F(BadInput, TooSmallBuffersAndBadIndices) {
 }
 
 TEST_F(BadInput, MissingAndMalformedFiles) {
+    if (!LFEM_WITH_IO) GTEST_SKIP() << "built without file I/O (LFEM_WITH_IO=OFF)";
     lfem_mesh* m = nullptr;
     expect_refused(lfem_mesh_load_gmsh("/nonexistent/dir/mesh.msh", &m), LFEM_IO_ERROR, "missing file");
     EXPECT_EQ(m, nullptr);

@@ -50,7 +50,7 @@ lfem_world_stats stats_of(lfem_world* w) {
 }
 
 void check(lfem_status s, const char* call) {
-    if (s < LFEM_OK || s > LFEM_INTERNAL_ERROR) broken("unknown status from", call);
+    if (s < LFEM_OK || s > LFEM_UNSUPPORTED) broken("unknown status from", call);
     if (s == LFEM_INTERNAL_ERROR) broken("internal error:", lfem_last_error());
     if (s != LFEM_OK && !*lfem_last_error()) broken("no message after a failed", call);
 }

@@ -93,6 +93,10 @@ public static class LfemTests
                            "KineticEnergy", 40, "EnergyError", 72, "LinearMomentum", 80, "AngularMomentum", 104,
                            "ContactCount", 128, "SolverIterations", 132, "SolverResidual", 136, "MaxPenetration", 144,
                            "RotationDrift", 152);
+        Layout<PhaseTime>(16, "Seconds", 0, "Calls", 8);
+        Layout<Profile>(184, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
+                        "BroadPhase", 56, "NarrowPhase", 72, "ShapeQueries", 88, "ShapeTests", 104, "CcdQueries", 112,
+                        "NormalSolve", 120, "Friction", 136, "GlobalRotation", 152, "Commit", 168);
         Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
                         "UserData", 104, "internalValue", 112);
@@ -184,6 +188,27 @@ public static class LfemTests
                 }
                 Equal(1u, world.Stats.BodyCount, "body count");
             }
+        }
+    }
+
+    public static void TestProfileCountsThePhasesALoneBodyRuns()
+    {
+        // A lone falling block: one predictor, elastic-force pass and commit per sub-step, no
+        // detection and no solve (nothing to touch).
+        using (World world = new World())
+        {
+            AddBlock(world, Model.Paper);
+            world.Step(0.01);
+            ulong steps = world.Stats.Steps;
+            Profile p = world.Profile;
+            Equal(steps, p.Substeps, "profiled sub-steps");
+            Equal(steps, p.Predictor.Calls, "predictor calls");
+            Equal(steps, p.InternalForces.Calls, "internal force calls");
+            Equal(0ul, p.NarrowPhase.Calls, "narrow phase calls");
+            Equal(0ul, p.Friction.Calls, "friction calls");
+            world.ResetProfile();
+            Equal(0ul, world.Profile.Predictor.Calls, "after reset");
+            Equal(9, (int)Status.Unsupported, "LFEM_UNSUPPORTED");
         }
     }
 

@@ -36,7 +36,8 @@ import sys
 import numpy as np
 
 __all__ = [
-    "Status", "BodyType", "Model", "LfemError", "WorldDef", "WorldStats", "Body", "BodyDef",
+    "Status", "BodyType", "Model", "LfemError", "WorldDef", "WorldStats", "PhaseTime", "Profile",
+    "Body", "BodyDef",
     "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeType", "ShapeDef", "World", "Mesh", "VtkSeries", "version", "version_string",
     "status_string", "last_error", "library_path", "VERSION_MAJOR", "VERSION_MINOR",
     "VERSION_PATCH",
@@ -86,6 +87,7 @@ class Status(enum.IntEnum):
     IO_ERROR = 6          # a file could not be read or written, or is malformed
     OUT_OF_MEMORY = 7
     INTERNAL_ERROR = 8    # a bug in lfem: please report it with the message
+    UNSUPPORTED = 9       # this build leaves the feature out (LFEM_WITH_CCD, LFEM_WITH_IO)
 
 
 class BodyType(enum.IntEnum):
@@ -156,6 +158,30 @@ class WorldStats(ctypes.Structure):
         ("solver_residual", ctypes.c_double),
         ("max_penetration", ctypes.c_double),
         ("rotation_drift", ctypes.c_double),
+    ]
+
+
+class PhaseTime(ctypes.Structure):
+    """lfem_phase_time: wall time (s) and run count of one phase of the step."""
+    _fields_ = [("seconds", ctypes.c_double), ("calls", ctypes.c_uint64)]
+
+
+class Profile(ctypes.Structure):
+    """lfem_profile: per-phase time and counts of the step, accumulated."""
+    _fields_ = [
+        ("substeps", ctypes.c_uint64),
+        ("internal_forces", PhaseTime),
+        ("predictor", PhaseTime),
+        ("kinematic_motion", PhaseTime),
+        ("broad_phase", PhaseTime),
+        ("narrow_phase", PhaseTime),
+        ("shape_queries", PhaseTime),
+        ("shape_tests", ctypes.c_uint64),
+        ("ccd_queries", ctypes.c_uint64),
+        ("normal_solve", PhaseTime),
+        ("friction", PhaseTime),
+        ("global_rotation", PhaseTime),
+        ("commit", PhaseTime),
     ]
 
 
@@ -322,6 +348,8 @@ _declare("lfem_world_set_gravity", _st, _vp, _dp)
 _declare("lfem_world_set_time_step", _st, _vp, _dbl)
 _declare("lfem_world_get_stable_step", _st, _vp, _dp)
 _declare("lfem_world_get_stats", _st, _vp, _p(WorldStats))
+_declare("lfem_world_get_profile", _st, _vp, _p(Profile))
+_declare("lfem_world_reset_profile", _st, _vp)
 
 _declare("lfem_body_def_default", BodyDef)
 _declare("lfem_body_create", _st, _vp, _p(BodyDef), _p(Body))
@@ -510,6 +538,16 @@ class World:
         out = WorldStats()
         _lib.lfem_world_get_stats(self.handle, ctypes.byref(out))
         return out
+
+    @property
+    def profile(self):
+        """Per-phase time (s) and counts since creation or reset_profile()."""
+        out = Profile()
+        _lib.lfem_world_get_profile(self.handle, ctypes.byref(out))
+        return out
+
+    def reset_profile(self):
+        _lib.lfem_world_reset_profile(self.handle)
 
     # -- bodies --
 

@@ -55,6 +55,12 @@ class Layout(unittest.TestCase):
             "body_count": 36, "kinetic_energy": 40, "energy_error": 72, "linear_momentum": 80,
             "angular_momentum": 104, "contact_count": 128, "solver_iterations": 132,
             "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152})
+        self.check(lfem.PhaseTime, 16, {"seconds": 0, "calls": 8})
+        self.check(lfem.Profile, 184, {
+            "substeps": 0, "internal_forces": 8, "predictor": 24, "kinematic_motion": 40,
+            "broad_phase": 56, "narrow_phase": 72, "shape_queries": 88, "shape_tests": 104,
+            "ccd_queries": 112, "normal_solve": 120, "friction": 136, "global_rotation": 152,
+            "commit": 168})
         self.check(lfem.BodyDef, 120, {
             "type": 0, "model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
@@ -112,6 +118,23 @@ class Defaults(unittest.TestCase):
 
 
 class Physics(unittest.TestCase):
+    def test_profile_counts_the_phases_a_lone_body_runs(self):
+        # A lone falling block: one predictor, elastic-force pass and commit per sub-step, no
+        # detection and no solve (nothing to touch).
+        with lfem.World() as world:
+            add_block(world, lfem.Model.PAPER)
+            world.step(0.01)
+            steps = world.stats.steps
+            p = world.profile
+            self.assertEqual(p.substeps, steps)
+            self.assertEqual(p.predictor.calls, steps)
+            self.assertEqual(p.internal_forces.calls, steps)
+            self.assertEqual(p.narrow_phase.calls, 0)
+            self.assertEqual(p.friction.calls, 0)
+            world.reset_profile()
+            self.assertEqual(world.profile.predictor.calls, 0)
+            self.assertEqual(int(lfem.Status.UNSUPPORTED), 9)
+
     def test_falling_block_follows_free_fall(self):
         # Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each
         # node follows z0 - g t^2/2 with velocity -g t, the momentum is -m g t and the kinetic

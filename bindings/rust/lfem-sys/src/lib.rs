@@ -26,6 +26,7 @@ pub const LFEM_UNSTABLE: lfem_status = 5;
 pub const LFEM_IO_ERROR: lfem_status = 6;
 pub const LFEM_OUT_OF_MEMORY: lfem_status = 7;
 pub const LFEM_INTERNAL_ERROR: lfem_status = 8;
+pub const LFEM_UNSUPPORTED: lfem_status = 9;
 
 pub type lfem_body_type = c_int;
 pub const LFEM_BODY_DEFORMABLE: lfem_body_type = 0;
@@ -108,6 +109,33 @@ pub struct lfem_world_stats {
     pub rotation_drift: c_double,
 }
 
+/// Time (s) and count of one phase of the step (lfem_phase_time).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_phase_time {
+    pub seconds: c_double,
+    pub calls: u64,
+}
+
+/// Per-phase time and counts of the step, accumulated (lfem_profile).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_profile {
+    pub substeps: u64,
+    pub internal_forces: lfem_phase_time,
+    pub predictor: lfem_phase_time,
+    pub kinematic_motion: lfem_phase_time,
+    pub broad_phase: lfem_phase_time,
+    pub narrow_phase: lfem_phase_time,
+    pub shape_queries: lfem_phase_time,
+    pub shape_tests: u64,
+    pub ccd_queries: u64,
+    pub normal_solve: lfem_phase_time,
+    pub friction: lfem_phase_time,
+    pub global_rotation: lfem_phase_time,
+    pub commit: lfem_phase_time,
+}
+
 /// A body handle: a value, `{0, 0}` is the null handle.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -176,6 +204,8 @@ const _: () = assert!(size_of::<lfem_body>() == 8);
 const _: () = assert!(size_of::<lfem_world_def>() == 72);
 const _: () = assert!(size_of::<lfem_world_stats>() == 160);
 const _: () = assert!(size_of::<lfem_contact>() == 128);
+const _: () = assert!(size_of::<lfem_phase_time>() == 16);
+const _: () = assert!(size_of::<lfem_profile>() == 184);
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(size_of::<lfem_body_def>() == 120);
 #[cfg(target_pointer_width = "64")]
@@ -202,6 +232,8 @@ extern "C" {
     pub fn lfem_world_set_time_step(world: *mut lfem_world, time_step: c_double) -> lfem_status;
     pub fn lfem_world_get_stable_step(world: *const lfem_world, out: *mut c_double) -> lfem_status;
     pub fn lfem_world_get_stats(world: *const lfem_world, out: *mut lfem_world_stats) -> lfem_status;
+    pub fn lfem_world_get_profile(world: *const lfem_world, out: *mut lfem_profile) -> lfem_status;
+    pub fn lfem_world_reset_profile(world: *mut lfem_world) -> lfem_status;
 
     // bodies
     pub fn lfem_body_def_default() -> lfem_body_def;

@@ -22,6 +22,8 @@ fn sizes_match_c() {
     assert_eq!(size_of::<lfem_body_def>(), 120);
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
+    assert_eq!(size_of::<lfem_phase_time>(), 16);
+    assert_eq!(size_of::<lfem_profile>(), 184);
     assert_eq!(align_of::<lfem_world_def>(), 8);
     assert_eq!(align_of::<lfem_body>(), 4);
 }
@@ -49,6 +51,20 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_world_stats, solver_iterations), 132);
     assert_eq!(offset!(lfem_world_stats, solver_residual), 136);
     assert_eq!(offset!(lfem_world_stats, rotation_drift), 152);
+
+    assert_eq!(offset!(lfem_phase_time, calls), 8);
+    assert_eq!(offset!(lfem_profile, internal_forces), 8);
+    assert_eq!(offset!(lfem_profile, predictor), 24);
+    assert_eq!(offset!(lfem_profile, kinematic_motion), 40);
+    assert_eq!(offset!(lfem_profile, broad_phase), 56);
+    assert_eq!(offset!(lfem_profile, narrow_phase), 72);
+    assert_eq!(offset!(lfem_profile, shape_queries), 88);
+    assert_eq!(offset!(lfem_profile, shape_tests), 104);
+    assert_eq!(offset!(lfem_profile, ccd_queries), 112);
+    assert_eq!(offset!(lfem_profile, normal_solve), 120);
+    assert_eq!(offset!(lfem_profile, friction), 136);
+    assert_eq!(offset!(lfem_profile, global_rotation), 152);
+    assert_eq!(offset!(lfem_profile, commit), 168);
 
     assert_eq!(offset!(lfem_body_def, model), 4);
     assert_eq!(offset!(lfem_body_def, young_modulus), 8);

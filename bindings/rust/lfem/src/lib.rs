@@ -49,6 +49,8 @@ pub enum Status {
     OutOfMemory,
     /// A bug in lfem: please report it with the message.
     InternalError,
+    /// This build leaves the feature out (LFEM_WITH_CCD, LFEM_WITH_IO).
+    Unsupported,
     /// A status this binding does not know (a newer library).
     Unknown(i32),
 }
@@ -66,6 +68,7 @@ impl Status {
             sys::LFEM_IO_ERROR => Status::IoError,
             sys::LFEM_OUT_OF_MEMORY => Status::OutOfMemory,
             sys::LFEM_INTERNAL_ERROR => Status::InternalError,
+            sys::LFEM_UNSUPPORTED => Status::Unsupported,
             other => Status::Unknown(other),
         })
     }
@@ -81,6 +84,7 @@ impl Status {
             Status::IoError => sys::LFEM_IO_ERROR,
             Status::OutOfMemory => sys::LFEM_OUT_OF_MEMORY,
             Status::InternalError => sys::LFEM_INTERNAL_ERROR,
+            Status::Unsupported => sys::LFEM_UNSUPPORTED,
             Status::Unknown(raw) => raw,
         }
     }
@@ -506,6 +510,10 @@ const _: () = assert!(size_of::<Contact>() == 128);
 
 /// Statistics of a world (lfem_world_stats): time, energies, momenta, solver figures.
 pub type WorldStats = sys::lfem_world_stats;
+/// Where the step spends its time (lfem_profile): seconds and call counts per phase.
+pub type Profile = sys::lfem_profile;
+/// Time and count of one phase (lfem_phase_time).
+pub type PhaseTime = sys::lfem_phase_time;
 
 // ---- world -------------------------------------------------------------------------------------
 
@@ -608,6 +616,20 @@ impl World {
         // SAFETY: live world, valid output.
         check(unsafe { sys::lfem_world_get_stats(self.ptr(), &mut out) })?;
         Ok(out)
+    }
+
+    /// Per-phase time and counts accumulated since creation or the last reset.
+    pub fn profile(&self) -> Result<Profile> {
+        let mut out = Profile::default();
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_world_get_profile(self.ptr(), &mut out) })?;
+        Ok(out)
+    }
+
+    /// Set the profile back to zero.
+    pub fn reset_profile(&mut self) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_world_reset_profile(self.ptr_mut()) })
     }
 
     // -- bodies --

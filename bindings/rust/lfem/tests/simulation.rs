@@ -374,3 +374,22 @@ fn checkpoint_continues_bit_for_bit() {
     assert_eq!(err.status(), Status::IoError);
     assert!(err.message().contains("checkpoint"), "message: {}", err.message());
 }
+
+#[test]
+fn profile_counts_the_phases_a_lone_body_runs() {
+    // A lone falling block: one predictor, one elastic-force pass and one commit per sub-step;
+    // no contact, so no detection and no solve.
+    let (mut world, _block) = block_world(Model::Paper, [0.3, 0.2, 0.1], 400.0);
+    world.step(0.01).unwrap();
+    let steps = world.stats().unwrap().steps;
+    let p = world.profile().unwrap();
+    assert_eq!(p.substeps, steps);
+    assert_eq!(p.predictor.calls, steps);
+    assert_eq!(p.internal_forces.calls, steps);
+    assert_eq!(p.global_rotation.calls, steps);
+    assert_eq!(p.narrow_phase.calls, 0);
+    assert_eq!(p.friction.calls, 0);
+    world.reset_profile().unwrap();
+    assert_eq!(world.profile().unwrap().predictor.calls, 0);
+    assert_eq!(Status::Unsupported.raw(), 9);
+}
