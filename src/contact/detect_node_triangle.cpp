@@ -230,22 +230,43 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
         const ContactRecord* r = find_previous(body_a, node, body_b);
         return r ? std::max(0.0, -r->gap_after) : 0.0;
     };
-    // Broad phase: boxes of every boundary triangle over the whole step, grown by the capture
-    // band and the deepest overlap being recovered, in a spatial hash.
+    // Broad phase. First at the level of bodies: a body's slave nodes are tested only against
+    // bodies whose triangles their paths may reach (boxes overlap, filters allow), and only the
+    // triangles near some such node enter the spatial hash. This is exact - a triangle left
+    // out has a box that overlaps no node path that could test it - and it makes the cost
+    // follow the contact region, not the whole boundary: two long bars meeting end to end hash
+    // their end faces only; a body far from everything is not looked at.
     {
         PhaseTimer timer(profile.broad_phase);
-        s.boxes.clear();
-        s.box_body.clear();
-        s.box_triangle.clear();
-        double cell = 0.0;
-        for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+        const uint32_t nb = uint32_t(bodies.size());
+        s.triangle_box.clear();
+        s.body_box.resize(nb);
+        s.slave_box.resize(nb);
+        const auto empty_box = [] {
+            Aabb box;
+            for (int k = 0; k < 3; ++k) box.lo[k] = HUGE_VAL, box.hi[k] = -HUGE_VAL;
+            return box;
+        };
+        const auto join = [](Aabb& box, const Aabb& other) {
+            for (int k = 0; k < 3; ++k)
+                box.lo[k] = std::min(box.lo[k], other.lo[k]), box.hi[k] = std::max(box.hi[k], other.hi[k]);
+        };
+        const auto overlap = [](const Aabb& a, const Aabb& b) {
+            for (int k = 0; k < 3; ++k)
+                if (!(a.hi[k] >= b.lo[k] && b.hi[k] >= a.lo[k])) return false;
+            return true;
+        };
+        // Triangle boxes over the whole step, grown by the capture band and the deepest
+        // overlap being recovered; the node paths' boxes.
+        double extent_sum = 0.0;
+        uint32_t extent_count = 0;
+        for (uint32_t bi = 0; bi < nb; ++bi) {
             const ContactBody& b = bodies[bi];
             const double grow = std::max(kCaptureBand * b.edge_length + max_offset,
                                          scan_overlaps ? kInitialDepth * b.edge_length : 0.0);
-            cell = std::max(cell, b.edge_length);
+            s.body_box[bi] = empty_box();
             for (uint32_t t = 0; t < b.triangle_count; ++t) {
-                Aabb box;
-                for (int k = 0; k < 3; ++k) box.lo[k] = HUGE_VAL, box.hi[k] = -HUGE_VAL;
+                Aabb box = empty_box();
                 for (int v = 0; v < 3; ++v) {
                     const uint32_t i = b.triangles[3 * t + v];
                     for (int k = 0; k < 3; ++k) {
@@ -255,20 +276,94 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                     }
                 }
                 for (int k = 0; k < 3; ++k) box.lo[k] -= grow, box.hi[k] += grow;
-                s.boxes.push_back(box);
-                s.box_body.push_back(bi);
-                s.box_triangle.push_back(t);
+                s.triangle_box.push_back(box);
+                join(s.body_box[bi], box);
             }
+            s.slave_box[bi] = empty_box();
+            for (uint32_t j = 0; j < b.node_count; ++j) {
+                const uint32_t p = b.nodes[j];
+                for (int k = 0; k < 3; ++k) {
+                    const double x0 = b.x_start[3 * p + k], x1 = b.x[3 * p + k];
+                    s.slave_box[bi].lo[k] = std::min({s.slave_box[bi].lo[k], x0, x1});
+                    s.slave_box[bi].hi[k] = std::max({s.slave_box[bi].hi[k], x0, x1});
+                }
+            }
+            if (b.triangle_count > 0) {
+                const Aabb& box = s.body_box[bi];
+                const double extent = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
+                if (std::isfinite(extent)) extent_sum += extent, ++extent_count;
+            }
+        }
+        // Pairs of bodies through a hash of the body boxes (cells of the mean body size; a
+        // floor much larger than the bodies on it is kept aside and tested directly).
+        s.body_grid.build(s.body_box, extent_count > 0 && extent_sum > 0.0 ? extent_sum / extent_count : 1.0);
+        s.partner_begin.assign(1, 0);
+        s.partners.clear();
+        s.reached_by.clear();
+        s.shape_bodies.clear();
+        s.tested.assign(nb, 0);
+        for (uint32_t bi = 0; bi < nb; ++bi)
+            if (bodies[bi].shape_count > 0) s.shape_bodies.push_back(bi);
+        for (uint32_t ai = 0; ai < nb; ++ai) {
+            const ContactBody& a = bodies[ai];
+            if (a.node_count > 0) {
+                s.candidates.clear();
+                s.body_grid.query(s.slave_box[ai], s.candidates);
+                for (uint32_t bi : s.candidates)
+                    if (bi != ai && bodies[bi].triangle_count > 0 && bodies_may_touch(a, bodies[bi])) {
+                        s.partners.push_back(bi);
+                        s.reached_by.push_back(uint64_t(bi) << 32 | ai);
+                    }
+                bool shape_partner = false;
+                for (uint32_t bi : s.shape_bodies)
+                    shape_partner = shape_partner || (bi != ai && bodies_may_touch(a, bodies[bi]));
+                s.tested[ai] = s.partners.size() > s.partner_begin.back() || shape_partner;
+            }
+            s.partner_begin.push_back(uint32_t(s.partners.size()));
+        }
+        // Which triangles enter the hash: those of a reached body whose box overlaps the path
+        // box of a body reaching it (or, when many bodies reach it, of all of them joined).
+        std::sort(s.reached_by.begin(), s.reached_by.end());  // by reached body, then reaching
+        const std::vector<uint64_t>& reached = s.reached_by;
+        const auto reaching = [&](std::size_t q) { return uint32_t(reached[q]); };
+        s.boxes.clear();
+        s.box_body.clear();
+        s.box_triangle.clear();
+        double cell = 0.0;
+        std::size_t first_triangle = 0;  // of body bi in triangle_box
+        std::size_t r = 0;
+        for (uint32_t bi = 0; bi < nb; ++bi) {
+            const ContactBody& b = bodies[bi];
+            const std::size_t r_begin = r;
+            while (r < reached.size() && uint32_t(reached[r] >> 32) == bi) ++r;
+            if (r > r_begin) {
+                constexpr std::size_t kMaxSeparateBoxes = 8;
+                Aabb joined = empty_box();
+                for (std::size_t q = r_begin; q < r; ++q) join(joined, s.slave_box[reaching(q)]);
+                for (uint32_t t = 0; t < b.triangle_count; ++t) {
+                    const Aabb& box = s.triangle_box[first_triangle + t];
+                    bool near = false;
+                    if (r - r_begin > kMaxSeparateBoxes) near = overlap(box, joined);
+                    else
+                        for (std::size_t q = r_begin; q < r && !near; ++q)
+                            near = overlap(box, s.slave_box[reaching(q)]);
+                    if (!near) continue;
+                    s.boxes.push_back(box);
+                    s.box_body.push_back(bi);
+                    s.box_triangle.push_back(t);
+                    cell = std::max(cell, b.edge_length);
+                }
+            }
+            first_triangle += b.triangle_count;
         }
         if (!s.boxes.empty()) s.grid.build(s.boxes, 2.0 * cell);
     }
-    if (s.boxes.empty()) return;
+    bool any_shapes = !s.shape_bodies.empty();
+    if (s.boxes.empty() && !any_shapes) return;
 
-    // Narrow phase: every slave node against the triangles near its path. When some body has
-    // rigid shapes, the node normals, where each node's records start in `out` and the gap of
-    // every record are kept for the shape pass below.
-    bool any_shapes = false;
-    for (const ContactBody& b : bodies) any_shapes = any_shapes || b.shape_count > 0;
+    // Narrow phase: every slave node of a tested body against the triangles near its path.
+    // When some body has rigid shapes, the node normals, where each node's records start in
+    // `out` and the gap of every record are kept for the shape pass below.
     s.slave_normals.clear();
     s.record_begin.clear();
     s.record_gap.clear();
@@ -277,9 +372,9 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
         PhaseTimer timer(profile.narrow_phase);
         for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
             const ContactBody& a = bodies[ai];
+            if (!s.tested[ai]) continue;  // no slave nodes, or nothing within their reach
             // Outward normals of the body's boundary nodes at x*: area-weighted means of the
             // normals of the triangles around each node.
-            if (a.node_count == 0) continue;  // no slave nodes (a flat static surface)
             s.node_normals.assign(3 * std::size_t(a.total_nodes), 0.0);
             for (uint32_t t = 0; t < a.triangle_count; ++t) {
                 const uint32_t* tri = &a.triangles[3 * t];
@@ -287,6 +382,8 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                 for (int v = 0; v < 3; ++v)
                     for (int k = 0; k < 3; ++k) s.node_normals[3 * tri[v] + k] += n2[k];
             }
+            const uint32_t* partner = s.partners.data() + s.partner_begin[ai];
+            const uint32_t partner_count = s.partner_begin[ai + 1] - s.partner_begin[ai];
             for (uint32_t j = 0; j < a.node_count; ++j) {
                 const uint32_t p = a.nodes[j];
                 const Vec3 node_normal = at(s.node_normals.data(), p).normalized();
@@ -299,30 +396,41 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                     box.lo[k] = std::min(a.x_start[3 * p + k], a.x[3 * p + k]);
                     box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
                 }
+                bool reaches = false;  // some partner body's box: else nothing to ask the hash
+                for (uint32_t q = 0; q < partner_count && !reaches; ++q) {
+                    const Aabb& other = s.body_box[partner[q]];
+                    reaches = true;
+                    for (int k = 0; k < 3; ++k)
+                        reaches = reaches && box.hi[k] >= other.lo[k] && other.hi[k] >= box.lo[k];
+                }
+                if (!reaches || s.boxes.empty()) continue;
                 s.candidates.clear();
                 s.grid.query(box, s.candidates);
-                for (Candidate& c : best) c.found = false;
-                for (Candidate& c : deep) c.found = false;
+                // Candidates come in box order, which is body order: `touched` stays sorted.
+                for (uint32_t bi : s.touched) best[bi].found = deep[bi].found = false;
+                s.touched.clear();
                 for (uint32_t id : s.candidates) {
-                    const ContactBody& b = bodies[s.box_body[id]];
-                    if (s.box_body[id] == ai || !bodies_may_touch(a, b)) continue;
+                    const uint32_t bi = s.box_body[id];
+                    const ContactBody& b = bodies[bi];
+                    if (bi == ai || !bodies_may_touch(a, b)) continue;
+                    if (s.touched.empty() || s.touched.back() != bi) s.touched.push_back(bi);
                     const double allowance =
                         1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * b.edge_length;
                     const bool first_touch = scan_overlaps && !kept_offset_known(a.slot, p, b.slot);
-                    test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance,
-                                       best[s.box_body[id]], first_touch ? &deep[s.box_body[id]] : nullptr);
+                    test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance, best[bi],
+                                       first_touch ? &deep[bi] : nullptr);
                 }
                 // An overlap met for the first time: accepted when nothing of the other body
                 // lies between the node and the face (then the node is inside, and this face is
                 // its nearest way out); otherwise the node is merely beyond a thin part.
-                for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+                for (uint32_t bi : s.touched) {
                     Candidate& c = deep[bi];
                     if (!c.found || best[bi].found) continue;
                     const Vec3 x = at(a.x_start, p);
                     if (!segment_crosses_body(x, x - c.start_gap * c.normal, bi, c.triangle, bodies[bi], s))
                         best[bi] = c;
                 }
-                for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+                for (uint32_t bi : s.touched) {
                     if (!best[bi].found) continue;
                     out.push_back(make_record(a, p, bodies[bi], best[bi]));
                     if (any_shapes) s.record_gap.push_back(best[bi].gap);
@@ -338,20 +446,20 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     // in the same order (body, node, other body).
     PhaseTimer timer(profile.shape_queries);
     s.merged.clear();
-    std::size_t g = 0;  // slave node over all bodies, as in the narrow phase
+    std::size_t g = 0;  // slave node over the tested bodies, as in the narrow phase
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
         const ContactBody& a = bodies[ai];
-        if (a.node_count == 0) continue;
+        if (!s.tested[ai]) continue;
         for (uint32_t j = 0; j < a.node_count; ++j, ++g) {
             const uint32_t p = a.nodes[j];
             const Vec3 node_normal = at(s.slave_normals.data(), uint32_t(g));
             const uint32_t begin = s.record_begin[g], end = s.record_begin[g + 1];
             uint32_t next = begin;  // this node's records, ordered by body
-            for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
+            for (uint32_t bi : s.shape_bodies) {
                 const ContactBody& b = bodies[bi];
                 while (next < end && out[next].body_b < b.slot) s.merged.push_back(out[next++]);
                 const bool has_triangle = next < end && out[next].body_b == b.slot;
-                if (bi != ai && b.shape_count > 0 && bodies_may_touch(a, b)) {
+                if (bi != ai && bodies_may_touch(a, b)) {
                     Candidate c;
                     c.found = has_triangle;
                     if (has_triangle) c.gap = s.record_gap[next];

@@ -13,6 +13,16 @@
 namespace lfem {
 
 struct DetectionScratch {
+    // Body level, to leave out what cannot touch: per body the joined boxes of its triangles
+    // and of its slave nodes' paths, the bodies whose triangles each body's slave nodes may
+    // reach (partner_begin: where each body's list starts, +1 at the end), and per body whether
+    // its nodes are tested at all; reached_by: (reached body << 32 | reaching body).
+    std::vector<Aabb> triangle_box, body_box, slave_box;
+    std::vector<uint32_t> partner_begin, partners, shape_bodies;
+    std::vector<uint64_t> reached_by;
+    std::vector<uint8_t> tested;
+    BroadPhase body_grid;
+    std::vector<uint32_t> touched;  // bodies with a candidate for the current node
     std::vector<Aabb> boxes;
     std::vector<uint32_t> box_body, box_triangle;  // which body and triangle a box belongs to
     std::vector<uint32_t> candidates;
