@@ -7,17 +7,21 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=build-sanitize
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLFEM_SANITIZE=ON -DLFEM_BUILD_EXAMPLES=OFF >/dev/null
-cmake --build "$build" -j2 --target lfem_unit_tests lfem_api_tests lfem_robustness_tests
+cmake --build "$build" -j2 --target lfem_unit_tests lfem_api_tests lfem_robustness_tests lfem_profile_tests
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 log="$build/sanitize.log"
 : >"$log"
 echo "sanitizers: unit tests"
 "$build/tests/lfem_unit_tests" --gtest_brief=1 | tee -a "$log"
-# The cantilever (1e8 tet-steps) and the 10-turn spins run the same code paths as the shorter
-# tests but take minutes under the sanitizers; they run in the plain build only.
+# The cantilever (1e8 tet-steps), the 10-turn spins and the 1e5 steps of resting contact run
+# the same code paths as the shorter tests but take minutes under the sanitizers; they run in
+# the plain build only.
 echo "sanitizers: C API and physics tests"
-"$build/tests/lfem_api_tests" --gtest_brief=1 --gtest_filter='-Cantilever.*:SpinningBody.*' | tee -a "$log"
+"$build/tests/lfem_api_tests" --gtest_brief=1 \
+  --gtest_filter='-Cantilever.*:SpinningBody.*:Extreme.HundredThousandSteps*' | tee -a "$log"
+echo "sanitizers: profile tests (what a scene leaves out)"
+"$build/tests/lfem_profile_tests" --gtest_brief=1 | tee -a "$log"
 echo "sanitizers: robustness tests (checkpoints, out of memory, concurrent worlds)"
 "$build/tests/lfem_robustness_tests" --gtest_brief=1 | tee -a "$log"
 
