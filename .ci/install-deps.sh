@@ -14,6 +14,9 @@ PACKAGES=(
   cmake
   make
   pkg-config
+  # compiler cache: tests/configs.sh builds the reduced configurations mostly from the objects
+  # of the first one
+  ccache
   # libraries the library itself builds against (linked privately into liblfem.so)
   libeigen3-dev
   libccd-dev
