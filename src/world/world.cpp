@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "fem/internal_forces.h"
+#include "fem/element_colouring.h"
 #include "fem/stable_step.h"
 #include "fem/tet_element.h"
 #include "mesh/boundary.h"
@@ -80,6 +81,8 @@ void World::restore(WorldImage&& image) {
     for (std::size_t i = 0; i < slots.size(); ++i) {
         highest = std::max(highest, image.bodies[i].generation);
         slots[i].body = std::move(image.bodies[i]);
+        BodyReference& ref = slots[i].body.ref;
+        ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count());
     }
     def_ = image.def;
     slots_ = std::move(slots);
@@ -185,6 +188,7 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
     for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
     if (body.is_deformable()) ref.stable_step = 2.0 / estimate_stable_step(ref, body.lame).omega_max;
+    ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), n);
 
     BodyState state = body.state;
     // Existing nodes continue from their synchronized velocities; new ones get the def's.
@@ -203,8 +207,10 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     state.v_half = std::move(v);
     state.h_last = 0.0;
     state.elastic.assign(3 * std::size_t(n), 0.0);
-    state.tet_rotation.resize(4 * std::size_t(ref.tet_count()), 0.0);
-    for (uint32_t e = old_tets; e < ref.tet_count(); ++e) state.tet_rotation[4 * e] = 1.0;
+    if (body.is_deformable() && body.def.model == LFEM_MODEL_COROTATIONAL) {
+        state.tet_rotation.resize(4 * std::size_t(ref.tet_count()), 0.0f);
+        for (uint32_t e = old_tets; e < ref.tet_count(); ++e) state.tet_rotation[4 * e] = 1.0f;
+    }
     for (int k = 0; k < 3; ++k) state.center[k] = c[k];
 
     std::vector<NodeMode> modes = body.node_mode;
@@ -233,7 +239,7 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
                 angular_momentum(candidate.ref.mass.data(), state.x.data(), state.v_half.data(), n, c);
             for (int k = 0; k < 3; ++k) state.angular_momentum[k] = L[k];
         }
-        compute_elastic_forces(candidate, state);
+        compute_elastic_forces(candidate, state, pool_.get());
     }
     if (candidate.is_rigid()) {
         // The paper's global motion alone: centre of mass, rotation (identity: the reference

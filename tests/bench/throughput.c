@@ -94,7 +94,7 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
 
     lfem_world_def wd = lfem_world_def_default();
     if (!contact) wd.gravity[2] = 0.0;
-    (void)threads;
+    wd.thread_count = threads;
     lfem_world* w = NULL;
     CHECK(lfem_world_create(&wd, &w));
     if (contact) {
@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
                   {LFEM_MODEL_PAPER, "paper"},
                   {LFEM_MODEL_NEO_HOOKEAN, "neo_hookean"},
                   {LFEM_MODEL_COROTATIONAL, "corotational"}};
-    const unsigned thread_counts[] = {1};
+    const unsigned thread_counts[] = {1, 2};
     const unsigned thread_options = sizeof thread_counts / sizeof thread_counts[0];
     printf("lfem %s, cube of %u^3 cells (%u tets), %u timed sub-steps per run\n",
            lfem_version_string(), cells, 6 * cells * cells * cells, steps);
