@@ -14,44 +14,54 @@ namespace lfem {
 
 #ifdef LFEM_WITH_THREADS
 
+// A loop is a "round". Task indices are claimed from one 64-bit counter that carries the
+// round's number in its high half, so a worker that wakes late (the machine is busy) can never
+// claim a task of a later round, and the caller never waits for a worker that has not started:
+// it waits only until every task of its round has finished.
 struct ThreadPool::Shared {
     std::mutex mutex;
     std::condition_variable wake, done;
     std::vector<std::thread> workers;
-    // The loop in progress: workers join it when `round` changes.
-    const std::function<void(uint32_t)>* task = nullptr;
+    const std::function<void(uint32_t)>* task = nullptr;  // the current round's (under mutex)
     uint32_t count = 0;
-    std::atomic<uint32_t> next{0};
-    uint64_t round = 0;
-    uint32_t busy = 0;  // workers still inside the current loop
+    uint32_t round = 0;
     bool stop = false;
+    std::atomic<uint64_t> next{0};      // (round << 32) | next task index
+    std::atomic<uint32_t> finished{0};  // tasks of the current round that have finished
     std::exception_ptr error;
 
-    // Takes task indices until none is left.
-    void work() {
+    // Runs tasks of `my_round` until none is left to claim.
+    void work(uint32_t my_round, uint32_t my_count, const std::function<void(uint32_t)>& fn) {
+        uint64_t v = next.load(std::memory_order_relaxed);
         for (;;) {
-            const uint32_t i = next.fetch_add(1, std::memory_order_relaxed);
-            if (i >= count) return;
+            if (uint32_t(v >> 32) != my_round || uint32_t(v) >= my_count) return;
+            if (!next.compare_exchange_weak(v, v + 1, std::memory_order_acq_rel)) continue;
             try {
-                (*task)(i);
+                fn(uint32_t(v));
             } catch (...) {
                 std::lock_guard<std::mutex> lock(mutex);
                 if (!error) error = std::current_exception();
             }
+            if (finished.fetch_add(1, std::memory_order_acq_rel) + 1 == my_count) {
+                std::lock_guard<std::mutex> lock(mutex);
+                done.notify_all();
+            }
+            v = next.load(std::memory_order_relaxed);
         }
     }
 
     void worker_main() {
-        uint64_t seen = 0;
+        uint32_t seen = 0;
         std::unique_lock<std::mutex> lock(mutex);
         for (;;) {
-            wake.wait(lock, [&] { return stop || round != seen; });
+            wake.wait(lock, [&] { return stop || (round != seen && task != nullptr); });
             if (stop) return;
             seen = round;
+            const std::function<void(uint32_t)>* fn = task;
+            const uint32_t n = count;
             lock.unlock();
-            work();
+            work(seen, n, *fn);  // *fn outlives the round: the caller waits for its tasks
             lock.lock();
-            if (--busy == 0) done.notify_one();
         }
     }
 };
@@ -86,20 +96,21 @@ uint32_t ThreadPool::size() const { return uint32_t(shared_->workers.size()) + 1
 
 void ThreadPool::run(uint32_t count, const std::function<void(uint32_t)>& task) {
     Shared& s = *shared_;
+    uint32_t my_round;
     {
         std::lock_guard<std::mutex> lock(s.mutex);
+        my_round = ++s.round;
         s.task = &task;
         s.count = count;
-        s.next.store(0, std::memory_order_relaxed);
-        s.busy = uint32_t(s.workers.size());
         s.error = nullptr;
-        ++s.round;
+        s.finished.store(0, std::memory_order_relaxed);
+        s.next.store(uint64_t(my_round) << 32, std::memory_order_release);
     }
     s.wake.notify_all();
-    s.work();  // the caller takes part
+    s.work(my_round, count, task);  // the caller takes part
     std::unique_lock<std::mutex> lock(s.mutex);
-    s.done.wait(lock, [&] { return s.busy == 0; });
-    s.task = nullptr;
+    s.done.wait(lock, [&] { return s.finished.load(std::memory_order_acquire) == count; });
+    s.task = nullptr;  // a worker waking from now on waits for the next round
     if (s.error) {
         std::exception_ptr e = s.error;
         s.error = nullptr;
