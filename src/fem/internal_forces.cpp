@@ -12,112 +12,230 @@
 namespace lfem {
 namespace {
 
+// Tets are processed in batches of kLanes: every stage of the kernel is a loop over the lanes
+// of one batch with the tets' numbers side by side (structure of arrays), which the compiler
+// turns into SIMD instructions. The gather of node positions and the scatter of forces stay
+// in tet order, so every node sums its contributions in the same order as a plain loop would.
+constexpr int kLanes = 8;
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#define LFEM_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define LFEM_SIMD_CLONES
+#endif
+
+struct Batch {
+    int n;                    // live lanes (the rest are padding with zero volume)
+    double D[9][kLanes];      // edge matrix, row-major
+    double m[9][kLanes];      // Dm^-1, column-major as stored
+    double V[kLanes];
+    double F[9][kLanes];      // D Dm^-1
+    double P[9][kLanes];      // first Piola-Kirchhoff stress, row-major
+    double psi[kLanes];       // energy density
+};
+
+// Gradient of the motion: F = D Dm^-1 (Dm_inv column-major: M[k][c] = m[k + 3c]).
+inline void deformation_gradient(Batch& b) {
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            for (int l = 0; l < kLanes; ++l)
+                b.F[3 * r + c][l] = b.D[3 * r][l] * b.m[3 * c][l] + b.D[3 * r + 1][l] * b.m[1 + 3 * c][l] +
+                                    b.D[3 * r + 2][l] * b.m[2 + 3 * c][l];
+}
+
+// Small-strain (Hooke) stress of sym(H) and psi = mu eps:eps + lambda/2 tr(eps)^2, one lane
+// (as hooke_stress in tet_element.h). H and P row-major, indexed [component][lane].
+inline void hooke_lane(const double (*H)[kLanes], const Lame& lm, double (*P)[kLanes], double* psi, int l) {
+    const double e00 = H[0][l], e11 = H[4][l], e22 = H[8][l];
+    const double e01 = 0.5 * (H[1][l] + H[3][l]), e02 = 0.5 * (H[2][l] + H[6][l]),
+                 e12 = 0.5 * (H[5][l] + H[7][l]);
+    const double tr = e00 + e11 + e22;
+    psi[l] = lm.mu * (e00 * e00 + e11 * e11 + e22 * e22 + 2.0 * (e01 * e01 + e02 * e02 + e12 * e12)) +
+             0.5 * lm.lambda * tr * tr;
+    const double two_mu = 2.0 * lm.mu, lt = lm.lambda * tr;
+    P[0][l] = two_mu * e00 + lt, P[4][l] = two_mu * e11 + lt, P[8][l] = two_mu * e22 + lt;
+    P[1][l] = P[3][l] = two_mu * e01;
+    P[2][l] = P[6][l] = two_mu * e02;
+    P[5][l] = P[7][l] = two_mu * e12;
+}
+
+// P = R hooke(R^T F - I) for one lane: Hooke's law in a rotated frame (R row-major).
+inline void rotated_hooke_lane(const double* R, const double (*F)[kLanes], const Lame& lm,
+                               double (*P)[kLanes], double* psi, int l) {
+    double H[9][kLanes], S[9][kLanes];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            H[3 * r + c][l] = R[r] * F[c][l] + R[3 + r] * F[3 + c][l] + R[6 + r] * F[6 + c][l] - (r == c);
+    hooke_lane(H, lm, S, psi, l);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            P[3 * r + c][l] = R[3 * r] * S[c][l] + R[3 * r + 1] * S[3 + c][l] + R[3 * r + 2] * S[6 + c][l];
+}
+
+// Stable neo-Hookean (tet_element.h), one lane: P = mu F + (lambda' (J - 1) - mu) cof(F).
+inline void neo_hookean_lane(const double (*F)[kLanes], double mu, double lam, double (*P)[kLanes],
+                             double* psi, int l) {
+    // Columns of F: a, b, c; cofactor columns b x c, c x a, a x b.
+    const double a0 = F[0][l], a1 = F[3][l], a2 = F[6][l];
+    const double b0 = F[1][l], b1 = F[4][l], b2 = F[7][l];
+    const double c0 = F[2][l], c1 = F[5][l], c2 = F[8][l];
+    const double k00 = b1 * c2 - b2 * c1, k10 = b2 * c0 - b0 * c2, k20 = b0 * c1 - b1 * c0;
+    const double k01 = c1 * a2 - c2 * a1, k11 = c2 * a0 - c0 * a2, k21 = c0 * a1 - c1 * a0;
+    const double k02 = a1 * b2 - a2 * b1, k12 = a2 * b0 - a0 * b2, k22 = a0 * b1 - a1 * b0;
+    const double J = a0 * k00 + a1 * k10 + a2 * k20;
+    const double sq = a0 * a0 + a1 * a1 + a2 * a2 + b0 * b0 + b1 * b1 + b2 * b2 + c0 * c0 +
+                      c1 * c1 + c2 * c2;
+    psi[l] = 0.5 * mu * (sq - 3.0) - mu * (J - 1.0) + 0.5 * lam * (J - 1.0) * (J - 1.0);
+    const double s = lam * (J - 1.0) - mu;
+    P[0][l] = mu * a0 + s * k00, P[1][l] = mu * b0 + s * k01, P[2][l] = mu * c0 + s * k02;
+    P[3][l] = mu * a1 + s * k10, P[4][l] = mu * b1 + s * k11, P[5][l] = mu * c1 + s * k12;
+    P[6][l] = mu * a2 + s * k20, P[7][l] = mu * b2 + s * k21, P[8][l] = mu * c2 + s * k22;
+}
+
+// What a material model computes per batch: P and psi from F (and the tets' indices).
+struct LinearModel {
+    Lame lame;
+    void operator()(Batch& b, uint32_t) const {
+        for (int l = 0; l < kLanes; ++l) hooke_lane(b.F, lame, b.P, b.psi, l);
+    }
+};
+struct PaperModel {
+    Lame lame;
+    double R[9];  // the body's global rotation, row-major
+    void operator()(Batch& b, uint32_t) const {
+        for (int l = 0; l < kLanes; ++l) rotated_hooke_lane(R, b.F, lame, b.P, b.psi, l);
+    }
+};
+struct NeoHookeanModel {
+    double mu, lam;
+    void operator()(Batch& b, uint32_t) const {
+        for (int l = 0; l < kLanes; ++l) neo_hookean_lane(b.F, mu, lam, b.P, b.psi, l);
+    }
+};
+struct CorotationalModel {
+    Lame lame;
+    float* rotations;  // 4 per tet, warm start, updated
+    void operator()(Batch& b, uint32_t e0) const {
+        for (int l = 0; l < b.n; ++l) {
+            double A[9], R[9];
+            for (int i = 0; i < 9; ++i) A[i] = b.F[i][l];
+            extract_rotation_fast(A, rotations + 4 * std::size_t(e0 + l), R);
+            rotated_hooke_lane(R, b.F, lame, b.P, b.psi, l);
+        }
+        for (int l = b.n; l < kLanes; ++l) {  // padding: no stress
+            for (int i = 0; i < 9; ++i) b.P[i][l] = 0.0;
+            b.psi[l] = 0.0;
+        }
+    }
+};
+
+struct LoopData {
+    const double* x;
+    const double* X;
+    const uint32_t* tets;
+    const double* Dm_inv;
+    const double* volume;
+    double* f;
+    uint32_t tet_count;
+    uint32_t block_size;
+};
+
+// One block of tets: gather, kernel, scatter; returns the block's strain energy. Compiled for
+// AVX-512, AVX2 and baseline x86-64, chosen at load time by the CPU (GCC function clones). The
+// results are bitwise the same on each: this file is built with -ffp-contract=off (no a*b+c
+// fused into one rounding), so every clone rounds every operation alike.
+template <bool displacement_edges, class Model>
+LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const Model& model) {
+    Batch b;
+    double energy = 0.0;
+    const uint32_t e_end = std::min(d.tet_count, (block + 1) * d.block_size);
+    for (uint32_t e0 = block * d.block_size; e0 < e_end; e0 += kLanes) {
+        b.n = int(std::min<uint32_t>(kLanes, e_end - e0));
+        for (int l = 0; l < kLanes; ++l) {
+            if (l >= b.n) {  // padding lanes: an empty tet
+                for (int i = 0; i < 9; ++i) b.D[i][l] = b.m[i][l] = 0.0;
+                b.V[l] = 0.0;
+                continue;
+            }
+            const uint32_t e = e0 + l;
+            const uint32_t* t = d.tets + 4 * std::size_t(e);
+            const double* p0 = d.x + 3 * std::size_t(t[0]);
+            const double* p1 = d.x + 3 * std::size_t(t[1]);
+            const double* p2 = d.x + 3 * std::size_t(t[2]);
+            const double* p3 = d.x + 3 * std::size_t(t[3]);
+            for (int r = 0; r < 3; ++r) {
+                if (displacement_edges) {
+                    // Small strains: differences of displacements keep the digits that
+                    // differences of positions would cancel away.
+                    const double u0 = p0[r] - d.X[3 * std::size_t(t[0]) + r];
+                    b.D[3 * r + 0][l] = (p1[r] - d.X[3 * std::size_t(t[1]) + r]) - u0;
+                    b.D[3 * r + 1][l] = (p2[r] - d.X[3 * std::size_t(t[2]) + r]) - u0;
+                    b.D[3 * r + 2][l] = (p3[r] - d.X[3 * std::size_t(t[3]) + r]) - u0;
+                } else {
+                    b.D[3 * r + 0][l] = p1[r] - p0[r];
+                    b.D[3 * r + 1][l] = p2[r] - p0[r];
+                    b.D[3 * r + 2][l] = p3[r] - p0[r];
+                }
+            }
+            const double* m = d.Dm_inv + 9 * std::size_t(e);
+            for (int i = 0; i < 9; ++i) b.m[i][l] = m[i];
+            b.V[l] = d.volume[e];
+        }
+        deformation_gradient(b);
+        model(b, e0);
+        // f_int_a = V P grad N_a with grad N_a the rows of Dm^-1 (a = 1..3) and node 0 the
+        // negative sum; the elastic force is its negative.
+        double G[9][kLanes];  // G[3r + a-1]: force component r on node a
+        for (int r = 0; r < 3; ++r)
+            for (int l = 0; l < kLanes; ++l) {
+                const double q0 = -b.V[l] * b.P[3 * r][l], q1 = -b.V[l] * b.P[3 * r + 1][l],
+                             q2 = -b.V[l] * b.P[3 * r + 2][l];
+                G[3 * r + 0][l] = q0 * b.m[0][l] + q1 * b.m[3][l] + q2 * b.m[6][l];
+                G[3 * r + 1][l] = q0 * b.m[1][l] + q1 * b.m[4][l] + q2 * b.m[7][l];
+                G[3 * r + 2][l] = q0 * b.m[2][l] + q1 * b.m[5][l] + q2 * b.m[8][l];
+            }
+        for (int l = 0; l < b.n; ++l) {
+            const uint32_t* t = d.tets + 4 * std::size_t(e0 + l);
+            energy += b.V[l] * b.psi[l];
+            for (int r = 0; r < 3; ++r) {
+                const double g1 = G[3 * r][l], g2 = G[3 * r + 1][l], g3 = G[3 * r + 2][l];
+                d.f[3 * std::size_t(t[1]) + r] += g1;
+                d.f[3 * std::size_t(t[2]) + r] += g2;
+                d.f[3 * std::size_t(t[3]) + r] += g3;
+                d.f[3 * std::size_t(t[0]) + r] -= g1 + g2 + g3;
+            }
+        }
+    }
+    return energy;
+}
+
 // The element loop shared by every model, parallel over the colours of element blocks (see
 // element_colouring.h): the blocks of one colour share no node, so they scatter at once, and
 // each node sums its contributions in the same order for any thread count. The strain energy
 // is summed per block, then over the blocks in index order, for the same reason.
-//
-// `kernel(e, D, P)` receives tet e's edge matrix D (row-major, D[3r+k] = column k of
-// [x1-x0, x2-x0, x3-x0] in row r; for the linear model the displacements' edges instead, which
-// keep the digits that differences of positions would cancel away) and returns the first
-// Piola-Kirchhoff stress P (row-major) and the energy density.
-template <bool displacement_edges, class Kernel>
-void element_loop(const Body& body, BodyState& state, ThreadPool* pool, const Kernel& kernel) {
-    const BodyReference& ref = body.ref;
-    const double* __restrict x = state.x.data();
-    const double* __restrict X = ref.X.data();
-    const uint32_t* __restrict tets = ref.tets.data();
-    const double* __restrict Dm_inv = ref.Dm_inv.data();
-    const double* __restrict volume = ref.volume.data();
-    double* __restrict f = state.elastic.data();
-    std::fill(state.elastic.begin(), state.elastic.end(), 0.0);
+template <bool displacement_edges, class Model>
+double element_loop(const BodyReference& ref, const double* x, double* f, uint32_t n,
+                    ThreadPool* pool, const Model& model) {
+    std::fill(f, f + 3 * std::size_t(n), 0.0);
     const ElementColouring& colouring = ref.colouring;
-    const uint32_t tet_count = ref.tet_count(), B = colouring.block_size;
+    const LoopData d{x, ref.X.data(), ref.tets.data(), ref.Dm_inv.data(), ref.volume.data(),
+                     f, ref.tet_count(), colouring.block_size};
     std::vector<double> block_energy(colouring.block_count(), 0.0);
-
-    auto run_block = [&](uint32_t b) {
-        double energy = 0.0;
-        const uint32_t e1 = std::min(tet_count, (b + 1) * B);
-        for (uint32_t e = b * B; e < e1; ++e) {
-            const uint32_t* t = tets + 4 * e;
-            const double* p0 = x + 3 * t[0];
-            const double* p1 = x + 3 * t[1];
-            const double* p2 = x + 3 * t[2];
-            const double* p3 = x + 3 * t[3];
-            double D[9];
-            for (int r = 0; r < 3; ++r) {
-                if (displacement_edges) {
-                    const double u0 = p0[r] - X[3 * t[0] + r];
-                    D[3 * r + 0] = (p1[r] - X[3 * t[1] + r]) - u0;
-                    D[3 * r + 1] = (p2[r] - X[3 * t[2] + r]) - u0;
-                    D[3 * r + 2] = (p3[r] - X[3 * t[3] + r]) - u0;
-                } else {
-                    D[3 * r + 0] = p1[r] - p0[r];
-                    D[3 * r + 1] = p2[r] - p0[r];
-                    D[3 * r + 2] = p3[r] - p0[r];
-                }
-            }
-            // Gradient of the motion: D Dm^-1 (Dm_inv stored column-major: M[k][c] = m[k+3c]).
-            const double* m = Dm_inv + 9 * e;
-            double F[9];
-            for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c)
-                    F[3 * r + c] = D[3 * r] * m[3 * c] + D[3 * r + 1] * m[1 + 3 * c] +
-                                   D[3 * r + 2] * m[2 + 3 * c];
-            double P[9], psi;
-            kernel(e, F, P, psi);
-            const double V = volume[e];
-            energy += V * psi;
-            // f_int_a = V P grad N_a with grad N_a the rows of Dm^-1 (a = 1..3) and node 0
-            // the negative sum; the elastic force is its negative.
-            for (int r = 0; r < 3; ++r) {
-                const double q0 = -V * P[3 * r], q1 = -V * P[3 * r + 1], q2 = -V * P[3 * r + 2];
-                const double g1 = q0 * m[0] + q1 * m[3] + q2 * m[6];
-                const double g2 = q0 * m[1] + q1 * m[4] + q2 * m[7];
-                const double g3 = q0 * m[2] + q1 * m[5] + q2 * m[8];
-                f[3 * t[1] + r] += g1;
-                f[3 * t[2] + r] += g2;
-                f[3 * t[3] + r] += g3;
-                f[3 * t[0] + r] -= g1 + g2 + g3;
-            }
-        }
-        block_energy[b] = energy;
-    };
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
         const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
-        parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c],
-                     [&](uint32_t i) { run_block(blocks[i]); });
+        parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c], [&](uint32_t i) {
+            block_energy[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model);
+        });
     }
     double energy = 0.0;
     for (double e : block_energy) energy += e;
-    state.strain_energy = energy;
+    return energy;
 }
 
-// Small-strain (Hooke) stress of the symmetric part of H, row-major, and its energy density
-// psi = mu eps:eps + lambda/2 tr(eps)^2 (as hooke_stress in tet_element.h).
-inline void hooke(const double* H, const Lame& l, double* P, double& psi) {
-    const double e00 = H[0], e11 = H[4], e22 = H[8];
-    const double e01 = 0.5 * (H[1] + H[3]), e02 = 0.5 * (H[2] + H[6]), e12 = 0.5 * (H[5] + H[7]);
-    const double tr = e00 + e11 + e22;
-    psi = l.mu * (e00 * e00 + e11 * e11 + e22 * e22 + 2.0 * (e01 * e01 + e02 * e02 + e12 * e12)) +
-          0.5 * l.lambda * tr * tr;
-    const double two_mu = 2.0 * l.mu, lt = l.lambda * tr;
-    P[0] = two_mu * e00 + lt, P[4] = two_mu * e11 + lt, P[8] = two_mu * e22 + lt;
-    P[1] = P[3] = two_mu * e01;
-    P[2] = P[6] = two_mu * e02;
-    P[5] = P[7] = two_mu * e12;
-}
-
-// P = R hooke(R^T F - I): Hooke's law in a rotated frame (R row-major).
-inline void rotated_hooke(const double* R, const double* F, const Lame& l, double* P, double& psi) {
-    double H[9], S[9];
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            H[3 * r + c] = R[r] * F[c] + R[3 + r] * F[3 + c] + R[6 + r] * F[6 + c] - (r == c);
-    hooke(H, l, S, psi);
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            P[3 * r + c] = R[3 * r] * S[c] + R[3 * r + 1] * S[3 + c] + R[3 * r + 2] * S[6 + c];
+template <bool displacement_edges, class Model>
+void element_loop(const Body& body, BodyState& state, ThreadPool* pool, const Model& model) {
+    state.strain_energy = element_loop<displacement_edges>(
+        body.ref, state.x.data(), state.elastic.data(), body.ref.node_count(), pool, model);
 }
 
 }  // namespace
@@ -126,9 +244,7 @@ void compute_elastic_forces(const Body& body, BodyState& state, ThreadPool* pool
     const Lame lame = body.lame;
     switch (body.def.model) {
         case LFEM_MODEL_LINEAR:
-            element_loop<true>(body, state, pool, [&](uint32_t, const double* H, double* P, double& psi) {
-                hooke(H, lame, P, psi);
-            });
+            element_loop<true>(body, state, pool, LinearModel{lame});
             break;
         case LFEM_MODEL_PAPER: {
             // Floating frame: strain measured in the body's rotated frame, R^T F - I; the
@@ -136,49 +252,29 @@ void compute_elastic_forces(const Body& body, BodyState& state, ThreadPool* pool
             const Eigen::Quaterniond q(state.rotation[0], state.rotation[1], state.rotation[2],
                                        state.rotation[3]);
             const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> Rm = q.toRotationMatrix();
-            double R[9];
-            for (int i = 0; i < 9; ++i) R[i] = Rm.data()[i];
-            element_loop<false>(body, state, pool, [&](uint32_t, const double* F, double* P, double& psi) {
-                rotated_hooke(R, F, lame, P, psi);
-            });
+            PaperModel model{lame, {}};
+            for (int i = 0; i < 9; ++i) model.R[i] = Rm.data()[i];
+            element_loop<false>(body, state, pool, model);
             break;
         }
-        case LFEM_MODEL_COROTATIONAL: {
+        case LFEM_MODEL_COROTATIONAL:
             // One rotation per tet, the polar rotation of F (warm-started from the last step):
             // the stress R C:(R^T F - I) is torque-free for an isotropic material, so angular
             // momentum is kept.
-            float* rotations = state.tet_rotation.data();
-            element_loop<false>(body, state, pool, [&](uint32_t e, const double* F, double* P, double& psi) {
-                double R[9];
-                extract_rotation_fast(F, rotations + 4 * e, R);
-                rotated_hooke(R, F, lame, P, psi);
-            });
+            element_loop<false>(body, state, pool, CorotationalModel{lame, state.tet_rotation.data()});
             break;
-        }
         case LFEM_MODEL_NEO_HOOKEAN:
-        default: {
-            // Stable neo-Hookean (tet_element.h): P = mu F + (lambda' (J - 1) - mu) cof(F).
-            const double mu = lame.mu, lam = lame.lambda + lame.mu;
-            element_loop<false>(body, state, pool, [&](uint32_t, const double* F, double* P, double& psi) {
-                // Columns of F: a = F(:,0), b = F(:,1), c = F(:,2); cof columns b x c, c x a, a x b.
-                const double a0 = F[0], a1 = F[3], a2 = F[6];
-                const double b0 = F[1], b1 = F[4], b2 = F[7];
-                const double c0 = F[2], c1 = F[5], c2 = F[8];
-                const double k00 = b1 * c2 - b2 * c1, k10 = b2 * c0 - b0 * c2, k20 = b0 * c1 - b1 * c0;
-                const double k01 = c1 * a2 - c2 * a1, k11 = c2 * a0 - c0 * a2, k21 = c0 * a1 - c1 * a0;
-                const double k02 = a1 * b2 - a2 * b1, k12 = a2 * b0 - a0 * b2, k22 = a0 * b1 - a1 * b0;
-                const double J = a0 * k00 + a1 * k10 + a2 * k20;
-                double sq = 0.0;
-                for (int i = 0; i < 9; ++i) sq += F[i] * F[i];
-                psi = 0.5 * mu * (sq - 3.0) - mu * (J - 1.0) + 0.5 * lam * (J - 1.0) * (J - 1.0);
-                const double s = lam * (J - 1.0) - mu;
-                P[0] = mu * F[0] + s * k00, P[1] = mu * F[1] + s * k01, P[2] = mu * F[2] + s * k02;
-                P[3] = mu * F[3] + s * k10, P[4] = mu * F[4] + s * k11, P[5] = mu * F[5] + s * k12;
-                P[6] = mu * F[6] + s * k20, P[7] = mu * F[7] + s * k21, P[8] = mu * F[8] + s * k22;
-            });
+        default:
+            element_loop<false>(body, state, pool, NeoHookeanModel{lame.mu, lame.lambda + lame.mu});
             break;
-        }
     }
+}
+
+void apply_reference_stiffness(const BodyReference& ref, const Lame& lame, const double* u,
+                               double* y, ThreadPool* pool) {
+    // The linear kernel on the edges of u gives -K u.
+    element_loop<false>(ref, u, y, ref.node_count(), pool, LinearModel{lame});
+    for (std::size_t i = 0; i < 3 * std::size_t(ref.node_count()); ++i) y[i] = -y[i];
 }
 
 void compute_von_mises(const Body& body, const BodyState& state, double* out) {

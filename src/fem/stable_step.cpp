@@ -4,28 +4,11 @@
 #include <cmath>
 #include <cstdint>
 
+#include "fem/internal_forces.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
 namespace {
-
-// y = K u, element by element (Hooke's law on the displacement gradient of u).
-void apply_stiffness(const BodyReference& ref, const Lame& lame, const std::vector<double>& u,
-                     std::vector<double>& y) {
-    std::fill(y.begin(), y.end(), 0.0);
-    for (uint32_t e = 0; e < ref.tet_count(); ++e) {
-        const uint32_t* t = &ref.tets[4 * e];
-        const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
-        const Mat3 H = edge_matrix(&u[3 * t[0]], &u[3 * t[1]], &u[3 * t[2]], &u[3 * t[3]]) * Dm_inv;
-        const Mat3 G = ref.volume[e] * hooke_stress(H, lame, nullptr) * Dm_inv.transpose();
-        for (int r = 0; r < 3; ++r) {
-            y[3 * t[1] + r] += G(r, 0);
-            y[3 * t[2] + r] += G(r, 1);
-            y[3 * t[3] + r] += G(r, 2);
-            y[3 * t[0] + r] -= G(r, 0) + G(r, 1) + G(r, 2);
-        }
-    }
-}
 
 // Gershgorin: every eigenvalue of M^-1 K lies below max over rows of sum_j |K_ij| / m_i. The
 // element blocks are K_ab = V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g = grad N;
@@ -55,7 +38,7 @@ double gershgorin_bound(const BodyReference& ref, const Lame& lame) {
 
 }  // namespace
 
-StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame) {
+StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame, ThreadPool* pool) {
     StableStepEstimate out;
     const double lambda_g = gershgorin_bound(ref, lame);
     out.omega_gershgorin = std::sqrt(lambda_g);
@@ -78,7 +61,7 @@ StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& la
         norm = std::sqrt(norm);
         if (!(norm > 0.0)) break;
         for (std::size_t i = 0; i < n; ++i) u[i] = w[i] / norm / std::sqrt(ref.mass[i / 3]);
-        apply_stiffness(ref, lame, u, y);
+        apply_reference_stiffness(ref, lame, u.data(), y.data(), pool);
         rq = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             w[i] = y[i] / std::sqrt(ref.mass[i / 3]);

@@ -3,6 +3,7 @@
 // is applied element by element.
 #pragma once
 
+#include "common/thread_pool.h"
 #include "world/body.h"
 
 namespace lfem {
@@ -16,7 +17,8 @@ struct StableStepEstimate {
 };
 
 // Largest natural frequency of a body from its reference data (X, masses, tets, Dm_inv,
-// volumes) and elastic constants.
-StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame);
+// volumes, colouring) and elastic constants; the operator runs on the pool when one is given.
+StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame,
+                                        ThreadPool* pool = nullptr);
 
 }  // namespace lfem

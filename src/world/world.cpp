@@ -187,8 +187,9 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     for (double m : ref.mass) ref.total_mass += m;
     const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
     for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
-    if (body.is_deformable()) ref.stable_step = 2.0 / estimate_stable_step(ref, body.lame).omega_max;
     ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), n);
+    if (body.is_deformable())
+        ref.stable_step = 2.0 / estimate_stable_step(ref, body.lame, pool_.get()).omega_max;
 
     BodyState state = body.state;
     // Existing nodes continue from their synchronized velocities; new ones get the def's.
