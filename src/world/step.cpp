@@ -76,7 +76,7 @@ void predict_positions(Body& body, const double gravity[3], double h, Scratch& s
     scratch.v_old.resize(s.v_half.size());
     scratch.inv_mass.resize(n);
     Vec3 c = Vec3::Zero();
-    if (paper) c = center_of_mass(ref.mass.data(), s.x.data(), n);
+    if (paper) c = center_of_mass(ref.mass.data(), s.x.data(), n, pool);
     // Node blocks in parallel; support work and torque summed per block, then in block order.
     const uint32_t blocks = node_block_count(n);
     std::vector<double> sums(4 * std::size_t(blocks), 0.0);
@@ -136,8 +136,8 @@ void commit_step(Body& body, const double gravity[3], double h, const Scratch& s
     Vec3 c_old = Vec3::Zero(), torque(scratch.support_torque);
     Eigen::Matrix3d inertia;
     if (paper) {
-        c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n);
-        inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old);
+        c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n, pool);
+        inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old, pool);
     }
     if (touched) s.contact_force.assign(3 * std::size_t(n), 0.0);
     else std::vector<double>().swap(s.contact_force);  // nothing held while not touching
@@ -191,8 +191,9 @@ void commit_step(Body& body, const double gravity[3], double h, const Scratch& s
         Eigen::Quaterniond q = load_q(s.rotation);
         integrate_global_rotation(inertia, torque, h, L, q);
         const Eigen::Quaterniond predicted = q;
-        const Vec3 c_new = center_of_mass(ref.mass.data(), s.x.data(), n);
-        fit_global_rotation(ref.mass.data(), s.x.data(), ref.X.data(), n, c_new, Vec3(ref.com), q);
+        const Vec3 c_new = center_of_mass(ref.mass.data(), s.x.data(), n, pool);
+        fit_global_rotation(ref.mass.data(), s.x.data(), ref.X.data(), n, c_new, Vec3(ref.com), q,
+                            pool);
         tally.drift = std::max(tally.drift, predicted.angularDistance(q));
         s.rotation[0] = q.w(), s.rotation[1] = q.x(), s.rotation[2] = q.y(), s.rotation[3] = q.z();
         for (int k = 0; k < 3; ++k) s.angular_momentum[k] = L[k];
