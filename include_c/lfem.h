@@ -136,7 +136,7 @@ LFEM_API lfem_status lfem_world_set_gravity(lfem_world* world, const double grav
 LFEM_API lfem_status lfem_world_set_time_step(lfem_world* world, double time_step);
 
 /* The stable limit of the central difference step, in seconds: 2/omega_max of the stiffest
- * deformable body (power iteration on the element-by-element operator, capped by a proven
+ * deformable body (Lanczos iteration on the element-by-element operator, capped by a proven
  * Gershgorin bound). Infinity (HUGE_VAL) when the world has no deformable body. */
 LFEM_API lfem_status lfem_world_get_stable_step(const lfem_world* world, double* out);
 

@@ -9,11 +9,11 @@
 namespace lfem {
 
 struct StableStepEstimate {
-    double omega_max = 0;       // rad/s, the value used: min(power iteration * (1 + margin),
+    double omega_max = 0;       // rad/s, the value used: min(Lanczos estimate * (1 + margin),
                                 // Gershgorin bound)
-    double omega_power = 0;     // rad/s, Rayleigh quotient of the power iteration (lower bound)
+    double omega_power = 0;     // rad/s, largest Ritz value of the Lanczos iteration (lower bound)
     double omega_gershgorin = 0;// rad/s, proven upper bound from nodal row sums of |K_e|
-    int iterations = 0;
+    int iterations = 0;         // Lanczos steps (products with the operator)
 };
 
 // Largest natural frequency of a body from its reference data (X, masses, tets, Dm_inv,
