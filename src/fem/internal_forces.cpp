@@ -20,8 +20,10 @@ constexpr int kLanes = 8;
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 #define LFEM_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#define LFEM_INLINE __attribute__((always_inline)) inline
 #else
 #define LFEM_SIMD_CLONES
+#define LFEM_INLINE inline
 #endif
 
 struct Batch {
@@ -35,7 +37,7 @@ struct Batch {
 };
 
 // Gradient of the motion: F = D Dm^-1 (Dm_inv column-major: M[k][c] = m[k + 3c]).
-inline void deformation_gradient(Batch& b) {
+LFEM_INLINE void deformation_gradient(Batch& b) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
             for (int l = 0; l < kLanes; ++l)
@@ -45,7 +47,7 @@ inline void deformation_gradient(Batch& b) {
 
 // Small-strain (Hooke) stress of sym(H) and psi = mu eps:eps + lambda/2 tr(eps)^2, one lane
 // (as hooke_stress in tet_element.h). H and P row-major, indexed [component][lane].
-inline void hooke_lane(const double (*H)[kLanes], const Lame& lm, double (*P)[kLanes], double* psi, int l) {
+LFEM_INLINE void hooke_lane(const double (*H)[kLanes], const Lame& lm, double (*P)[kLanes], double* psi, int l) {
     const double e00 = H[0][l], e11 = H[4][l], e22 = H[8][l];
     const double e01 = 0.5 * (H[1][l] + H[3][l]), e02 = 0.5 * (H[2][l] + H[6][l]),
                  e12 = 0.5 * (H[5][l] + H[7][l]);
@@ -60,7 +62,7 @@ inline void hooke_lane(const double (*H)[kLanes], const Lame& lm, double (*P)[kL
 }
 
 // P = R hooke(R^T F - I) for one lane: Hooke's law in a rotated frame (R row-major).
-inline void rotated_hooke_lane(const double* R, const double (*F)[kLanes], const Lame& lm,
+LFEM_INLINE void rotated_hooke_lane(const double* R, const double (*F)[kLanes], const Lame& lm,
                                double (*P)[kLanes], double* psi, int l) {
     double H[9][kLanes], S[9][kLanes];
     for (int r = 0; r < 3; ++r)
@@ -73,7 +75,7 @@ inline void rotated_hooke_lane(const double* R, const double (*F)[kLanes], const
 }
 
 // Stable neo-Hookean (tet_element.h), one lane: P = mu F + (lambda' (J - 1) - mu) cof(F).
-inline void neo_hookean_lane(const double (*F)[kLanes], double mu, double lam, double (*P)[kLanes],
+LFEM_INLINE void neo_hookean_lane(const double (*F)[kLanes], double mu, double lam, double (*P)[kLanes],
                              double* psi, int l) {
     // Columns of F: a, b, c; cofactor columns b x c, c x a, a x b.
     const double a0 = F[0][l], a1 = F[3][l], a2 = F[6][l];
@@ -95,20 +97,20 @@ inline void neo_hookean_lane(const double (*F)[kLanes], double mu, double lam, d
 // What a material model computes per batch: P and psi from F (and the tets' indices).
 struct LinearModel {
     Lame lame;
-    void operator()(Batch& b, uint32_t) const {
+    LFEM_INLINE void operator()(Batch& b, uint32_t) const {
         for (int l = 0; l < kLanes; ++l) hooke_lane(b.F, lame, b.P, b.psi, l);
     }
 };
 struct PaperModel {
     Lame lame;
     double R[9];  // the body's global rotation, row-major
-    void operator()(Batch& b, uint32_t) const {
+    LFEM_INLINE void operator()(Batch& b, uint32_t) const {
         for (int l = 0; l < kLanes; ++l) rotated_hooke_lane(R, b.F, lame, b.P, b.psi, l);
     }
 };
 struct NeoHookeanModel {
     double mu, lam;
-    void operator()(Batch& b, uint32_t) const {
+    LFEM_INLINE void operator()(Batch& b, uint32_t) const {
         for (int l = 0; l < kLanes; ++l) neo_hookean_lane(b.F, mu, lam, b.P, b.psi, l);
     }
 };
@@ -118,7 +120,7 @@ struct CorotationalModel {
     // The Newton step of extract_rotation_fast (polar_rotation.h), once, for every lane at the
     // same time; lanes that need more (a step above 1e-4 rad, or none possible) are redone by
     // the scalar function from their warm start. Then Hooke's law in each tet's frame.
-    void operator()(Batch& b, uint32_t e0) const {
+    LFEM_INLINE void operator()(Batch& b, uint32_t e0) const {
         double q[4][kLanes], R[9][kLanes], angle2[kLanes];
         for (int l = 0; l < kLanes; ++l)
             for (int k = 0; k < 4; ++k)
