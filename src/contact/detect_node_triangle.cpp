@@ -210,11 +210,19 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     s.box_body.clear();
     s.box_triangle.clear();
     double cell = 0.0;
+    bool any_shapes = false;
     for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
         const ContactBody& b = bodies[bi];
+        any_shapes = any_shapes || b.shape_count > 0;
+        cell = std::max(cell, b.edge_length);
+        // A body's triangles matter only to slave nodes of bodies that may touch it (a cube on
+        // a floor shape: nothing can reach the cube's faces, so they stay out of the hash).
+        bool reachable = false;
+        for (uint32_t ai = 0; ai < bodies.size() && !reachable; ++ai)
+            reachable = ai != bi && bodies[ai].node_count > 0 && bodies_may_touch(bodies[ai], b);
+        if (!reachable) continue;
         const double grow =
             std::max(kCaptureBand * b.edge_length + max_offset, scan_overlaps ? kInitialDepth * b.edge_length : 0.0);
-        cell = std::max(cell, b.edge_length);
         for (uint32_t t = 0; t < b.triangle_count; ++t) {
             Aabb box;
             for (int k = 0; k < 3; ++k) box.lo[k] = HUGE_VAL, box.hi[k] = -HUGE_VAL;
@@ -232,8 +240,9 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
             s.box_triangle.push_back(t);
         }
     }
-    if (s.boxes.empty()) return;
-    s.grid.build(s.boxes, 2.0 * cell);
+    if (s.boxes.empty() && !any_shapes) return;
+    const bool any_boxes = !s.boxes.empty();
+    if (any_boxes) s.grid.build(s.boxes, 2.0 * cell);
 
     std::vector<Candidate> best(bodies.size()), deep(bodies.size());
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
@@ -257,7 +266,7 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                 box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
             }
             s.candidates.clear();
-            s.grid.query(box, s.candidates);
+            if (any_boxes) s.grid.query(box, s.candidates);
             for (Candidate& c : best) c.found = false;
             for (Candidate& c : deep) c.found = false;
             for (uint32_t id : s.candidates) {
