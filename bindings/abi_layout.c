@@ -27,6 +27,7 @@ CHECK_OFFSET(lfem_world_def, gravity, 0);
 CHECK_OFFSET(lfem_world_def, time_step, 24);
 CHECK_OFFSET(lfem_world_def, step_safety, 32);
 CHECK_OFFSET(lfem_world_def, contact_iterations, 40);
+CHECK_OFFSET(lfem_world_def, thread_count, 44);
 CHECK_OFFSET(lfem_world_def, contact_tolerance, 48);
 CHECK_OFFSET(lfem_world_def, max_substeps, 56);
 CHECK_OFFSET(lfem_world_def, allow_unstable_step, 60);

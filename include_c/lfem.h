@@ -94,6 +94,10 @@ typedef struct lfem_world_def {
     double step_safety;         /* fraction of the stable limit used by the automatic step,
                                    in (0, 1); default 0.9 */
     uint32_t contact_iterations; /* cap on contact solver sweeps per step, default 200 */
+    uint32_t thread_count;      /* threads that run a step's element and node loops, 1..64,
+                                   default 1. Results are bitwise identical for every count. A
+                                   library built with LFEM_WITH_THREADS=OFF accepts any valid
+                                   count and runs on one thread */
     double contact_tolerance;   /* relative stopping tolerance of the contact solve, default 1e-3 */
     uint32_t max_substeps;      /* a call of lfem_world_step needing more sub-steps than this is
                                    refused up front, default 1000000 */
@@ -138,7 +142,7 @@ LFEM_API lfem_status lfem_world_set_gravity(lfem_world* world, const double grav
 LFEM_API lfem_status lfem_world_set_time_step(lfem_world* world, double time_step);
 
 /* The stable limit of the central difference step, in seconds: 2/omega_max of the stiffest
- * deformable body (power iteration on the element-by-element operator, capped by a proven
+ * deformable body (Lanczos iteration on the element-by-element operator, capped by a proven
  * Gershgorin bound). For neo-Hookean bodies it is taken at the current shape (a crushed body is
  * stiffer), so it may change from step to step. Infinity (HUGE_VAL) when the world has no
  * deformable body. */

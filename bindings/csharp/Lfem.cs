@@ -68,6 +68,7 @@ namespace Lfem
         public double TimeStep;         // s; 0 (default) = automatic
         public double StepSafety;       // fraction of the stable limit, in (0, 1), default 0.9
         public uint ContactIterations;  // default 200
+        public uint ThreadCount;        // 1..64, default 1; results are the same for every count
         public double ContactTolerance; // default 1e-3
         public uint MaxSubsteps;        // default 1000000
         public byte AllowUnstableStep;  // 1 = skip the up-front stability check, default 0

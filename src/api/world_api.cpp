@@ -22,6 +22,8 @@ void check_world_def(const lfem_world_def& d) {
     require(std::isfinite(d.step_safety) && d.step_safety > 0.0 && d.step_safety < 1.0,
             "def->step_safety must lie in (0, 1)");
     require(d.contact_iterations >= 1, "def->contact_iterations must be >= 1");
+    require(d.thread_count >= 1 && d.thread_count <= 64,
+            "def->thread_count must lie in 1..64 (got " + std::to_string(d.thread_count) + ")");
     require(std::isfinite(d.contact_tolerance) && d.contact_tolerance > 0.0,
             "def->contact_tolerance must be finite and > 0");
     require(d.max_substeps >= 1, "def->max_substeps must be >= 1");
@@ -38,6 +40,7 @@ LFEM_API lfem_world_def lfem_world_def_default(void) {
     d.time_step = 0.0;
     d.step_safety = 0.9;
     d.contact_iterations = 200;
+    d.thread_count = 1;
     d.contact_tolerance = 1e-3;
     d.max_substeps = 1000000;
     d.allow_unstable_step = 0;

@@ -1,5 +1,9 @@
 #include "fem/internal_forces.h"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include <Eigen/Geometry>
 
 #include "fem/polar_rotation.h"
@@ -8,101 +12,338 @@
 namespace lfem {
 namespace {
 
-// The element loop shared by every model. `stress(e, F, H, psi)` returns the first
-// Piola-Kirchhoff stress of tet e from its deformation gradient F and displacement gradient H
-// (both given: the linear model needs only H, computed from displacements for precision).
-template <bool needs_displacement_gradient, class Stress>
-void element_loop(const Body& body, BodyState& state, Stress&& stress) {
-    const BodyReference& ref = body.ref;
-    const double* x = state.x.data();
-    const double* X = ref.X.data();
-    double* f = state.elastic.data();
-    std::fill(state.elastic.begin(), state.elastic.end(), 0.0);
-    double energy = 0.0;
-    const uint32_t tet_count = ref.tet_count();
-    for (uint32_t e = 0; e < tet_count; ++e) {
-        const uint32_t* t = &ref.tets[4 * e];
-        const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
-        Mat3 F, H;
-        if (needs_displacement_gradient) {
-            // Small strains: differences of displacements keep the digits that differences
-            // of positions would cancel away.
-            double u[4][3];
-            for (int a = 0; a < 4; ++a)
-                for (int r = 0; r < 3; ++r) u[a][r] = x[3 * t[a] + r] - X[3 * t[a] + r];
-            H.noalias() = edge_matrix(u[0], u[1], u[2], u[3]) * Dm_inv;
-        } else {
-            F.noalias() = edge_matrix(x + 3 * t[0], x + 3 * t[1], x + 3 * t[2], x + 3 * t[3]) * Dm_inv;
-        }
-        double psi = 0.0;
-        const Mat3 P = stress(e, F, H, psi);
-        const double V = ref.volume[e];
-        energy += V * psi;
-        // f_int_a = V P grad N_a; the elastic force on the node is its negative.
-        const Mat3 G = -V * P * Dm_inv.transpose();
-        for (int r = 0; r < 3; ++r) {
-            const double g1 = G(r, 0), g2 = G(r, 1), g3 = G(r, 2);
-            f[3 * t[1] + r] += g1;
-            f[3 * t[2] + r] += g2;
-            f[3 * t[3] + r] += g3;
-            f[3 * t[0] + r] -= g1 + g2 + g3;
-        }
-    }
-    state.strain_energy = energy;
+// Tets are processed in batches of kLanes: every stage of the kernel is a loop over the lanes
+// of one batch with the tets' numbers side by side (structure of arrays), which the compiler
+// turns into SIMD instructions. The gather of node positions and the scatter of forces stay
+// in tet order, so every node sums its contributions in the same order as a plain loop would.
+constexpr int kLanes = 8;
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#define LFEM_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#define LFEM_INLINE __attribute__((always_inline)) inline
+#else
+#define LFEM_SIMD_CLONES
+#define LFEM_INLINE inline
+#endif
+
+struct Batch {
+    int n;                    // live lanes (the rest are padding with zero volume)
+    double D[9][kLanes];      // edge matrix, row-major
+    double m[9][kLanes];      // Dm^-1, column-major as stored
+    double V[kLanes];
+    double F[9][kLanes];      // D Dm^-1
+    double P[9][kLanes];      // first Piola-Kirchhoff stress, row-major
+    double psi[kLanes];       // energy density
+};
+
+// Gradient of the motion: F = D Dm^-1 (Dm_inv column-major: M[k][c] = m[k + 3c]).
+LFEM_INLINE void deformation_gradient(Batch& b) {
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            for (int l = 0; l < kLanes; ++l)
+                b.F[3 * r + c][l] = b.D[3 * r][l] * b.m[3 * c][l] + b.D[3 * r + 1][l] * b.m[1 + 3 * c][l] +
+                                    b.D[3 * r + 2][l] * b.m[2 + 3 * c][l];
 }
 
-Eigen::Quaterniond load_quaternion(const double* q) { return {q[0], q[1], q[2], q[3]}; }
-void store_quaternion(const Eigen::Quaterniond& q, double* out) {
-    out[0] = q.w();
-    out[1] = q.x();
-    out[2] = q.y();
-    out[3] = q.z();
+// Small-strain (Hooke) stress of sym(H) and psi = mu eps:eps + lambda/2 tr(eps)^2, one lane
+// (as hooke_stress in tet_element.h). H and P row-major, indexed [component][lane].
+LFEM_INLINE void hooke_lane(const double (*H)[kLanes], const Lame& lm, double (*P)[kLanes], double* psi, int l) {
+    const double e00 = H[0][l], e11 = H[4][l], e22 = H[8][l];
+    const double e01 = 0.5 * (H[1][l] + H[3][l]), e02 = 0.5 * (H[2][l] + H[6][l]),
+                 e12 = 0.5 * (H[5][l] + H[7][l]);
+    const double tr = e00 + e11 + e22;
+    psi[l] = lm.mu * (e00 * e00 + e11 * e11 + e22 * e22 + 2.0 * (e01 * e01 + e02 * e02 + e12 * e12)) +
+             0.5 * lm.lambda * tr * tr;
+    const double two_mu = 2.0 * lm.mu, lt = lm.lambda * tr;
+    P[0][l] = two_mu * e00 + lt, P[4][l] = two_mu * e11 + lt, P[8][l] = two_mu * e22 + lt;
+    P[1][l] = P[3][l] = two_mu * e01;
+    P[2][l] = P[6][l] = two_mu * e02;
+    P[5][l] = P[7][l] = two_mu * e12;
+}
+
+// P = R hooke(R^T F - I) for one lane: Hooke's law in a rotated frame (R row-major).
+LFEM_INLINE void rotated_hooke_lane(const double* R, const double (*F)[kLanes], const Lame& lm,
+                               double (*P)[kLanes], double* psi, int l) {
+    double H[9][kLanes], S[9][kLanes];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            H[3 * r + c][l] = R[r] * F[c][l] + R[3 + r] * F[3 + c][l] + R[6 + r] * F[6 + c][l] - (r == c);
+    hooke_lane(H, lm, S, psi, l);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            P[3 * r + c][l] = R[3 * r] * S[c][l] + R[3 * r + 1] * S[3 + c][l] + R[3 * r + 2] * S[6 + c][l];
+}
+
+// Stable neo-Hookean (tet_element.h), one lane: P = mu F + (lambda' (J - 1) - mu) cof(F).
+LFEM_INLINE void neo_hookean_lane(const double (*F)[kLanes], double mu, double lam, double (*P)[kLanes],
+                             double* psi, int l) {
+    // Columns of F: a, b, c; cofactor columns b x c, c x a, a x b.
+    const double a0 = F[0][l], a1 = F[3][l], a2 = F[6][l];
+    const double b0 = F[1][l], b1 = F[4][l], b2 = F[7][l];
+    const double c0 = F[2][l], c1 = F[5][l], c2 = F[8][l];
+    const double k00 = b1 * c2 - b2 * c1, k10 = b2 * c0 - b0 * c2, k20 = b0 * c1 - b1 * c0;
+    const double k01 = c1 * a2 - c2 * a1, k11 = c2 * a0 - c0 * a2, k21 = c0 * a1 - c1 * a0;
+    const double k02 = a1 * b2 - a2 * b1, k12 = a2 * b0 - a0 * b2, k22 = a0 * b1 - a1 * b0;
+    const double J = a0 * k00 + a1 * k10 + a2 * k20;
+    const double sq = a0 * a0 + a1 * a1 + a2 * a2 + b0 * b0 + b1 * b1 + b2 * b2 + c0 * c0 +
+                      c1 * c1 + c2 * c2;
+    psi[l] = 0.5 * mu * (sq - 3.0) - mu * (J - 1.0) + 0.5 * lam * (J - 1.0) * (J - 1.0);
+    const double s = lam * (J - 1.0) - mu;
+    P[0][l] = mu * a0 + s * k00, P[1][l] = mu * b0 + s * k01, P[2][l] = mu * c0 + s * k02;
+    P[3][l] = mu * a1 + s * k10, P[4][l] = mu * b1 + s * k11, P[5][l] = mu * c1 + s * k12;
+    P[6][l] = mu * a2 + s * k20, P[7][l] = mu * b2 + s * k21, P[8][l] = mu * c2 + s * k22;
+}
+
+// What a material model computes per batch: P and psi from F (and the tets' indices).
+struct LinearModel {
+    Lame lame;
+    LFEM_INLINE void operator()(Batch& b, uint32_t) const {
+        for (int l = 0; l < kLanes; ++l) hooke_lane(b.F, lame, b.P, b.psi, l);
+    }
+};
+struct PaperModel {
+    Lame lame;
+    double R[9];  // the body's global rotation, row-major
+    LFEM_INLINE void operator()(Batch& b, uint32_t) const {
+        for (int l = 0; l < kLanes; ++l) rotated_hooke_lane(R, b.F, lame, b.P, b.psi, l);
+    }
+};
+struct NeoHookeanModel {
+    double mu, lam;
+    LFEM_INLINE void operator()(Batch& b, uint32_t) const {
+        for (int l = 0; l < kLanes; ++l) neo_hookean_lane(b.F, mu, lam, b.P, b.psi, l);
+    }
+};
+struct CorotationalModel {
+    Lame lame;
+    float* rotations;  // 4 per tet, warm start, updated
+    // The Newton step of extract_rotation_fast (polar_rotation.h), once, for every lane at the
+    // same time; lanes that need more (a step above 1e-4 rad, or none possible) are redone by
+    // the scalar function from their warm start. Then Hooke's law in each tet's frame.
+    LFEM_INLINE void operator()(Batch& b, uint32_t e0) const {
+        double q[4][kLanes], R[9][kLanes], angle2[kLanes];
+        for (int l = 0; l < kLanes; ++l)
+            for (int k = 0; k < 4; ++k)
+                q[k][l] = l < b.n ? double(rotations[4 * std::size_t(e0 + l) + k]) : double(k == 0);
+        for (int l = 0; l < kLanes; ++l) {
+            double norm = 1.0 / std::sqrt(q[0][l] * q[0][l] + q[1][l] * q[1][l] + q[2][l] * q[2][l] +
+                                          q[3][l] * q[3][l]);
+            double w = q[0][l] * norm, x = q[1][l] * norm, y = q[2][l] * norm, z = q[3][l] * norm;
+            const double r0 = 1 - 2 * (y * y + z * z), r1 = 2 * (x * y - w * z), r2 = 2 * (x * z + w * y);
+            const double r3 = 2 * (x * y + w * z), r4 = 1 - 2 * (x * x + z * z), r5 = 2 * (y * z - w * x);
+            const double r6 = 2 * (x * z - w * y), r7 = 2 * (y * z + w * x), r8 = 1 - 2 * (x * x + y * y);
+            // M = R^T F
+            const double M0 = r0 * b.F[0][l] + r3 * b.F[3][l] + r6 * b.F[6][l];
+            const double M1 = r0 * b.F[1][l] + r3 * b.F[4][l] + r6 * b.F[7][l];
+            const double M2 = r0 * b.F[2][l] + r3 * b.F[5][l] + r6 * b.F[8][l];
+            const double M3 = r1 * b.F[0][l] + r4 * b.F[3][l] + r7 * b.F[6][l];
+            const double M4 = r1 * b.F[1][l] + r4 * b.F[4][l] + r7 * b.F[7][l];
+            const double M5 = r1 * b.F[2][l] + r4 * b.F[5][l] + r7 * b.F[8][l];
+            const double M6 = r2 * b.F[0][l] + r5 * b.F[3][l] + r8 * b.F[6][l];
+            const double M7 = r2 * b.F[1][l] + r5 * b.F[4][l] + r8 * b.F[7][l];
+            const double M8 = r2 * b.F[2][l] + r5 * b.F[5][l] + r8 * b.F[8][l];
+            const double g0 = M7 - M5, g1 = M2 - M6, g2 = M3 - M1;
+            const double tr = M0 + M4 + M8;
+            const double h00 = tr - M0, h11 = tr - M4, h22 = tr - M8;
+            const double h01 = -0.5 * (M1 + M3), h02 = -0.5 * (M2 + M6), h12 = -0.5 * (M5 + M7);
+            const double c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22,
+                         c02 = h01 * h12 - h02 * h11;
+            const double c11 = h00 * h22 - h02 * h02, c12 = h01 * h02 - h00 * h12,
+                         c22 = h00 * h11 - h01 * h01;
+            const double det = h00 * c00 + h01 * c01 + h02 * c02;
+            // Lanes with an indefinite H are redone by the scalar code below.
+            const bool newton = h00 > 0.0 && c22 > 0.0 && det > 0.0;
+            const double inv = newton ? 1.0 / det : 0.0;
+            const double d0 = (c00 * g0 + c01 * g1 + c02 * g2) * inv;
+            const double d1 = (c01 * g0 + c11 * g1 + c12 * g2) * inv;
+            const double d2 = (c02 * g0 + c12 * g1 + c22 * g2) * inv;
+            angle2[l] = newton ? d0 * d0 + d1 * d1 + d2 * d2 : -1.0;
+            const double a = 0.5 * d0, bb = 0.5 * d1, c = 0.5 * d2;
+            const double nw = w - x * a - y * bb - z * c;
+            const double nx = x + w * a + y * c - z * bb;
+            const double ny = y + w * bb + z * a - x * c;
+            const double nz = z + w * c + x * bb - y * a;
+            norm = 1.0 / std::sqrt(nw * nw + nx * nx + ny * ny + nz * nz);
+            w = nw * norm, x = nx * norm, y = ny * norm, z = nz * norm;
+            q[0][l] = w, q[1][l] = x, q[2][l] = y, q[3][l] = z;
+            R[0][l] = 1 - 2 * (y * y + z * z), R[1][l] = 2 * (x * y - w * z), R[2][l] = 2 * (x * z + w * y);
+            R[3][l] = 2 * (x * y + w * z), R[4][l] = 1 - 2 * (x * x + z * z), R[5][l] = 2 * (y * z - w * x);
+            R[6][l] = 2 * (x * z - w * y), R[7][l] = 2 * (y * z + w * x), R[8][l] = 1 - 2 * (x * x + y * y);
+        }
+        for (int l = 0; l < b.n; ++l) {
+            float* stored = rotations + 4 * std::size_t(e0 + l);
+            if (angle2[l] > 0.0 && angle2[l] < 1e-8) {
+                for (int k = 0; k < 4; ++k) stored[k] = float(q[k][l]);
+            } else {
+                double A[9], Rl[9];
+                for (int i = 0; i < 9; ++i) A[i] = b.F[i][l];
+                extract_rotation_fast(A, stored, Rl);
+                for (int i = 0; i < 9; ++i) R[i][l] = Rl[i];
+            }
+        }
+        for (int l = 0; l < kLanes; ++l) {
+            double Rl[9];
+            for (int i = 0; i < 9; ++i) Rl[i] = R[i][l];
+            rotated_hooke_lane(Rl, b.F, lame, b.P, b.psi, l);
+        }
+    }
+};
+
+struct LoopData {
+    const double* x;
+    const double* X;
+    const uint32_t* tets;
+    const double* Dm_inv;
+    const double* volume;
+    double* f;
+    uint32_t tet_count;
+    uint32_t block_size;
+};
+
+// One block of tets: gather, kernel, scatter; returns the block's strain energy. Compiled for
+// AVX-512, AVX2 and baseline x86-64, chosen at load time by the CPU (GCC function clones). The
+// results are bitwise the same on each: this file is built with -ffp-contract=off (no a*b+c
+// fused into one rounding), so every clone rounds every operation alike.
+template <bool displacement_edges, class Model>
+LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const Model& model) {
+    Batch b;
+    double energy = 0.0;
+    const uint32_t e_end = std::min(d.tet_count, (block + 1) * d.block_size);
+    for (uint32_t e0 = block * d.block_size; e0 < e_end; e0 += kLanes) {
+        b.n = int(std::min<uint32_t>(kLanes, e_end - e0));
+        for (int l = 0; l < kLanes; ++l) {
+            if (l >= b.n) {  // padding lanes: an empty tet
+                for (int i = 0; i < 9; ++i) b.D[i][l] = b.m[i][l] = 0.0;
+                b.V[l] = 0.0;
+                continue;
+            }
+            const uint32_t e = e0 + l;
+            const uint32_t* t = d.tets + 4 * std::size_t(e);
+            const double* p0 = d.x + 3 * std::size_t(t[0]);
+            const double* p1 = d.x + 3 * std::size_t(t[1]);
+            const double* p2 = d.x + 3 * std::size_t(t[2]);
+            const double* p3 = d.x + 3 * std::size_t(t[3]);
+            for (int r = 0; r < 3; ++r) {
+                if (displacement_edges) {
+                    // Small strains: differences of displacements keep the digits that
+                    // differences of positions would cancel away.
+                    const double u0 = p0[r] - d.X[3 * std::size_t(t[0]) + r];
+                    b.D[3 * r + 0][l] = (p1[r] - d.X[3 * std::size_t(t[1]) + r]) - u0;
+                    b.D[3 * r + 1][l] = (p2[r] - d.X[3 * std::size_t(t[2]) + r]) - u0;
+                    b.D[3 * r + 2][l] = (p3[r] - d.X[3 * std::size_t(t[3]) + r]) - u0;
+                } else {
+                    b.D[3 * r + 0][l] = p1[r] - p0[r];
+                    b.D[3 * r + 1][l] = p2[r] - p0[r];
+                    b.D[3 * r + 2][l] = p3[r] - p0[r];
+                }
+            }
+            const double* m = d.Dm_inv + 9 * std::size_t(e);
+            for (int i = 0; i < 9; ++i) b.m[i][l] = m[i];
+            b.V[l] = d.volume[e];
+        }
+        deformation_gradient(b);
+        model(b, e0);
+        // f_int_a = V P grad N_a with grad N_a the rows of Dm^-1 (a = 1..3) and node 0 the
+        // negative sum; the elastic force is its negative.
+        double G[9][kLanes];  // G[3r + a-1]: force component r on node a
+        for (int r = 0; r < 3; ++r)
+            for (int l = 0; l < kLanes; ++l) {
+                const double q0 = -b.V[l] * b.P[3 * r][l], q1 = -b.V[l] * b.P[3 * r + 1][l],
+                             q2 = -b.V[l] * b.P[3 * r + 2][l];
+                G[3 * r + 0][l] = q0 * b.m[0][l] + q1 * b.m[3][l] + q2 * b.m[6][l];
+                G[3 * r + 1][l] = q0 * b.m[1][l] + q1 * b.m[4][l] + q2 * b.m[7][l];
+                G[3 * r + 2][l] = q0 * b.m[2][l] + q1 * b.m[5][l] + q2 * b.m[8][l];
+            }
+        for (int l = 0; l < b.n; ++l) {
+            const uint32_t* t = d.tets + 4 * std::size_t(e0 + l);
+            energy += b.V[l] * b.psi[l];
+            for (int r = 0; r < 3; ++r) {
+                const double g1 = G[3 * r][l], g2 = G[3 * r + 1][l], g3 = G[3 * r + 2][l];
+                d.f[3 * std::size_t(t[1]) + r] += g1;
+                d.f[3 * std::size_t(t[2]) + r] += g2;
+                d.f[3 * std::size_t(t[3]) + r] += g3;
+                d.f[3 * std::size_t(t[0]) + r] -= g1 + g2 + g3;
+            }
+        }
+    }
+    return energy;
+}
+
+// The element loop shared by every model, parallel over the colours of element blocks (see
+// element_colouring.h): the blocks of one colour share no node, so they scatter at once, and
+// each node sums its contributions in the same order for any thread count. The strain energy
+// is summed per block, then over the blocks in index order, for the same reason.
+template <bool displacement_edges, class Model>
+double element_loop(const BodyReference& ref, const double* x, double* f, uint32_t n,
+                    ThreadPool* pool, const Model& model) {
+    std::fill(f, f + 3 * std::size_t(n), 0.0);
+    const ElementColouring& colouring = ref.colouring;
+    const LoopData d{x, ref.X.data(), ref.tets.data(), ref.Dm_inv.data(), ref.volume.data(),
+                     f, ref.tet_count(), colouring.block_size};
+    std::vector<double> block_energy(colouring.block_count(), 0.0);
+    for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
+        const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
+        parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c], [&](uint32_t i) {
+            block_energy[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model);
+        });
+    }
+    double energy = 0.0;
+    for (double e : block_energy) energy += e;
+    return energy;
+}
+
+template <bool displacement_edges, class Model>
+void element_loop(const Body& body, BodyState& state, ThreadPool* pool, const Model& model) {
+    state.strain_energy = element_loop<displacement_edges>(
+        body.ref, state.x.data(), state.elastic.data(), body.ref.node_count(), pool, model);
 }
 
 }  // namespace
 
-void compute_elastic_forces(const Body& body, BodyState& state) {
+void compute_elastic_forces(const Body& body, BodyState& state, ThreadPool* pool) {
     const Lame lame = body.lame;
     switch (body.def.model) {
         case LFEM_MODEL_LINEAR:
-            element_loop<true>(body, state, [&](uint32_t, const Mat3&, const Mat3& H, double& psi) {
-                return hooke_stress(H, lame, &psi);
-            });
+            element_loop<true>(body, state, pool, LinearModel{lame});
             break;
         case LFEM_MODEL_PAPER: {
             // Floating frame: strain measured in the body's rotated frame, R^T F - I; the
             // translation of the frame drops out because the gradients of N sum to zero.
-            const Mat3 R = load_quaternion(state.rotation).toRotationMatrix();
-            element_loop<false>(body, state, [&](uint32_t, const Mat3& F, const Mat3&, double& psi) {
-                return Mat3(R * hooke_stress(R.transpose() * F - Mat3::Identity(), lame, &psi));
-            });
+            const Eigen::Quaterniond q(state.rotation[0], state.rotation[1], state.rotation[2],
+                                       state.rotation[3]);
+            const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> Rm = q.toRotationMatrix();
+            PaperModel model{lame, {}};
+            for (int i = 0; i < 9; ++i) model.R[i] = Rm.data()[i];
+            element_loop<false>(body, state, pool, model);
             break;
         }
         case LFEM_MODEL_COROTATIONAL:
-            // One rotation per tet, the polar rotation of F: the stress R C:(S - I) is
-            // torque-free for an isotropic material, so angular momentum is kept.
-            element_loop<false>(body, state, [&](uint32_t e, const Mat3& F, const Mat3&, double& psi) {
-                Eigen::Quaterniond q = load_quaternion(&state.tet_rotation[4 * e]);
-                extract_rotation(F, q);
-                store_quaternion(q, &state.tet_rotation[4 * e]);
-                const Mat3 R = q.toRotationMatrix();
-                return Mat3(R * hooke_stress(R.transpose() * F - Mat3::Identity(), lame, &psi));
-            });
+            // One rotation per tet, the polar rotation of F (warm-started from the last step):
+            // the stress R C:(R^T F - I) is torque-free for an isotropic material, so angular
+            // momentum is kept.
+            element_loop<false>(body, state, pool, CorotationalModel{lame, state.tet_rotation.data()});
             break;
         case LFEM_MODEL_NEO_HOOKEAN:
         default:
-            element_loop<false>(body, state, [&](uint32_t, const Mat3& F, const Mat3&, double& psi) {
-                return neo_hookean_stress(F, lame, &psi);
-            });
+            element_loop<false>(body, state, pool, NeoHookeanModel{lame.mu, lame.lambda + lame.mu});
             break;
     }
+}
+
+void apply_reference_stiffness(const BodyReference& ref, const Lame& lame, const double* u,
+                               double* y, ThreadPool* pool) {
+    // The linear kernel on the edges of u gives -K u.
+    element_loop<false>(ref, u, y, ref.node_count(), pool, LinearModel{lame});
+    for (std::size_t i = 0; i < 3 * std::size_t(ref.node_count()); ++i) y[i] = -y[i];
 }
 
 void compute_von_mises(const Body& body, const BodyState& state, double* out) {
     const BodyReference& ref = body.ref;
     const double* x = state.x.data();
     const double* X = ref.X.data();
-    const Mat3 R_body = load_quaternion(state.rotation).toRotationMatrix();
+    const Eigen::Quaterniond q_body(state.rotation[0], state.rotation[1], state.rotation[2],
+                                    state.rotation[3]);
+    const Mat3 R_body = q_body.toRotationMatrix();
     for (uint32_t e = 0; e < ref.tet_count(); ++e) {
         const uint32_t* t = &ref.tets[4 * e];
         const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
@@ -122,7 +363,9 @@ void compute_von_mises(const Body& body, const BodyState& state, double* out) {
                 sigma = hooke_stress(R_body.transpose() * F - Mat3::Identity(), body.lame, nullptr);
                 break;
             case LFEM_MODEL_COROTATIONAL: {
-                Eigen::Quaterniond q = load_quaternion(&state.tet_rotation[4 * e]);
+                const float* s = &state.tet_rotation[4 * e];
+                Eigen::Quaterniond q(s[0], s[1], s[2], s[3]);
+                q.normalize();
                 extract_rotation(F, q);
                 const Mat3 R = q.toRotationMatrix();
                 sigma = hooke_stress(R.transpose() * F - Mat3::Identity(), body.lame, nullptr);

@@ -14,4 +14,12 @@ namespace lfem {
 // number of iterations used (at most max_iterations).
 int extract_rotation(const Eigen::Matrix3d& A, Eigen::Quaterniond& q, int max_iterations = 50);
 
+// The same Newton iteration for the element loop of the corotational model: A row-major, the
+// warm start q (w, x, y, z) stored as float (16 bytes per tet), the rotation written to R
+// (row-major). It stops once a step turns by less than 1e-4 rad: Newton converges
+// quadratically, so the rotation left out is about (1e-4)^2 = 1e-8 rad, and a rotation error
+// delta changes the symmetric strain only by delta times the strain (the skew part drops out),
+// a relative stress error of 1e-8. One iteration per step in smooth motion.
+void extract_rotation_fast(const double* A, float* q, double* R);
+
 }  // namespace lfem

@@ -3,27 +3,31 @@
 // is applied element by element.
 #pragma once
 
+#include "common/thread_pool.h"
 #include "world/body.h"
 
 namespace lfem {
 
 struct StableStepEstimate {
-    double omega_max = 0;       // rad/s, the value used: min(power iteration * (1 + margin),
+    double omega_max = 0;       // rad/s, the value used: min(Lanczos estimate * (1 + margin),
                                 // Gershgorin bound)
-    double omega_power = 0;     // rad/s, Rayleigh quotient of the power iteration (lower bound)
+    double omega_power = 0;     // rad/s, largest Ritz value of the Lanczos iteration (lower bound)
     double omega_gershgorin = 0;// rad/s, proven upper bound from nodal row sums of |K_e|
-    int iterations = 0;
+    int iterations = 0;         // Lanczos steps (products with the operator)
 };
 
 // Largest natural frequency of a body from its reference data (X, masses, tets, Dm_inv,
-// volumes) and elastic constants.
-StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame);
+// volumes, colouring) and elastic constants; the operator runs on the pool when one is given.
+StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame,
+                                        ThreadPool* pool = nullptr);
 
 // How much stiffer a neo-Hookean body is at its current nodes x than at its reference state:
 // the largest, over its tets, of a(F_e) / a(I), with a(F) an estimate of the largest
 // eigenvalue of the material tangent dP/dF (exact at F = I and under rotations). Never below
 // 1. omega_max^2 grows with it, so the reference limit divided by its square root is the
-// limit at x. One pass over the tets, O(n), no allocation, no trigonometry.
-double neo_hookean_stiffening(const BodyReference& ref, const Lame& lame, const double* x);
+// limit at x. One pass over the tets (on the pool when one is given), O(n), no allocation, no
+// trigonometry.
+double neo_hookean_stiffening(const BodyReference& ref, const Lame& lame, const double* x,
+                              ThreadPool* pool = nullptr);
 
 }  // namespace lfem

@@ -1,29 +1,51 @@
 #include "rigid/global_rotation.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "fem/polar_rotation.h"
 
 namespace lfem {
 
-Eigen::Vector3d center_of_mass(const double* mass, const double* x, uint32_t n) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    double total = 0.0;
-    for (uint32_t i = 0; i < n; ++i) {
-        sum += mass[i] * Eigen::Vector3d(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
-        total += mass[i];
-    }
-    return sum / total;
+namespace {
+
+// sum over nodes of term(i, out[K]) as fixed blocks of nodes, then the blocks in order.
+template <int K, class Term>
+void blocked_sum(uint32_t n, ThreadPool* pool, double* total, const Term& term) {
+    constexpr uint32_t block = 2048;
+    const uint32_t blocks = (n + block - 1) / block;
+    std::vector<double> partial(std::size_t(blocks) * K, 0.0);
+    parallel_for(pool, blocks, [&](uint32_t b) {
+        double* out = &partial[std::size_t(b) * K];
+        for (uint32_t i = b * block, end = std::min(n, (b + 1) * block); i < end; ++i) term(i, out);
+    });
+    for (int k = 0; k < K; ++k) total[k] = 0.0;
+    for (uint32_t b = 0; b < blocks; ++b)
+        for (int k = 0; k < K; ++k) total[k] += partial[std::size_t(b) * K + k];
+}
+
+}  // namespace
+
+Eigen::Vector3d center_of_mass(const double* mass, const double* x, uint32_t n, ThreadPool* pool) {
+    double s[4];
+    blocked_sum<4>(n, pool, s, [&](uint32_t i, double* out) {
+        for (int k = 0; k < 3; ++k) out[k] += mass[i] * x[3 * i + k];
+        out[3] += mass[i];
+    });
+    return Eigen::Vector3d(s[0], s[1], s[2]) / s[3];
 }
 
 Eigen::Matrix3d inertia_tensor(const double* mass, const double* x, uint32_t n,
-                               const Eigen::Vector3d& c) {
-    Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
-    for (uint32_t i = 0; i < n; ++i) {
-        const Eigen::Vector3d r(x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]);
-        I += mass[i] * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
-    }
-    return I;
+                               const Eigen::Vector3d& c, ThreadPool* pool) {
+    double s[9];
+    blocked_sum<9>(n, pool, s, [&](uint32_t i, double* out) {
+        const double r[3] = {x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]};
+        const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) out[3 * a + b] += mass[i] * ((a == b) * r2 - r[a] * r[b]);
+    });
+    return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(s);
 }
 
 Eigen::Vector3d angular_momentum(const double* mass, const double* x, const double* v,
@@ -48,13 +70,15 @@ Eigen::Vector3d integrate_global_rotation(const Eigen::Matrix3d& inertia, const 
 
 void fit_global_rotation(const double* mass, const double* x, const double* X, uint32_t n,
                          const Eigen::Vector3d& c, const Eigen::Vector3d& C,
-                         Eigen::Quaterniond& q) {
-    Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
-    for (uint32_t i = 0; i < n; ++i) {
-        const Eigen::Vector3d r(x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]);
-        const Eigen::Vector3d R0(X[3 * i] - C[0], X[3 * i + 1] - C[1], X[3 * i + 2] - C[2]);
-        A += mass[i] * r * R0.transpose();
-    }
+                         Eigen::Quaterniond& q, ThreadPool* pool) {
+    double s[9];
+    blocked_sum<9>(n, pool, s, [&](uint32_t i, double* out) {
+        const double r[3] = {x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]};
+        const double R0[3] = {X[3 * i] - C[0], X[3 * i + 1] - C[1], X[3 * i + 2] - C[2]};
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) out[3 * a + b] += mass[i] * r[a] * R0[b];
+    });
+    const Eigen::Matrix3d A = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(s);
     extract_rotation(A, q);
 }
 

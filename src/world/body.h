@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/rigid_shape.h"
+#include "fem/element_colouring.h"
 #include "fem/material.h"
 #include "lfem.h"
 
@@ -28,6 +29,8 @@ struct BodyReference {
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
     double inertia[9] = {0};        // rigid bodies: inertia about the COM, reference frame
+    ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
+                                    // from tets: rebuilt, not saved, by checkpoints)
 
     uint32_t node_count() const { return uint32_t(X.size() / 3); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }
@@ -38,7 +41,9 @@ struct BodyState {
     std::vector<double> v_half;    // 3 per node: velocity of the last step, (x^n - x^n-1)/h;
                                    // the synchronized velocity itself when h_last == 0
     std::vector<double> elastic;   // 3 per node: elastic force -f_int at x (N)
-    std::vector<double> tet_rotation; // 4 per tet (w,x,y,z): corotational warm start
+    std::vector<float> tet_rotation; // 4 per tet (w,x,y,z): warm start of the corotational
+                                     // rotations (float: a start, not a result); empty for
+                                     // the other models
     std::vector<double> contact_force; // 3 per node: contact force of the last step (N);
                                        // empty while the body touches nothing
     double h_last = 0;             // size of the last step (s); 0 = no step since a reset

@@ -22,14 +22,15 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 1;
+constexpr uint32_t kFormatVersion = 2;  // 2: thread_count in the def, float tet rotations
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 312, "BodyReference changed: update the checkpoint");
+static_assert(sizeof(BodyReference) == 368,  // colouring: derived, rebuilt by World::restore
+              "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 264, "BodyState changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 96, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
@@ -178,7 +179,9 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     for (uint32_t i : r.feature_nodes) require(i < n, "feature node out of range");
     require(s.x.size() == 3 * n && s.v_half.size() == 3 * n && s.elastic.size() == 3 * n,
             "state size disagrees with the mesh");
-    require(s.tet_rotation.size() == 4 * t, "tet rotations disagree with the mesh");
+    const bool corotational = b.is_deformable() && b.def.model == LFEM_MODEL_COROTATIONAL;
+    require(s.tet_rotation.size() == (corotational ? 4 * t : 0), "tet rotations disagree with the mesh");
+    for (float v : s.tet_rotation) require(std::isfinite(v), "a non-finite number");
     require(s.contact_force.empty() || s.contact_force.size() == 3 * n, "bad contact forces");
     require(b.node_mode.size() == n, "bad node modes");
     for (NodeMode m : b.node_mode) require(uint8_t(m) <= uint8_t(NodeMode::prescribed), "bad node mode");
@@ -198,7 +201,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(!b.is_deformable() || n == 0 || (std::isfinite(r.stable_step) && r.stable_step > 0.0),
             "bad stable step");
     for (const std::vector<double>* a : {&r.X, &r.mass, &r.Dm_inv, &r.volume, &s.x, &s.v_half,
-                                         &s.elastic, &s.tet_rotation, &s.contact_force,
+                                         &s.elastic, &s.contact_force,
                                          &s.shape_pose, &b.prescribed_velocity, &b.node_force})
         for (double v : *a) require(std::isfinite(v), "a non-finite number");
 }

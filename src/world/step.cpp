@@ -14,6 +14,7 @@
 
 #include "common/error.h"
 #include "common/profile.h"
+#include "common/thread_pool.h"
 #include "contact/solve_contact_multipliers.h"
 #include "fem/internal_forces.h"
 #include "fem/material.h"
@@ -47,6 +48,11 @@ struct SubstepTally {
 
 Eigen::Quaterniond load_q(const double* q) { return {q[0], q[1], q[2], q[3]}; }
 
+// Nodes per block of the parallel predictor and commit loops. Fixed (not per thread), so that
+// sums over blocks come out the same for any thread count.
+constexpr uint32_t kNodeBlock = 2048;
+uint32_t node_block_count(uint32_t n) { return (n + kNodeBlock - 1) / kNodeBlock; }
+
 double external_force(const Body& b, const double g[3], uint32_t i, int k) {
     return b.ref.mass[i] * g[k] + (b.node_force.empty() ? 0.0 : b.node_force[3 * i + k]);
 }
@@ -59,83 +65,116 @@ double external_force(const Body& b, const double g[3], uint32_t i, int k) {
 // (h_prev = 0, v^{n-1/2} holds the synchronized velocity) it is the velocity-Verlet start,
 // exact for a constant force. Also records 1/mhat per node for the contact solve.
 template <class Scratch>
-void predict_positions(Body& body, const double gravity[3], double h, Scratch& scratch) {
+void predict_positions(Body& body, const double gravity[3], double h, Scratch& scratch,
+                       ThreadPool* pool) {
     BodyState& s = body.state;
     const BodyReference& ref = body.ref;
     const uint32_t n = ref.node_count();
     const double h_mid = s.h_last > 0.0 ? 0.5 * (s.h_last + h) : 0.5 * h;
     const double alpha = body.def.damping;
     const bool paper = body.def.model == LFEM_MODEL_PAPER;
-    scratch.x_start.assign(s.x.begin(), s.x.end());
-    scratch.v_old.assign(s.v_half.begin(), s.v_half.end());
+    scratch.x_start.resize(s.x.size());
+    scratch.v_old.resize(s.v_half.size());
     scratch.inv_mass.resize(n);
-    scratch.support_work = 0.0;
-    Vec3 torque = Vec3::Zero(), c = Vec3::Zero();
-    if (paper) c = center_of_mass(ref.mass.data(), s.x.data(), n);
-    for (uint32_t i = 0; i < n; ++i) {
-        const double m = ref.mass[i];
-        const double lhs = m / h_mid + 0.5 * alpha * m, rhs = m / h_mid - 0.5 * alpha * m;
-        const NodeMode mode = body.node_mode[i];
-        scratch.inv_mass[i] = mode == NodeMode::free ? h / lhs : 0.0;  // dx = (h/lhs) lambda
-        Vec3 reaction;
-        for (int k = 0; k < 3; ++k) {
-            const double R = external_force(body, gravity, i, k) + s.elastic[3 * i + k];
-            double v_new;
-            switch (mode) {
-                case NodeMode::free: v_new = (rhs * s.v_half[3 * i + k] + R) / lhs; break;
-                case NodeMode::fixed: v_new = 0.0; break;
-                default: v_new = body.prescribed_velocity[3 * i + k]; break;
+    Vec3 c = Vec3::Zero();
+    if (paper) c = center_of_mass(ref.mass.data(), s.x.data(), n, pool);
+    // Node blocks in parallel; support work and torque summed per block, then in block order.
+    const uint32_t blocks = node_block_count(n);
+    std::vector<double> sums(4 * std::size_t(blocks), 0.0);
+    parallel_for(pool, blocks, [&](uint32_t blk) {
+        const uint32_t i0 = blk * kNodeBlock, i1 = std::min(n, i0 + kNodeBlock);
+        std::copy(s.x.begin() + 3 * i0, s.x.begin() + 3 * i1, scratch.x_start.begin() + 3 * i0);
+        std::copy(s.v_half.begin() + 3 * i0, s.v_half.begin() + 3 * i1, scratch.v_old.begin() + 3 * i0);
+        double support_work = 0.0;
+        Vec3 torque = Vec3::Zero();
+        for (uint32_t i = i0; i < i1; ++i) {
+            const double m = ref.mass[i];
+            const double lhs = m / h_mid + 0.5 * alpha * m, rhs = m / h_mid - 0.5 * alpha * m;
+            const NodeMode mode = body.node_mode[i];
+            scratch.inv_mass[i] = mode == NodeMode::free ? h / lhs : 0.0;  // dx = (h/lhs) lambda
+            Vec3 reaction;
+            for (int k = 0; k < 3; ++k) {
+                const double R = external_force(body, gravity, i, k) + s.elastic[3 * i + k];
+                double v_new;
+                switch (mode) {
+                    case NodeMode::free: v_new = (rhs * s.v_half[3 * i + k] + R) / lhs; break;
+                    case NodeMode::fixed: v_new = 0.0; break;
+                    default: v_new = body.prescribed_velocity[3 * i + k]; break;
+                }
+                // The support force that makes a fixed or prescribed node follow its motion
+                // (zero for free nodes): it does work and exerts torque like an external force.
+                reaction[k] = lhs * v_new - rhs * s.v_half[3 * i + k] - R;
+                s.v_half[3 * i + k] = v_new;
+                s.x[3 * i + k] += h * v_new;
             }
-            // The support force that makes a fixed or prescribed node follow its motion (zero
-            // for free nodes): it does work and exerts torque like an external force.
-            reaction[k] = lhs * v_new - rhs * s.v_half[3 * i + k] - R;
-            s.v_half[3 * i + k] = v_new;
-            s.x[3 * i + k] += h * v_new;
+            if (mode != NodeMode::free) {
+                const Vec3 dx = Vec3(&s.x[3 * i]) - Vec3(&scratch.x_start[3 * i]);
+                support_work += reaction.dot(dx);
+                if (paper) torque += (Vec3(&scratch.x_start[3 * i]) - c).cross(reaction);
+            }
         }
-        if (mode != NodeMode::free) {
-            const Vec3 dx = Vec3(&s.x[3 * i]) - Vec3(&scratch.x_start[3 * i]);
-            scratch.support_work += reaction.dot(dx);
-            if (paper) torque += (Vec3(&scratch.x_start[3 * i]) - c).cross(reaction);
-        }
+        double* out = &sums[4 * std::size_t(blk)];
+        out[0] = support_work, out[1] = torque[0], out[2] = torque[1], out[3] = torque[2];
+    });
+    scratch.support_work = 0.0;
+    for (int k = 0; k < 3; ++k) scratch.support_torque[k] = 0.0;
+    for (uint32_t blk = 0; blk < blocks; ++blk) {
+        scratch.support_work += sums[4 * std::size_t(blk)];
+        for (int k = 0; k < 3; ++k) scratch.support_torque[k] += sums[4 * std::size_t(blk) + 1 + k];
     }
-    for (int k = 0; k < 3; ++k) scratch.support_torque[k] = torque[k];
 }
 
 // Commit: velocities from the corrected positions, energy bookkeeping, and ("paper") the
 // torque about the step-start centre that eq. (2) needs.
 template <class Scratch>
 void commit_step(Body& body, const double gravity[3], double h, Scratch& scratch,
-                 bool touched, SubstepTally& tally) {
+                 bool touched, SubstepTally& tally, ThreadPool* pool) {
     BodyState& s = body.state;
     const BodyReference& ref = body.ref;
     const uint32_t n = ref.node_count();
     const double alpha = body.def.damping;
     const bool paper = body.def.model == LFEM_MODEL_PAPER;
     Vec3 c_old = Vec3::Zero(), torque(scratch.support_torque);
-    if (paper) c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n);
+    if (paper) c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n, pool);
     if (touched) s.contact_force.assign(3 * std::size_t(n), 0.0);
     else std::vector<double>().swap(s.contact_force);  // nothing held while not touching
-    double kinetic = 0.0, work = scratch.support_work, contact_work = 0.0, damping = 0.0;
-    for (uint32_t i = 0; i < n; ++i) {
-        const double m = ref.mass[i];
-        Vec3 f_ext, f_contact = Vec3::Zero(), dx;
-        for (int k = 0; k < 3; ++k) {
-            dx[k] = s.x[3 * i + k] - scratch.x_start[3 * i + k];
-            f_ext[k] = external_force(body, gravity, i, k);
-            if (touched && scratch.inv_mass[i] > 0.0) {
-                // The solve moved the node by (x - x*) = lambda / mhat: its contact force.
-                const double correction = dx[k] - h * s.v_half[3 * i + k];
-                f_contact[k] = correction / scratch.inv_mass[i];
-                s.contact_force[3 * i + k] = f_contact[k];
-                s.v_half[3 * i + k] = dx[k] / h;
+    // Node blocks in parallel; the sums per block, then in block order.
+    const uint32_t blocks = node_block_count(n);
+    std::vector<double> sums(7 * std::size_t(blocks), 0.0);
+    parallel_for(pool, blocks, [&](uint32_t blk) {
+        const uint32_t i0 = blk * kNodeBlock, i1 = std::min(n, i0 + kNodeBlock);
+        double kinetic = 0.0, work = 0.0, contact_work = 0.0, damping = 0.0;
+        Vec3 block_torque = Vec3::Zero();
+        for (uint32_t i = i0; i < i1; ++i) {
+            const double m = ref.mass[i];
+            Vec3 f_ext, f_contact = Vec3::Zero(), dx;
+            for (int k = 0; k < 3; ++k) {
+                dx[k] = s.x[3 * i + k] - scratch.x_start[3 * i + k];
+                f_ext[k] = external_force(body, gravity, i, k);
+                if (touched && scratch.inv_mass[i] > 0.0) {
+                    // The solve moved the node by (x - x*) = lambda / mhat: its contact force.
+                    const double correction = dx[k] - h * s.v_half[3 * i + k];
+                    f_contact[k] = correction / scratch.inv_mass[i];
+                    s.contact_force[3 * i + k] = f_contact[k];
+                    s.v_half[3 * i + k] = dx[k] / h;
+                }
+                const double v = s.v_half[3 * i + k];
+                kinetic += 0.5 * m * v * v;
+                damping += alpha * m * 0.5 * (v + scratch.v_old[3 * i + k]) * v * h;
             }
-            const double v = s.v_half[3 * i + k];
-            kinetic += 0.5 * m * v * v;
-            damping += alpha * m * 0.5 * (v + scratch.v_old[3 * i + k]) * v * h;
+            work += f_ext.dot(dx);
+            contact_work += f_contact.dot(dx);
+            if (paper) block_torque += (Vec3(&scratch.x_start[3 * i]) - c_old).cross(f_ext + f_contact);
         }
-        work += f_ext.dot(dx);
-        contact_work += f_contact.dot(dx);
-        if (paper) torque += (Vec3(&scratch.x_start[3 * i]) - c_old).cross(f_ext + f_contact);
+        double* out = &sums[7 * std::size_t(blk)];
+        out[0] = kinetic, out[1] = work, out[2] = contact_work, out[3] = damping;
+        for (int k = 0; k < 3; ++k) out[4 + k] = block_torque[k];
+    });
+    double kinetic = 0.0, work = scratch.support_work, contact_work = 0.0, damping = 0.0;
+    for (uint32_t blk = 0; blk < blocks; ++blk) {
+        const double* in = &sums[7 * std::size_t(blk)];
+        kinetic += in[0], work += in[1], contact_work += in[2], damping += in[3];
+        torque += Vec3(in + 4);
     }
     tally.kinetic += kinetic;
     tally.work += work;
@@ -148,20 +187,22 @@ void commit_step(Body& body, const double gravity[3], double h, Scratch& scratch
 // "paper" model: eq. (2) predicts the frame's rotation from the torque of the step; re-fitting
 // it to the nodes keeps it free of drift. Their difference is reported as an error indicator.
 template <class Scratch>
-void update_global_rotation(Body& body, double h, const Scratch& scratch, SubstepTally& tally) {
+void update_global_rotation(Body& body, double h, const Scratch& scratch, SubstepTally& tally,
+                            ThreadPool* pool) {
     BodyState& s = body.state;
     const BodyReference& ref = body.ref;
     const uint32_t n = ref.node_count();
-    const Vec3 c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n);
-    const Eigen::Matrix3d inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old);
+    const Vec3 c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n, pool);
+    const Eigen::Matrix3d inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old, pool);
     const Vec3 torque(scratch.torque);
     {
         Vec3 L(s.angular_momentum);
         Eigen::Quaterniond q = load_q(s.rotation);
         integrate_global_rotation(inertia, torque, h, L, q);
         const Eigen::Quaterniond predicted = q;
-        const Vec3 c_new = center_of_mass(ref.mass.data(), s.x.data(), n);
-        fit_global_rotation(ref.mass.data(), s.x.data(), ref.X.data(), n, c_new, Vec3(ref.com), q);
+        const Vec3 c_new = center_of_mass(ref.mass.data(), s.x.data(), n, pool);
+        fit_global_rotation(ref.mass.data(), s.x.data(), ref.X.data(), n, c_new, Vec3(ref.com), q,
+                            pool);
         tally.drift = std::max(tally.drift, predicted.angularDistance(q));
         s.rotation[0] = q.w(), s.rotation[1] = q.x(), s.rotation[2] = q.y(), s.rotation[3] = q.z();
         for (int k = 0; k < 3; ++k) s.angular_momentum[k] = L[k];
@@ -312,7 +353,7 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         if (b.generation == 0 || !b.has_geometry()) continue;
         predicted += b.is_dynamic();
         if (b.is_deformable()) {
-            predict_positions(b, def_.gravity, h, scratch_[i]);
+            predict_positions(b, def_.gravity, h, scratch_[i], pool_.get());
         } else if (b.is_rigid()) {
             scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
             scratch_[i].support_torque[0] = b.state.center[0];  // the centre at the start
@@ -349,7 +390,7 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         if (b.generation == 0 || !b.has_mesh()) continue;
         committed += b.is_dynamic();
         if (b.is_deformable()) {
-            commit_step(b, def_.gravity, h, scratch_[i], touched[i] != 0, tally);
+            commit_step(b, def_.gravity, h, scratch_[i], touched[i] != 0, tally, pool_.get());
             paper += b.def.model == LFEM_MODEL_PAPER;
         } else if (b.is_rigid()) {
             tally.contact_work += commit_rigid(b, h, rigid_responses_[i]);
@@ -372,7 +413,7 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
             Body& b = slots_[i].body;
             if (b.generation == 0 || !b.has_mesh() || !b.is_deformable() || b.def.model != LFEM_MODEL_PAPER)
                 continue;
-            update_global_rotation(b, h, scratch_[i], tally);
+            update_global_rotation(b, h, scratch_[i], tally, pool_.get());
         }
     }
     PhaseTimer elastic_timer(profile_.internal_forces, 0);
@@ -380,7 +421,7 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;
-        compute_elastic_forces(b, b.state);
+        compute_elastic_forces(b, b.state, pool_.get());
         strain += b.state.strain_energy;
         deformable += 1;
     }
@@ -460,9 +501,10 @@ void World::step(double dt) {
         double work = 0.0, work_flow = 0.0, limit_seen = limit;
         uint32_t blew_up_at = 0, outran_at = 0;  // 1-based sub-step, 0 = none
         for (uint32_t k = 0; k < substeps && blew_up_at == 0 && outran_at == 0; ++k) {
-            double kinetic = 0.0, strain = 0.0, step_work = 0.0;
+            double kinetic = 0.0, strain = 0.0, step_work = 0.0, limit_now = limit_seen;
             try {
                 substep(h, kinetic, strain, step_work);
+                if (automatic) limit_now = stable_step();  // may allocate (the thread pool)
             } catch (...) {
                 // Whatever failed inside (out of memory in detection, say), the caller gets the
                 // world as it was before the call, and the failure's own status.
@@ -481,7 +523,7 @@ void World::step(double dt) {
             if (!std::isfinite(balance) || balance > 10.0 * (start_energy + work_flow) + scale)
                 blew_up_at = k + 1;
             if (automatic) {
-                limit_seen = std::min(limit_seen, stable_step());
+                limit_seen = std::min(limit_seen, limit_now);
                 if (h > limit_seen) outran_at = k + 1;
             }
         }

@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "fem/internal_forces.h"
+#include "fem/element_colouring.h"
 #include "fem/stable_step.h"
 #include "fem/tet_element.h"
 #include "mesh/boundary.h"
@@ -80,6 +81,8 @@ void World::restore(WorldImage&& image) {
     for (std::size_t i = 0; i < slots.size(); ++i) {
         highest = std::max(highest, image.bodies[i].generation);
         slots[i].body = std::move(image.bodies[i]);
+        BodyReference& ref = slots[i].body.ref;
+        ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count());
     }
     def_ = image.def;
     slots_ = std::move(slots);
@@ -184,7 +187,9 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     for (double m : ref.mass) ref.total_mass += m;
     const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
     for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
-    if (body.is_deformable()) ref.stable_step = 2.0 / estimate_stable_step(ref, body.lame).omega_max;
+    ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), n);
+    if (body.is_deformable())
+        ref.stable_step = 2.0 / estimate_stable_step(ref, body.lame, pool_.get()).omega_max;
 
     BodyState state = body.state;
     // Existing nodes continue from their synchronized velocities; new ones get the def's.
@@ -203,8 +208,10 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     state.v_half = std::move(v);
     state.h_last = 0.0;
     state.elastic.assign(3 * std::size_t(n), 0.0);
-    state.tet_rotation.resize(4 * std::size_t(ref.tet_count()), 0.0);
-    for (uint32_t e = old_tets; e < ref.tet_count(); ++e) state.tet_rotation[4 * e] = 1.0;
+    if (body.is_deformable() && body.def.model == LFEM_MODEL_COROTATIONAL) {
+        state.tet_rotation.resize(4 * std::size_t(ref.tet_count()), 0.0f);
+        for (uint32_t e = old_tets; e < ref.tet_count(); ++e) state.tet_rotation[4 * e] = 1.0f;
+    }
     for (int k = 0; k < 3; ++k) state.center[k] = c[k];
 
     std::vector<NodeMode> modes = body.node_mode;
@@ -233,7 +240,7 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
                 angular_momentum(candidate.ref.mass.data(), state.x.data(), state.v_half.data(), n, c);
             for (int k = 0; k < 3; ++k) state.angular_momentum[k] = L[k];
         }
-        compute_elastic_forces(candidate, state);
+        compute_elastic_forces(candidate, state, pool_.get());
     }
     if (candidate.is_rigid()) {
         // The paper's global motion alone: centre of mass, rotation (identity: the reference
@@ -340,10 +347,10 @@ double World::stable_step() const {
         if (!b.is_deformable() || !b.has_mesh()) return;
         // Neo-Hookean stiffness grows with deformation (a crushed tet is stiffer): the limit
         // at the current nodes. The reference limit already carries the 2 % margin on
-        // omega^2 of its power iteration; only stiffening beyond it shortens the step. The
+        // omega^2 of its Lanczos estimate; only stiffening beyond it shortens the step. The
         // other models' stiffness does not depend on the state.
         const double stiffening = b.def.model == LFEM_MODEL_NEO_HOOKEAN
-                                      ? neo_hookean_stiffening(b.ref, b.lame, b.state.x.data()) / 1.02
+                                      ? neo_hookean_stiffening(b.ref, b.lame, b.state.x.data(), pool_.get()) / 1.02
                                       : 1.0;
         h = std::min(h, b.ref.stable_step / std::sqrt(std::max(stiffening, 1.0)));
     });

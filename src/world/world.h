@@ -4,11 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/contact_body.h"
 #include "contact/contact_record.h"
+#include "common/thread_pool.h"
 #include "contact/detect_node_triangle.h"
 #include "lfem.h"
 #include "rigid/rigid_body.h"
@@ -36,7 +38,9 @@ struct WorldCounters {
 
 class World {
 public:
-    explicit World(const lfem_world_def& def) : def_(def) {}
+    // Starts def.thread_count - 1 worker threads (joined by the destructor).
+    explicit World(const lfem_world_def& def)
+        : def_(def), pool_(new ThreadPool(def.thread_count)) {}
 
     const lfem_world_def& def() const { return def_; }
     void set_gravity(const double g[3]);
@@ -124,6 +128,7 @@ private:
     std::vector<uint32_t> contact_body_of_slot_;
     std::vector<ContactRecord> detected_;
     DetectionScratch detection_;
+    std::unique_ptr<ThreadPool> pool_;  // the step's parallel loops
 };
 
 }  // namespace lfem

@@ -88,6 +88,7 @@ public static class LfemTests
         Layout<Vec3>(24, "Z", 16);
         Layout<Body>(8, "Index", 0, "Generation", 4);
         Layout<WorldDef>(72, "Gravity", 0, "TimeStep", 24, "StepSafety", 32, "ContactIterations", 40,
+                         "ThreadCount", 44,
                          "ContactTolerance", 48, "MaxSubsteps", 56, "AllowUnstableStep", 60, "internalValue", 64);
         Layout<WorldStats>(160, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
                            "KineticEnergy", 40, "EnergyError", 72, "LinearMomentum", 80, "AngularMomentum", 104,
@@ -114,6 +115,7 @@ public static class LfemTests
         Equal(0.0, w.TimeStep, "time step");
         Equal(0.9, w.StepSafety, "step safety");
         Equal(200u, w.ContactIterations, "contact iterations");
+        Equal(1u, w.ThreadCount, "thread count");
         Equal(1e-3, w.ContactTolerance, "contact tolerance");
         Equal(1000000u, w.MaxSubsteps, "max substeps");
         Equal((byte)0, w.AllowUnstableStep, "allow unstable step");

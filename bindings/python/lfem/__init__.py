@@ -125,6 +125,7 @@ class WorldDef(ctypes.Structure):
         ("time_step", ctypes.c_double),       # s, 0 = automatic (default)
         ("step_safety", ctypes.c_double),     # in (0, 1), default 0.9
         ("contact_iterations", ctypes.c_uint32),
+        ("thread_count", ctypes.c_uint32),    # 1..64, default 1; results independent of it
         ("contact_tolerance", ctypes.c_double),
         ("max_substeps", ctypes.c_uint32),
         ("allow_unstable_step", ctypes.c_uint8),

@@ -48,6 +48,7 @@ class Layout(unittest.TestCase):
         self.check(lfem.Body, 8, {"index": 0, "generation": 4})
         self.check(lfem.WorldDef, 72, {
             "gravity": 0, "time_step": 24, "step_safety": 32, "contact_iterations": 40,
+            "thread_count": 44,
             "contact_tolerance": 48, "max_substeps": 56, "allow_unstable_step": 60,
             "internal_value": 64})
         self.check(lfem.WorldStats, 160, {
@@ -89,6 +90,7 @@ class Defaults(unittest.TestCase):
         self.assertEqual(w.time_step, 0.0)
         self.assertEqual(w.step_safety, 0.9)
         self.assertEqual(w.contact_iterations, 200)
+        self.assertEqual(w.thread_count, 1)
         self.assertEqual(w.contact_tolerance, 1e-3)
         self.assertEqual(w.max_substeps, 1000000)
         self.assertEqual(w.allow_unstable_step, 0)

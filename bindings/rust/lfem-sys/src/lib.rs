@@ -79,6 +79,7 @@ pub struct lfem_world_def {
     pub time_step: c_double,
     pub step_safety: c_double,
     pub contact_iterations: u32,
+    pub thread_count: u32,
     pub contact_tolerance: c_double,
     pub max_substeps: u32,
     pub allow_unstable_step: u8,

@@ -35,6 +35,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_world_def, time_step), 24);
     assert_eq!(offset!(lfem_world_def, step_safety), 32);
     assert_eq!(offset!(lfem_world_def, contact_iterations), 40);
+    assert_eq!(offset!(lfem_world_def, thread_count), 44);
     assert_eq!(offset!(lfem_world_def, contact_tolerance), 48);
     assert_eq!(offset!(lfem_world_def, max_substeps), 56);
     assert_eq!(offset!(lfem_world_def, allow_unstable_step), 60);
@@ -104,6 +105,7 @@ fn defaults_are_the_documented_ones() {
     assert_eq!(w.time_step, 0.0);
     assert_eq!(w.step_safety, 0.9);
     assert_eq!(w.contact_iterations, 200);
+    assert_eq!(w.thread_count, 1);
     assert_eq!(w.contact_tolerance, 1e-3);
     assert_eq!(w.max_substeps, 1_000_000);
     assert_eq!(w.allow_unstable_step, 0);

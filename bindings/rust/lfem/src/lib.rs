@@ -204,6 +204,9 @@ pub struct WorldDef {
     pub step_safety: f64,
     /// Cap on contact solver sweeps per step, default 200.
     pub contact_iterations: u32,
+    /// Threads that run a step's element and node loops, 1..64, default 1; results are
+    /// bitwise identical for every count.
+    pub thread_count: u32,
     /// Relative stopping tolerance of the contact solve, default 1e-3.
     pub contact_tolerance: f64,
     /// A step needing more sub-steps than this is refused up front, default 1000000.
@@ -222,6 +225,7 @@ impl Default for WorldDef {
             time_step: d.time_step,
             step_safety: d.step_safety,
             contact_iterations: d.contact_iterations,
+            thread_count: d.thread_count,
             contact_tolerance: d.contact_tolerance,
             max_substeps: d.max_substeps,
             allow_unstable_step: d.allow_unstable_step != 0,
@@ -237,6 +241,7 @@ impl WorldDef {
             time_step: self.time_step,
             step_safety: self.step_safety,
             contact_iterations: self.contact_iterations,
+            thread_count: self.thread_count,
             contact_tolerance: self.contact_tolerance,
             max_substeps: self.max_substeps,
             allow_unstable_step: u8::from(self.allow_unstable_step),

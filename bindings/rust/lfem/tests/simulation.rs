@@ -95,6 +95,7 @@ fn defaults_come_from_the_c_library() {
     assert_eq!(w.time_step, 0.0);
     assert_eq!(w.step_safety, 0.9);
     assert_eq!(w.contact_iterations, 200);
+    assert_eq!(w.thread_count, 1);
     assert_eq!(w.max_substeps, 1_000_000);
     assert!(!w.allow_unstable_step);
     let b = BodyDef::default();

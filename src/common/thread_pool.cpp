@@ -1,0 +1,134 @@
+#include "common/thread_pool.h"
+
+#include <exception>
+#include <vector>
+
+#if LFEM_WITH_THREADS
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+#endif
+
+namespace lfem {
+
+#if LFEM_WITH_THREADS
+
+// A loop is a "round". Task indices are claimed from one 64-bit counter that carries the
+// round's number in its high half, so a worker that wakes late (the machine is busy) can never
+// claim a task of a later round, and the caller never waits for a worker that has not started:
+// it waits only until every task of its round has finished.
+struct ThreadPool::Shared {
+    std::mutex mutex;
+    std::condition_variable wake, done;
+    std::vector<std::thread> workers;
+    const std::function<void(uint32_t)>* task = nullptr;  // the current round's (under mutex)
+    uint32_t count = 0;
+    uint32_t round = 0;
+    bool stop = false;
+    std::atomic<uint64_t> next{0};      // (round << 32) | next task index
+    std::atomic<uint32_t> finished{0};  // tasks of the current round that have finished
+    std::exception_ptr error;
+
+    // Runs tasks of `my_round` until none is left to claim.
+    void work(uint32_t my_round, uint32_t my_count, const std::function<void(uint32_t)>& fn) {
+        uint64_t v = next.load(std::memory_order_relaxed);
+        for (;;) {
+            if (uint32_t(v >> 32) != my_round || uint32_t(v) >= my_count) return;
+            if (!next.compare_exchange_weak(v, v + 1, std::memory_order_acq_rel)) continue;
+            try {
+                fn(uint32_t(v));
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(mutex);
+                if (!error) error = std::current_exception();
+            }
+            if (finished.fetch_add(1, std::memory_order_acq_rel) + 1 == my_count) {
+                std::lock_guard<std::mutex> lock(mutex);
+                done.notify_all();
+            }
+            v = next.load(std::memory_order_relaxed);
+        }
+    }
+
+    void worker_main() {
+        uint32_t seen = 0;
+        std::unique_lock<std::mutex> lock(mutex);
+        for (;;) {
+            wake.wait(lock, [&] { return stop || (round != seen && task != nullptr); });
+            if (stop) return;
+            seen = round;
+            const std::function<void(uint32_t)>* fn = task;
+            const uint32_t n = count;
+            lock.unlock();
+            work(seen, n, *fn);  // *fn outlives the round: the caller waits for its tasks
+            lock.lock();
+        }
+    }
+};
+
+ThreadPool::ThreadPool(uint32_t threads) : shared_(new Shared) {
+    Shared& s = *shared_;
+    try {
+        for (uint32_t i = 1; i < threads; ++i) s.workers.emplace_back([&s] { s.worker_main(); });
+    } catch (...) {
+        // Could not start every thread: stop the ones that run, then report.
+        {
+            std::lock_guard<std::mutex> lock(s.mutex);
+            s.stop = true;
+        }
+        s.wake.notify_all();
+        for (std::thread& t : s.workers) t.join();
+        throw;
+    }
+}
+
+ThreadPool::~ThreadPool() {
+    Shared& s = *shared_;
+    {
+        std::lock_guard<std::mutex> lock(s.mutex);
+        s.stop = true;
+    }
+    s.wake.notify_all();
+    for (std::thread& t : s.workers) t.join();
+}
+
+uint32_t ThreadPool::size() const { return uint32_t(shared_->workers.size()) + 1; }
+
+void ThreadPool::run(uint32_t count, const std::function<void(uint32_t)>& task) {
+    Shared& s = *shared_;
+    uint32_t my_round;
+    {
+        std::lock_guard<std::mutex> lock(s.mutex);
+        my_round = ++s.round;
+        s.task = &task;
+        s.count = count;
+        s.error = nullptr;
+        s.finished.store(0, std::memory_order_relaxed);
+        s.next.store(uint64_t(my_round) << 32, std::memory_order_release);
+    }
+    s.wake.notify_all();
+    s.work(my_round, count, task);  // the caller takes part
+    std::unique_lock<std::mutex> lock(s.mutex);
+    s.done.wait(lock, [&] { return s.finished.load(std::memory_order_acquire) == count; });
+    s.task = nullptr;  // a worker waking from now on waits for the next round
+    if (s.error) {
+        std::exception_ptr e = s.error;
+        s.error = nullptr;
+        std::rethrow_exception(e);
+    }
+}
+
+#else  // built without threads: every loop runs on the caller
+
+struct ThreadPool::Shared {};
+
+ThreadPool::ThreadPool(uint32_t) : shared_(new Shared) {}
+ThreadPool::~ThreadPool() = default;
+uint32_t ThreadPool::size() const { return 1; }
+void ThreadPool::run(uint32_t count, const std::function<void(uint32_t)>& task) {
+    for (uint32_t i = 0; i < count; ++i) task(i);
+}
+
+#endif
+
+}  // namespace lfem

@@ -1,0 +1,84 @@
+// The step's parallel loops (element forces by coloured blocks, predictor and commit by node
+// blocks) give results bitwise independent of lfem_world_def.thread_count: every node sums its
+// contributions, and every energy its blocks, in an order fixed by the mesh alone.
+#include <cstring>
+
+#include "physics/lfem_test_util.h"
+
+using namespace lfem_test;
+
+namespace {
+
+// A spinning block of each model dropped onto a plate of the same model lying on a static
+// floor: contact between deformable bodies and with the floor. The plate has enough tets
+// (6 * 20 * 20 * 4 = 9600) and nodes (2205) for many element blocks and colours and for two
+// node blocks, so every parallel loop really splits.
+std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads) {
+    lfem_world_def wd = lfem_world_def_default();
+    wd.thread_count = threads;
+    wd.contact_iterations = 20;  // a short test: equality, not accuracy, is the point
+    World w(wd);
+    Mesh floor_mesh, a, b;
+    make_box_mesh(floor_mesh, 0.6, 0.6, 0.05, 2, 2, 1, -0.3, -0.3, -0.05);
+    lfem_body_def f = lfem_body_def_default();
+    f.young_modulus = 1e7;
+    f.friction = 0.4;
+    lfem_body_def fixed = f;
+    fixed.type = LFEM_BODY_STATIC;
+    const lfem_body floor = add_body(w, fixed, floor_mesh);
+    lfem_body_def d = lfem_body_def_default();
+    d.model = model;
+    d.young_modulus = 3e5;
+    d.friction = 0.4;
+    make_box_mesh(b, 0.1, 0.1, 0.02, 20, 20, 4, -0.05, -0.05, 0.0);
+    const lfem_body plate = add_body(w, d, b);
+    d.angular_velocity[0] = 3.0;
+    d.linear_velocity[2] = -1.0;
+    make_box_mesh(a, 0.06, 0.06, 0.06, 8, 8, 8, -0.03, -0.02, 0.021);
+    const lfem_body top = add_body(w, d, a);
+    uint32_t most = 0;  // the scene must exercise contact
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(lfem_world_step(w, 0.002), LFEM_OK) << lfem_last_error();
+        most = std::max(most, stats(w).contact_count);
+    }
+    EXPECT_GT(most, 100u);
+    std::vector<unsigned char> out = fingerprint(w, {floor, plate, top});
+    size_t count = 0;
+    lfem_world_query_contacts(w, nullptr, 0, &count);
+    std::vector<lfem_contact> c(count);
+    lfem_world_query_contacts(w, c.data(), count, &count);
+    for (lfem_contact& k : c) k.body_a.generation = k.body_b.generation = 0;  // per world
+    const unsigned char* p = reinterpret_cast<const unsigned char*>(c.data());
+    out.insert(out.end(), p, p + count * sizeof(lfem_contact));
+    return out;
+}
+
+}  // namespace
+
+TEST(Threads, OneTwoAndThreeThreadsGiveBitwiseIdenticalResults) {
+    for (lfem_model model : {LFEM_MODEL_LINEAR, LFEM_MODEL_PAPER, LFEM_MODEL_NEO_HOOKEAN,
+                             LFEM_MODEL_COROTATIONAL}) {
+        const std::vector<unsigned char> one = run_scene(model, 1);
+        for (uint32_t threads : {2u, 3u}) {
+            const std::vector<unsigned char> many = run_scene(model, threads);
+            ASSERT_EQ(one.size(), many.size());
+            EXPECT_EQ(0, std::memcmp(one.data(), many.data(), one.size()))
+                << "model " << model << ", " << threads << " threads";
+        }
+    }
+}
+
+TEST(Threads, ThreadCountIsCheckedAndDefaultsToOne) {
+    lfem_world_def def = lfem_world_def_default();
+    EXPECT_EQ(def.thread_count, 1u);
+    lfem_world* w = nullptr;
+    for (uint32_t bad : {0u, 65u, 1000u}) {
+        def.thread_count = bad;
+        EXPECT_EQ(lfem_world_create(&def, &w), LFEM_INVALID_ARGUMENT);
+        EXPECT_EQ(w, nullptr);
+        EXPECT_NE(std::strstr(lfem_last_error(), "thread_count"), nullptr) << lfem_last_error();
+    }
+    def.thread_count = 64;
+    ASSERT_EQ(lfem_world_create(&def, &w), LFEM_OK) << lfem_last_error();
+    lfem_world_destroy(w);
+}
