@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds and tests each reduced configuration of lfem: the library without libccd
-# (LFEM_WITH_CCD=OFF), without file I/O (LFEM_WITH_IO=OFF), and without both. Each one is
+# (LFEM_WITH_CCD=OFF), without file I/O (LFEM_WITH_IO=OFF), without both, and without threads
+# (LFEM_WITH_THREADS=OFF: no std::thread, every world steps on the caller's thread). Each one is
 # configured in its own folder, built with -j2 and tested with ctest; bindings, examples and the
 # fuzz replays are left out so it stays quick. A build without libccd must also not link it.
 # Ends with "configs: N passed, M failed"; exits non-zero when any configuration failed.
@@ -19,6 +20,7 @@ configs=(
   "no-ccd|-DLFEM_WITH_CCD=OFF -DLFEM_WITH_IO=ON"
   "no-io|-DLFEM_WITH_CCD=ON -DLFEM_WITH_IO=OFF"
   "no-ccd-no-io|-DLFEM_WITH_CCD=OFF -DLFEM_WITH_IO=OFF"
+  "no-threads|-DLFEM_WITH_THREADS=OFF"
 )
 
 # Through ccache when it is there: only files that test an option (LFEM_WITH_*, see
@@ -49,6 +51,13 @@ for entry in "${configs[@]}"; do
       cmake --build "$dir" -j"$jobs" &&
       ctest --test-dir "$dir" --output-on-failure -j"$jobs" -E "$long_tests"
   } > "$log" 2>&1 || ok=0
+  # Without threads the library must not start any (neither pthread_create nor std::thread's start among its imports).
+  if [ $ok = 1 ] && [[ " ${extra[*]} " == *" -DLFEM_WITH_THREADS=OFF "* ]]; then
+    if nm -D --undefined-only "$dir/liblfem.so" | grep -qE 'pthread_create|_M_start_thread'; then
+      echo "liblfem.so still creates threads" >> "$log"
+      ok=0
+    fi
+  fi
   # Without libccd the shared library must not depend on it.
   if [ $ok = 1 ] && [[ " ${extra[*]} " == *" -DLFEM_WITH_CCD=OFF "* ]]; then
     if readelf -d "$dir/liblfem.so" | grep -q 'libccd'; then

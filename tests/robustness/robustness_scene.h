@@ -1,7 +1,10 @@
 // One scene that exercises every kind of state a world holds: a static box mesh and a static
 // sphere shape, a kinematic plank, a rigid box, a corotational and a neo-Hookean soft body
 // (one with fixed nodes and node forces, one spinning), a destroyed body (a free slot), and
-// contact between all of them. The checkpoint, out-of-memory and thread tests all run it.
+// contact between all of them. The checkpoint, out-of-memory and thread tests all run it. With
+// `cells` = 10 the corotational body has 6000 tets and 1331 nodes: enough for many element
+// blocks and colours and two node blocks, so every parallel loop of a multi-threaded world
+// really splits.
 #pragma once
 
 #include <algorithm>
@@ -15,7 +18,7 @@ struct RobustnessScene {
     World w;
     std::vector<lfem_body> bodies;
 
-    explicit RobustnessScene(uint32_t thread_count = 1) : w(def(thread_count)) {
+    explicit RobustnessScene(uint32_t thread_count = 1, uint32_t cells = 3) : w(def(thread_count)) {
         Mesh floor_mesh, plank, rigid, a, b, spare, small;
         make_box_mesh(floor_mesh, 0.6, 0.6, 0.1, 3, 3, 1, -0.3, -0.3, -0.1);
         lfem_body_def f = lfem_body_def_default();
@@ -48,7 +51,7 @@ struct RobustnessScene {
         d.model = LFEM_MODEL_COROTATIONAL;
         d.young_modulus = 3e5;
         d.angular_velocity[0] = 2.0;
-        make_box_mesh(a, 0.1, 0.1, 0.1, 3, 3, 3, -0.05, -0.05, 0.02);
+        make_box_mesh(a, 0.1, 0.1, 0.1, cells, cells, cells, -0.05, -0.05, 0.02);
         bodies.push_back(add_body(w, d, a));
         const double force[3] = {0.5, 0.0, 0.0};
         const uint32_t node = 0;
@@ -69,7 +72,7 @@ struct RobustnessScene {
 
     static lfem_world_def def(uint32_t thread_count) {
         lfem_world_def d = lfem_world_def_default();
-        (void)thread_count;
+        d.thread_count = thread_count;
         return d;
     }
 

@@ -66,18 +66,24 @@ long fail_each_allocation(Call&& call, Check&& check_unchanged) {
 
 }  // namespace
 
+// On one thread, and on two worker threads with a body large enough to split every parallel
+// loop (the failing allocation may then be a worker's: the pool hands the exception back to
+// the stepping thread).
 TEST(OutOfMemory, FailedStepLeavesTheWorldUnchanged) {
-    RobustnessScene scene;
-    EXPECT_GT(scene.run(30), 5u);  // in contact: detection and the solve allocate too
-    // Each failing call is compared against the state before it; a successful one moves on.
-    std::vector<unsigned char> before = scene.state();
-    const long points = fail_each_allocation(
-        [&] { return lfem_world_step(scene.w, 0.005); },
-        [&](long k) { ASSERT_EQ(before, scene.state()) << "allocation " << k << " changed the world"; });
-    EXPECT_GT(points, 10) << "the step allocates: the replacement operator new must be in use";
-    std::printf("step: failed at each of its %ld allocations in turn, world unchanged each time\n", points);
-    // The world steps on normally.
-    EXPECT_GT(scene.run(5), 0u);
+    for (uint32_t threads : {1u, 2u}) {
+        RobustnessScene scene(threads, threads == 1 ? 3 : 10);
+        EXPECT_GT(scene.run(30), 5u);  // in contact: detection and the solve allocate too
+        // Each failing call is compared against the state before it; a successful one moves on.
+        std::vector<unsigned char> before = scene.state();
+        const long points = fail_each_allocation(
+            [&] { return lfem_world_step(scene.w, 0.005); },
+            [&](long k) { ASSERT_EQ(before, scene.state()) << "allocation " << k << " changed the world"; });
+        EXPECT_GT(points, 10) << "the step allocates: the replacement operator new must be in use";
+        std::printf("step on %u thread(s): failed at each of its %ld allocations in turn, world "
+                    "unchanged each time\n", threads, points);
+        // The world steps on normally.
+        EXPECT_GT(scene.run(5), 0u);
+    }
 }
 
 TEST(OutOfMemory, FailedCreateAddMeshSaveAndLoadChangeNothing) {
