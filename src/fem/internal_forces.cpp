@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
 #include "fem/tet_element.h"
 
@@ -34,6 +35,7 @@ struct Batch {
     double F[9][kLanes];      // D Dm^-1
     double P[9][kLanes];      // first Piola-Kirchhoff stress, row-major
     double psi[kLanes];       // energy density
+    double tangent[kLanes];   // neo-Hookean: the tangent estimate (neo_hookean_tangent.h)
 };
 
 // Gradient of the motion: F = D Dm^-1 (Dm_inv column-major: M[k][c] = m[k + 3c]).
@@ -95,13 +97,17 @@ LFEM_INLINE void neo_hookean_lane(const double (*F)[kLanes], double mu, double l
 }
 
 // What a material model computes per batch: P and psi from F (and the tets' indices).
+// kTangent: the model also estimates each tet's tangent stiffness, whose largest value the
+// loop keeps (the stable step follows it).
 struct LinearModel {
+    static constexpr bool kTangent = false;
     Lame lame;
     LFEM_INLINE void operator()(Batch& b, uint32_t) const {
         for (int l = 0; l < kLanes; ++l) hooke_lane(b.F, lame, b.P, b.psi, l);
     }
 };
 struct PaperModel {
+    static constexpr bool kTangent = false;
     Lame lame;
     double R[9];  // the body's global rotation, row-major
     LFEM_INLINE void operator()(Batch& b, uint32_t) const {
@@ -109,12 +115,19 @@ struct PaperModel {
     }
 };
 struct NeoHookeanModel {
+    static constexpr bool kTangent = true;
     double mu, lam;
     LFEM_INLINE void operator()(Batch& b, uint32_t) const {
         for (int l = 0; l < kLanes; ++l) neo_hookean_lane(b.F, mu, lam, b.P, b.psi, l);
+        // Here, where F is at hand, rather than in a pass of its own over the mesh.
+        for (int l = 0; l < kLanes; ++l)
+            b.tangent[l] = neo_hookean_tangent_estimate(b.F[0][l], b.F[3][l], b.F[6][l], b.F[1][l],
+                                                        b.F[4][l], b.F[7][l], b.F[2][l], b.F[5][l],
+                                                        b.F[8][l], mu, lam);
     }
 };
 struct CorotationalModel {
+    static constexpr bool kTangent = false;
     Lame lame;
     float* rotations;  // 4 per tet, warm start, updated
     // The Newton step of extract_rotation_fast (polar_rotation.h), once, for every lane at the
@@ -200,14 +213,16 @@ struct LoopData {
     uint32_t block_size;
 };
 
-// One block of tets: gather, kernel, scatter; returns the block's strain energy. Compiled for
+// One block of tets: gather, kernel, scatter; returns the block's strain energy (and, for a
+// model with kTangent, its largest tangent estimate in *tangent). Compiled for
 // AVX-512, AVX2 and baseline x86-64, chosen at load time by the CPU (GCC function clones). The
 // results are bitwise the same on each: this file is built with -ffp-contract=off (no a*b+c
 // fused into one rounding), so every clone rounds every operation alike.
 template <bool displacement_edges, class Model>
-LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const Model& model) {
+LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const Model& model,
+                                      double* tangent) {
     Batch b;
-    double energy = 0.0;
+    double energy = 0.0, worst = 0.0;
     const uint32_t e_end = std::min(d.tet_count, (block + 1) * d.block_size);
     for (uint32_t e0 = block * d.block_size; e0 < e_end; e0 += kLanes) {
         b.n = int(std::min<uint32_t>(kLanes, e_end - e0));
@@ -257,6 +272,7 @@ LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const M
         for (int l = 0; l < b.n; ++l) {
             const uint32_t* t = d.tets + 4 * std::size_t(e0 + l);
             energy += b.V[l] * b.psi[l];
+            if constexpr (Model::kTangent) worst = std::max(worst, b.tangent[l]);  // drops a NaN
             for (int r = 0; r < 3; ++r) {
                 const double g1 = G[3 * r][l], g2 = G[3 * r + 1][l], g3 = G[3 * r + 2][l];
                 d.f[3 * std::size_t(t[1]) + r] += g1;
@@ -266,36 +282,49 @@ LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const M
             }
         }
     }
+    if constexpr (Model::kTangent) *tangent = worst;
     return energy;
 }
 
 // The element loop shared by every model, parallel over the colours of element blocks (see
 // element_colouring.h): the blocks of one colour share no node, so they scatter at once, and
 // each node sums its contributions in the same order for any thread count. The strain energy
-// is summed per block, then over the blocks in index order, for the same reason.
+// is summed per block, then over the blocks in index order, for the same reason. A model with
+// kTangent also gives its largest tangent estimate over the tets (a maximum: exact in any
+// order) in *tangent.
 template <bool displacement_edges, class Model>
 double element_loop(const BodyReference& ref, const double* x, double* f, uint32_t n,
-                    ThreadPool* pool, const Model& model) {
+                    ThreadPool* pool, const Model& model, double* tangent = nullptr) {
     std::fill(f, f + 3 * std::size_t(n), 0.0);
     const ElementColouring& colouring = ref.colouring;
     const LoopData d{x, ref.X.data(), ref.tets.data(), ref.Dm_inv.data(), ref.volume.data(),
                      f, ref.tet_count(), colouring.block_size};
     std::vector<double> block_energy(colouring.block_count(), 0.0);
+    std::vector<double> block_tangent(Model::kTangent ? colouring.block_count() : 0, 0.0);
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
         const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
         parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c], [&](uint32_t i) {
-            block_energy[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model);
+            double* t = Model::kTangent ? &block_tangent[blocks[i]] : nullptr;
+            block_energy[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model, t);
         });
     }
     double energy = 0.0;
     for (double e : block_energy) energy += e;
+    if (tangent) *tangent = block_tangent.empty() ? 0.0 : *std::max_element(block_tangent.begin(), block_tangent.end());
     return energy;
 }
 
 template <bool displacement_edges, class Model>
 void element_loop(const Body& body, BodyState& state, ThreadPool* pool, const Model& model) {
+    double tangent = 0.0;
     state.strain_energy = element_loop<displacement_edges>(
-        body.ref, state.x.data(), state.elastic.data(), body.ref.node_count(), pool, model);
+        body.ref, state.x.data(), state.elastic.data(), body.ref.node_count(), pool, model, &tangent);
+    state.stiffening = 1.0;
+    if constexpr (Model::kTangent) {
+        // Relative to the undeformed tet, F = I.
+        const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, model.mu, model.lam);
+        state.stiffening = std::max(1.0, tangent / at_rest);
+    }
 }
 
 }  // namespace

@@ -39,57 +39,7 @@ double gershgorin_bound(const BodyReference& ref, const Lame& lame) {
     return bound;
 }
 
-// The largest eigenvalue of the tangent dP/dF of the stable neo-Hookean energy (tet_element.h),
-// T[D, D] = mu |D|^2 + lam' (cof F : D)^2 + c d2J[D, D], c = lam' (J - 1) - mu, lam' = lambda
-// + mu, estimated without singular values. In the singular-value frame (Smith, de Goes & Kim
-// 2019) T splits into twist and flip pairs, eigenvalues mu +- c s_k (bounded here with
-// s_max^2 <= the largest Gershgorin row of F^T F), and a 3x3 scaling block dominated by
-// lam' g g^T, g = cof F: its top eigenvector is close to the volumetric direction
-// D = cof F / |cof F|, whose Rayleigh quotient is taken; there d2J[D, D] = 2 cof D : F and
-// cof(cof F) = J F give 2 J |F|^2 / |cof F|^2. Both parts are exact at F = I (2 mu + 3 lambda)
-// and under any rotation; a crushed tet (s = 2, 2, 1/4 at nu = 0.3) is estimated within 0.5 %.
-// Written out by hand: it runs over every tet of a neo-Hookean body after every sub-step.
-double neo_hookean_tangent_estimate(const Mat3& F, const Lame& lame) {
-    const double lam = lame.lambda + lame.mu;
-    const Vec3 f0 = F.col(0), f1 = F.col(1), f2 = F.col(2);
-    const Vec3 g0 = f1.cross(f2), g1 = f2.cross(f0), g2 = f0.cross(f1);  // columns of cof F
-    const double J = f0.dot(g0);
-    const double c = lam * (J - 1.0) - lame.mu;
-    const double cof2 = g0.squaredNorm() + g1.squaredNorm() + g2.squaredNorm();
-    const double F2 = f0.squaredNorm() + f1.squaredNorm() + f2.squaredNorm();
-    const double scaling = lame.mu + lam * cof2 + (cof2 > 0.0 ? 2.0 * c * J * F2 / cof2 : 0.0);
-    // Gershgorin rows of C = F^T F, C_ij = f_i . f_j.
-    const double c01 = std::fabs(f0.dot(f1)), c02 = std::fabs(f0.dot(f2)), c12 = std::fabs(f1.dot(f2));
-    const double s_max2 = std::max({f0.squaredNorm() + c01 + c02, f1.squaredNorm() + c01 + c12,
-                                    f2.squaredNorm() + c02 + c12});
-    return std::max(scaling, lame.mu + std::fabs(c) * std::sqrt(s_max2));
-}
-
 }  // namespace
-
-double neo_hookean_stiffening(const BodyReference& ref, const Lame& lame, const double* x,
-                              ThreadPool* pool) {
-    const double at_rest = neo_hookean_tangent_estimate(Mat3::Identity(), lame);
-    // Contiguous ranges of tets on the pool; a maximum is exact in any order, so the answer
-    // does not depend on the thread count.
-    constexpr uint32_t kMaxRanges = 64;
-    const uint32_t tets = ref.tet_count();
-    const uint32_t ranges = std::max(1u, std::min({kMaxRanges, tets / 1024, pool ? 4 * pool->size() : 1u}));
-    double worst[kMaxRanges];
-    parallel_for(pool, ranges, [&](uint32_t r) {
-        const uint32_t e0 = uint32_t(uint64_t(tets) * r / ranges), e1 = uint32_t(uint64_t(tets) * (r + 1) / ranges);
-        double w = at_rest;
-        for (uint32_t e = e0; e < e1; ++e) {
-            const uint32_t* t = &ref.tets[4 * e];
-            const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
-            const Mat3 F = edge_matrix(x + 3 * t[0], x + 3 * t[1], x + 3 * t[2], x + 3 * t[3]) * Dm_inv;
-            w = std::max(w, neo_hookean_tangent_estimate(F, lame));
-        }
-        worst[r] = w;
-    });
-    // A NaN position gives a NaN estimate, which max() drops; the blow-up test catches NaN.
-    return *std::max_element(worst, worst + ranges) / at_rest;
-}
 
 StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame, ThreadPool* pool) {
     StableStepEstimate out;

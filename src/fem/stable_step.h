@@ -21,13 +21,4 @@ struct StableStepEstimate {
 StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame,
                                         ThreadPool* pool = nullptr);
 
-// How much stiffer a neo-Hookean body is at its current nodes x than at its reference state:
-// the largest, over its tets, of a(F_e) / a(I), with a(F) an estimate of the largest
-// eigenvalue of the material tangent dP/dF (exact at F = I and under rotations). Never below
-// 1. omega_max^2 grows with it, so the reference limit divided by its square root is the
-// limit at x. One pass over the tets (on the pool when one is given), O(n), no allocation, no
-// trigonometry.
-double neo_hookean_stiffening(const BodyReference& ref, const Lame& lame, const double* x,
-                              ThreadPool* pool = nullptr);
-
 }  // namespace lfem

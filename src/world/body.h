@@ -48,6 +48,8 @@ struct BodyState {
                                        // empty while the body touches nothing
     double h_last = 0;             // size of the last step (s); 0 = no step since a reset
     double strain_energy = 0;      // J, at x
+    double stiffening = 1;         // neo-Hookean: how much stiffer the stiffest tet is at x than
+                                   // at rest (>= 1; neo_hookean_tangent.h); 1 for the others
     double rotation[4] = {1, 0, 0, 0}; // paper model: global rotation (quaternion w,x,y,z)
     double angular_momentum[3] = {0, 0, 0}; // paper model: L of eq. (2) about the COM
     double center[3] = {0, 0, 0};  // kinematic bodies: current centre; rigid: centre of mass

@@ -22,7 +22,7 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 2;  // 2: thread_count in the def, float tet rotations
+constexpr uint32_t kFormatVersion = 2;  // 2: thread_count in the def, float tet rotations, stiffening
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -31,7 +31,7 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 #if defined(__x86_64__) || defined(__aarch64__)
 static_assert(sizeof(BodyReference) == 368,  // colouring: derived, rebuilt by World::restore
               "BodyReference changed: update the checkpoint");
-static_assert(sizeof(BodyState) == 264, "BodyState changed: update the checkpoint");
+static_assert(sizeof(BodyState) == 272, "BodyState changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 96, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
@@ -146,7 +146,7 @@ void body_fields(A& a, B& b) {
     a(r.feature_nodes), a(r.edge_length), a(r.total_mass), a(r.com), a(r.stable_step), a(r.inertia);
     auto& s = b.state;
     a(s.x), a(s.v_half), a(s.elastic), a(s.tet_rotation), a(s.contact_force), a(s.h_last);
-    a(s.strain_energy), a(s.rotation), a(s.angular_momentum), a(s.center), a(s.velocity);
+    a(s.strain_energy), a(s.stiffening), a(s.rotation), a(s.angular_momentum), a(s.center), a(s.velocity);
     a(s.shape_pose);
     a(b.node_mode), a(b.prescribed_velocity), a(b.node_force);
     uint64_t shapes = b.shapes.size();
@@ -200,6 +200,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
             "shapes on a body that cannot have them");
     require(!b.is_deformable() || n == 0 || (std::isfinite(r.stable_step) && r.stable_step > 0.0),
             "bad stable step");
+    require(s.stiffening >= 1.0 && s.stiffening < HUGE_VAL, "bad stiffening");  // also NaN
     for (const std::vector<double>* a : {&r.X, &r.mass, &r.Dm_inv, &r.volume, &s.x, &s.v_half,
                                          &s.elastic, &s.contact_force,
                                          &s.shape_pose, &b.prescribed_velocity, &b.node_force})

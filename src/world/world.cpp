@@ -349,9 +349,8 @@ double World::stable_step() const {
         // at the current nodes. The reference limit already carries the 2 % margin on
         // omega^2 of its Lanczos estimate; only stiffening beyond it shortens the step. The
         // other models' stiffness does not depend on the state.
-        const double stiffening = b.def.model == LFEM_MODEL_NEO_HOOKEAN
-                                      ? neo_hookean_stiffening(b.ref, b.lame, b.state.x.data(), pool_.get()) / 1.02
-                                      : 1.0;
+        // The estimate comes with the elastic forces at x (internal_forces.cpp).
+        const double stiffening = b.state.stiffening / 1.02;
         h = std::min(h, b.ref.stable_step / std::sqrt(std::max(stiffening, 1.0)));
     });
     return h;
