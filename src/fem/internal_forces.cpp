@@ -19,7 +19,10 @@ namespace {
 // in tet order, so every node sums its contributions in the same order as a plain loop would.
 constexpr int kLanes = 8;
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+// Not under the sanitizers: the clones' load-time resolvers (ifuncs) run before a sanitizer's
+// runtime is set up, and ThreadSanitizer crashes there.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__) && \
+    !defined(__SANITIZE_THREAD__)
 #define LFEM_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #define LFEM_INLINE __attribute__((always_inline)) inline
 #else
