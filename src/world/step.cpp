@@ -136,7 +136,9 @@ void commit_step(Body& body, const double gravity[3], double h, Scratch& scratch
     const bool paper = body.def.model == LFEM_MODEL_PAPER;
     Vec3 c_old = Vec3::Zero(), torque(scratch.support_torque);
     if (paper) c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n, pool);
-    if (touched) s.contact_force.assign(3 * std::size_t(n), 0.0);
+    // Every entry is written in the node loop below (zero where no contact acts), so the
+    // array is not cleared first: no serial pass over all nodes.
+    if (touched) s.contact_force.resize(3 * std::size_t(n));
     else std::vector<double>().swap(s.contact_force);  // nothing held while not touching
     // Node blocks in parallel; the sums per block, then in block order.
     const uint32_t blocks = node_block_count(n);
@@ -155,9 +157,9 @@ void commit_step(Body& body, const double gravity[3], double h, Scratch& scratch
                     // The solve moved the node by (x - x*) = lambda / mhat: its contact force.
                     const double correction = dx[k] - h * s.v_half[3 * i + k];
                     f_contact[k] = correction / scratch.inv_mass[i];
-                    s.contact_force[3 * i + k] = f_contact[k];
                     s.v_half[3 * i + k] = dx[k] / h;
                 }
+                if (touched) s.contact_force[3 * i + k] = f_contact[k];
                 const double v = s.v_half[3 * i + k];
                 kinetic += 0.5 * m * v * v;
                 damping += alpha * m * 0.5 * (v + scratch.v_old[3 * i + k]) * v * h;
