@@ -66,12 +66,12 @@ long fail_each_allocation(Call&& call, Check&& check_unchanged) {
 
 }  // namespace
 
-// On one thread, and on two worker threads with a body large enough to split every parallel
-// loop (the failing allocation may then be a worker's: the pool hands the exception back to
-// the stepping thread).
+// On one thread, and on two worker threads with a body large enough (3072 tets) to split the
+// element loop (the failing allocation may then be a worker's: the pool hands the exception
+// back to the stepping thread).
 TEST(OutOfMemory, FailedStepLeavesTheWorldUnchanged) {
     for (uint32_t threads : {1u, 2u}) {
-        RobustnessScene scene(threads, threads == 1 ? 3 : 10);
+        RobustnessScene scene(threads, threads == 1 ? 3 : 8);
         EXPECT_GT(scene.run(30), 5u);  // in contact: detection and the solve allocate too
         // Each failing call is compared against the state before it; a successful one moves on.
         std::vector<unsigned char> before = scene.state();
