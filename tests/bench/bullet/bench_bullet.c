@@ -79,7 +79,8 @@ static void print_target(const char* against, uint32_t cubes, const bench_result
 }
 
 static void print_profile(const char* engine, uint32_t cubes, const lfem_profile* p,
-                          double wall) {
+                          const bench_result* r) {
+    const double wall = r->wall_seconds;
     const struct {
         const char* name;
         double seconds;
@@ -93,7 +94,8 @@ static void print_profile(const char* engine, uint32_t cubes, const lfem_profile
                  {"commit", p->commit.seconds}};
     double sum = 0;
     size_t i;
-    printf("%s profile, %u cube(s), %% of its stepping wall time:", engine, cubes);
+    printf("%s, %u cube(s): smallest stable limit %.4e s; %% of the stepping wall time:",
+           engine, cubes, r->stable_limit);
     for (i = 0; i < sizeof phase / sizeof phase[0]; ++i) {
         printf(" %s %.1f,", phase[i].name, 100.0 * phase[i].seconds / wall);
         sum += phase[i].seconds;
@@ -207,8 +209,8 @@ int main(int argc, char** argv) {
             print_ratio("fixed/B-M", cubes, &lf, &bm);
         }
         fflush(stdout);
-        if (run_lfem && la.ok) print_profile("lfem", cubes, &pa, la.wall_seconds);
-        if (run_lfem && lf.ok) print_profile("lfem-fixed", cubes, &pf, lf.wall_seconds);
+        if (run_lfem && la.ok) print_profile("lfem", cubes, &pa, &la);
+        if (run_lfem && lf.ok) print_profile("lfem-fixed", cubes, &pf, &lf);
         if (run_lfem && run_bullet) {
             print_target("Bullet-S", cubes, &la, &bs);
             print_target("Bullet-M", cubes, &la, &bm);

@@ -62,9 +62,17 @@ extern "C" bench_result bench_run_bullet(const bench_scene* s) {
     bench_result r{};
     BulletWorld b;
     const btVector3 gravity(0, 0, btScalar(-9.81));
+    // Lame parameters from E and nu, then handed to Bullet so that its energy has them at small
+    // strain. Bullet's stable neo-Hookean (Smith, de Goes & Kim 2018, with the log term) has
+    // P = mu (1 - 1/(I_C + 1)) F + (lambda (J - 1) - 3/4 mu) cof F, whose linearisation at
+    // F = I is Hooke's law with shear modulus 3/4 mu and Lame lambda - 5/8 mu: passed E and nu
+    // as they are, Bullet's cube would be a quarter softer than lfem's (whose stable
+    // neo-Hookean linearises to exactly (mu, lambda)). The paper's remapping mu_B = 4/3 mu,
+    // lambda_B = lambda + 5/6 mu gives both engines the same small-strain material.
     const double mu = s->young_modulus / (2 * (1 + s->poisson_ratio));
     const double lambda = s->young_modulus * s->poisson_ratio /
                           ((1 + s->poisson_ratio) * (1 - 2 * s->poisson_ratio));
+    const double mu_bullet = 4.0 / 3.0 * mu, lambda_bullet = lambda + 5.0 / 6.0 * mu;
     const unsigned cube_count = s->grid * s->grid, nodes = s->node_count;
     const unsigned frames = unsigned(std::lround(s->duration / s->frame));
     const unsigned rest_from = frames - frames / 10;  // the last 10 % of the frames
@@ -158,7 +166,7 @@ extern "C" bench_result bench_run_bullet(const bench_scene* s) {
         b.forces.emplace_back(g);
         b.world->addForce(psb, g);
         btDeformableLagrangianForce* nh = new btDeformableNeoHookeanForce(
-            btScalar(mu), btScalar(lambda), btScalar(s->bullet_damping));
+            btScalar(mu_bullet), btScalar(lambda_bullet), btScalar(s->bullet_damping));
         b.forces.emplace_back(nh);
         b.world->addForce(psb, nh);
     }

@@ -65,6 +65,7 @@ bench_result bench_run_lfem(const bench_scene* s, lfem_profile* profile) {
         BENCH_TRY(lfem_world_get_stats(w, &st));
         if (st.step_size < r.step_min) r.step_min = st.step_size;
         if (st.step_size > r.step_max) r.step_max = st.step_size;
+        if (f == 0 || st.stable_step < r.stable_limit) r.stable_limit = st.stable_step;
         if (st.max_penetration > meter.max_penetration) meter.max_penetration = st.max_penetration;
         for (k = 0; k < cube_count; ++k) {
             BENCH_TRY(lfem_body_get_positions(w, cubes[k], x, nodes));

@@ -59,6 +59,8 @@ typedef struct bench_result {
     double steps;              /* integration steps taken (lfem: sub-steps) */
     double step_min, step_max; /* s, smallest and largest integration step taken */
     double tets;               /* total tets in the scene */
+    double stable_limit;       /* s, lfem only: the smallest stable limit it reported (its
+                                  automatic step is 0.9 x that, or the frame if smaller) */
     double max_penetration;    /* m, largest depth of a node below the floor, over every frame
                                   (lfem: also its own contact statistic) */
     double rest_rms_velocity;  /* m/s, RMS node speed over the frames of the last 10 % */
