@@ -26,6 +26,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bench_common.h"
 #include "lfem.h"
 
 #ifndef LFEM_BENCH_RESULTS_DIR
@@ -47,24 +48,6 @@ typedef struct Result {
 
 static const char* phase_names[PHASES] = {"internal", "predictor", "broad", "narrow",
                                           "normal", "friction", "rotation", "commit"};
-
-static double now(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* A field of /proc/self/status in bytes ("VmHWM:", "VmRSS:"), or -1. */
-static double status_bytes(const char* field) {
-    FILE* f = fopen("/proc/self/status", "r");
-    char line[256];
-    double kb = -1.0;
-    if (!f) return -1.0;
-    while (fgets(line, sizeof line, f))
-        if (strncmp(line, field, strlen(field)) == 0) kb = atof(line + strlen(field));
-    fclose(f);
-    return kb * 1024.0;
-}
 
 #define CHECK(call)                                                                          \
     do {                                                                                     \
@@ -119,7 +102,7 @@ static Result run_size(unsigned n, unsigned steps) {
     double baseline, h, t0, t1, per;
     unsigned k;
     memset(&r, 0, sizeof r);
-    baseline = status_bytes("VmRSS:");
+    baseline = bench_status_bytes("VmRSS:");
 
     CHECK(lfem_world_create(&wd, &w));
     CHECK(add_floor(w, n));
@@ -140,9 +123,9 @@ static Result run_size(unsigned n, unsigned steps) {
     h *= 0.9 * (1.0 - 1e-9);
     for (k = 0; k < 3; ++k) CHECK(lfem_world_step(w, h));
     CHECK(lfem_world_reset_profile(w));
-    t0 = now();
+    t0 = bench_now();
     for (k = 0; k < steps; ++k) CHECK(lfem_world_step(w, h));
-    t1 = now();
+    t1 = bench_now();
     CHECK(lfem_world_get_profile(w, &p));
     CHECK(lfem_world_get_stats(w, &st));
     r.steps = steps;
@@ -159,7 +142,7 @@ static Result run_size(unsigned n, unsigned steps) {
     r.phase_ns[7] = p.commit.seconds * per;
     r.shape_tests = (double)p.shape_tests;
     r.ccd_queries = (double)p.ccd_queries;
-    r.peak_bytes = status_bytes("VmHWM:") - baseline;
+    r.peak_bytes = bench_status_bytes("VmHWM:") - baseline;
     lfem_world_destroy(w);
     r.ok = p.substeps == steps && baseline > 0.0;
     return r;

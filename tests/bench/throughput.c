@@ -26,6 +26,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bench_common.h"
 #include "lfem.h"
 
 typedef struct result {
@@ -41,18 +42,6 @@ static double clock_seconds(clockid_t id) {
     struct timespec t;
     clock_gettime(id, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* Peak resident set of this process, bytes (VmHWM of /proc/self/status). */
-static double peak_resident_bytes(void) {
-    FILE* f = fopen("/proc/self/status", "r");
-    char line[256];
-    double kb = 0.0;
-    if (!f) return 0.0;
-    while (fgets(line, sizeof line, f))
-        if (strncmp(line, "VmHWM:", 6) == 0) kb = atof(line + 6);
-    fclose(f);
-    return kb * 1024.0;
 }
 
 #define CHECK(call)                                                                   \
@@ -96,7 +85,7 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
         v[3 * i + 1] = 0.5 * dx + 0.01 * dy;
         v[3 * i + 2] = 0.01 * dz;
     }
-    const double base = peak_resident_bytes();
+    const double base = bench_status_bytes("VmHWM:");
 
     lfem_world_def wd = lfem_world_def_default();
     if (!contact) wd.gravity[2] = 0.0;
@@ -135,7 +124,7 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
     CHECK(lfem_world_get_stats(w, &st));
     r.steps = st.substeps_last_call;
     r.tets = tet_count;
-    r.bytes_per_tet = (peak_resident_bytes() - base) / tet_count;
+    r.bytes_per_tet = (bench_status_bytes("VmHWM:") - base) / tet_count;
     r.ok = 1;
     lfem_world_destroy(w);
     lfem_mesh_destroy(mesh);
