@@ -20,7 +20,10 @@
  * - Thread safety: distinct worlds (and meshes and series) may be used from distinct threads at
  *   the same time. One world must not be used by two threads at once (no internal locking).
  *   lfem_last_error() is per thread. The *_default, lfem_status_string and lfem_version*
- *   functions may be called from any thread at any time.
+ *   functions may be called from any thread at any time. A world created with thread_count > 1
+ *   owns that many worker threads (created with it, joined by lfem_world_destroy); they work
+ *   only inside its lfem_world_step and lfem_body_add_mesh calls, and results do not depend on
+ *   their number.
  */
 #ifndef LFEM_H
 #define LFEM_H
