@@ -141,6 +141,13 @@ void World::destroy_body(lfem_body h) {
     free_slots_.reserve(free_slots_.size() + 1);  // the only allocation: before any change
     b = Body{};                                   // generation 0: the slot is free
     free_slots_.push_back(h.index);
+    // The body's contacts go with it: a query must not read its freed nodes, and a later body
+    // in the same slot must not be warm-started from them (found by fuzz_api).
+    contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(),
+                                   [&](const ContactRecord& r) {
+                                       return r.body_a == h.index || r.body_b == h.index;
+                                   }),
+                    contacts_.end());
 }
 
 uint32_t World::body_count() const {
