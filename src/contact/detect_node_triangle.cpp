@@ -212,7 +212,7 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     out.clear();
     double max_offset = 0.0;
     for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
-    // How deep the last step left a (node, body) pair: a kept overlap or the solver's residual.
+    // The last step's record of a (node, body) pair, if any (the list is in that order).
     const auto find_previous = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
         const auto key = std::make_tuple(body_a, node, body_b);
         const auto it = std::lower_bound(previous.begin(), previous.end(), key,
@@ -223,13 +223,8 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                    ? &*it
                    : nullptr;
     };
-    const auto kept_offset_known = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
-        return find_previous(body_a, node, body_b) != nullptr;
-    };
-    const auto kept_offset = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
-        const ContactRecord* r = find_previous(body_a, node, body_b);
-        return r ? std::max(0.0, -r->gap_after) : 0.0;
-    };
+    // How deep the last step left the pair: a kept overlap or the solver's residual.
+    const auto kept_offset = [](const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; };
     // Broad phase. First at the level of bodies: a body's slave nodes are tested only against
     // bodies whose triangles their paths may reach (boxes overlap, filters allow), and only the
     // triangles near some such node enter the spatial hash. This is exact - a triangle left
@@ -409,14 +404,19 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                 // Candidates come in box order, which is body order: `touched` stays sorted.
                 for (uint32_t bi : s.touched) best[bi].found = deep[bi].found = false;
                 s.touched.clear();
+                // The last step's record of (node, body): looked up once per body met.
+                double allowance = 0.0;
+                bool first_touch = false;
                 for (uint32_t id : s.candidates) {
                     const uint32_t bi = s.box_body[id];
                     const ContactBody& b = bodies[bi];
                     if (bi == ai || !bodies_may_touch(a, b)) continue;
-                    if (s.touched.empty() || s.touched.back() != bi) s.touched.push_back(bi);
-                    const double allowance =
-                        1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * b.edge_length;
-                    const bool first_touch = scan_overlaps && !kept_offset_known(a.slot, p, b.slot);
+                    if (s.touched.empty() || s.touched.back() != bi) {
+                        s.touched.push_back(bi);
+                        const ContactRecord* last = find_previous(a.slot, p, b.slot);
+                        allowance = 1.25 * kept_offset(last) + kResidualDepth * b.edge_length;
+                        first_touch = scan_overlaps && last == nullptr;
+                    }
                     test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance, best[bi],
                                        first_touch ? &deep[bi] : nullptr);
                 }
@@ -463,7 +463,8 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                     Candidate c;
                     c.found = has_triangle;
                     if (has_triangle) c.gap = s.record_gap[next];
-                    const double allowance = 1.25 * kept_offset(a.slot, p, b.slot) + kResidualDepth * a.edge_length;
+                    const double allowance =
+                        1.25 * kept_offset(find_previous(a.slot, p, b.slot)) + kResidualDepth * a.edge_length;
                     for (uint32_t k = 0; k < b.shape_count; ++k)
                         test_node_shape(a, p, node_normal, b, k, allowance, c, profile);
                     if (c.found && c.shape != UINT32_MAX) {
