@@ -6,9 +6,11 @@
 // calling thread.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace lfem {
 
@@ -31,13 +33,35 @@ private:
     std::unique_ptr<Shared> shared_;
 };
 
-// Runs task(i) for i in [0, count) on the pool, or inline without one.
-inline void parallel_for(ThreadPool* pool, uint32_t count, const std::function<void(uint32_t)>& task) {
+// Runs task(i) for i in [0, count) on the pool, or inline without one. The task is passed to
+// the pool by reference, so no std::function holding a copy of it is allocated per loop.
+template <class Task>
+inline void parallel_for(ThreadPool* pool, uint32_t count, const Task& task) {
     if (pool && count > 1 && pool->size() > 1) {
-        pool->run(count, task);
+        pool->run(count, std::cref(task));
     } else {
         for (uint32_t i = 0; i < count; ++i) task(i);
     }
+}
+
+// Nodes per block of the parallel node loops. Fixed, not per thread, so that sums taken per
+// block and then added in block order come out the same for any thread count.
+constexpr uint32_t kNodeBlock = 2048;
+
+// Calls term(i, partial) for every node i in [0, n), in fixed blocks of kNodeBlock nodes on the
+// pool; term adds to its block's K partial sums, which start at zero (and may write node i's
+// own outputs). The blocks' sums are then added to total[0..K) in block order, so the result is
+// bitwise the same for any thread count. total keeps what it held: the caller sets its start.
+template <int K, class Term>
+void blocked_sum(uint32_t n, ThreadPool* pool, double* total, const Term& term) {
+    const uint32_t blocks = (n + kNodeBlock - 1) / kNodeBlock;
+    std::vector<double> partial(std::size_t(blocks) * K, 0.0);
+    parallel_for(pool, blocks, [&](uint32_t b) {
+        double* out = &partial[std::size_t(b) * K];
+        for (uint32_t i = b * kNodeBlock, end = std::min(n, (b + 1) * kNodeBlock); i < end; ++i) term(i, out);
+    });
+    for (uint32_t b = 0; b < blocks; ++b)
+        for (int k = 0; k < K; ++k) total[k] += partial[std::size_t(b) * K + k];
 }
 
 }  // namespace lfem

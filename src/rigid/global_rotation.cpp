@@ -8,27 +8,8 @@
 
 namespace lfem {
 
-namespace {
-
-// sum over nodes of term(i, out[K]) as fixed blocks of nodes, then the blocks in order.
-template <int K, class Term>
-void blocked_sum(uint32_t n, ThreadPool* pool, double* total, const Term& term) {
-    constexpr uint32_t block = 2048;
-    const uint32_t blocks = (n + block - 1) / block;
-    std::vector<double> partial(std::size_t(blocks) * K, 0.0);
-    parallel_for(pool, blocks, [&](uint32_t b) {
-        double* out = &partial[std::size_t(b) * K];
-        for (uint32_t i = b * block, end = std::min(n, (b + 1) * block); i < end; ++i) term(i, out);
-    });
-    for (int k = 0; k < K; ++k) total[k] = 0.0;
-    for (uint32_t b = 0; b < blocks; ++b)
-        for (int k = 0; k < K; ++k) total[k] += partial[std::size_t(b) * K + k];
-}
-
-}  // namespace
-
 Eigen::Vector3d center_of_mass(const double* mass, const double* x, uint32_t n, ThreadPool* pool) {
-    double s[4];
+    double s[4] = {0, 0, 0, 0};
     blocked_sum<4>(n, pool, s, [&](uint32_t i, double* out) {
         for (int k = 0; k < 3; ++k) out[k] += mass[i] * x[3 * i + k];
         out[3] += mass[i];
@@ -38,7 +19,7 @@ Eigen::Vector3d center_of_mass(const double* mass, const double* x, uint32_t n, 
 
 Eigen::Matrix3d inertia_tensor(const double* mass, const double* x, uint32_t n,
                                const Eigen::Vector3d& c, ThreadPool* pool) {
-    double s[9];
+    double s[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     blocked_sum<9>(n, pool, s, [&](uint32_t i, double* out) {
         const double r[3] = {x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]};
         const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
@@ -71,7 +52,7 @@ Eigen::Vector3d integrate_global_rotation(const Eigen::Matrix3d& inertia, const 
 void fit_global_rotation(const double* mass, const double* x, const double* X, uint32_t n,
                          const Eigen::Vector3d& c, const Eigen::Vector3d& C,
                          Eigen::Quaterniond& q, ThreadPool* pool) {
-    double s[9];
+    double s[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     blocked_sum<9>(n, pool, s, [&](uint32_t i, double* out) {
         const double r[3] = {x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]};
         const double R0[3] = {X[3 * i] - C[0], X[3 * i + 1] - C[1], X[3 * i + 2] - C[2]};

@@ -48,11 +48,6 @@ struct SubstepTally {
 
 Eigen::Quaterniond load_q(const double* q) { return {q[0], q[1], q[2], q[3]}; }
 
-// Nodes per block of the parallel predictor and commit loops. Fixed (not per thread), so that
-// sums over blocks come out the same for any thread count.
-constexpr uint32_t kNodeBlock = 2048;
-uint32_t node_block_count(uint32_t n) { return (n + kNodeBlock - 1) / kNodeBlock; }
-
 double external_force(const Body& b, const double g[3], uint32_t i, int k) {
     return b.ref.mass[i] * g[k] + (b.node_force.empty() ? 0.0 : b.node_force[3 * i + k]);
 }
@@ -76,52 +71,48 @@ void predict_positions(Body& body, const double gravity[3], double h, Scratch& s
     scratch.x_start.resize(s.x.size());
     scratch.v_old.resize(s.v_half.size());
     scratch.inv_mass.resize(n);
+    // "paper": the centre at the start of the step, about which eq. (2) takes its torque; the
+    // commit and the rotation update use it too.
     Vec3 c = Vec3::Zero();
     if (paper) c = center_of_mass(ref.mass.data(), s.x.data(), n, pool);
-    // Node blocks in parallel; support work and torque summed per block, then in block order.
-    const uint32_t blocks = node_block_count(n);
-    std::vector<double> sums(4 * std::size_t(blocks), 0.0);
-    parallel_for(pool, blocks, [&](uint32_t blk) {
-        const uint32_t i0 = blk * kNodeBlock, i1 = std::min(n, i0 + kNodeBlock);
-        std::copy(s.x.begin() + 3 * i0, s.x.begin() + 3 * i1, scratch.x_start.begin() + 3 * i0);
-        std::copy(s.v_half.begin() + 3 * i0, s.v_half.begin() + 3 * i1, scratch.v_old.begin() + 3 * i0);
-        double support_work = 0.0;
-        Vec3 torque = Vec3::Zero();
-        for (uint32_t i = i0; i < i1; ++i) {
-            const double m = ref.mass[i];
-            const double lhs = m / h_mid + 0.5 * alpha * m, rhs = m / h_mid - 0.5 * alpha * m;
-            const NodeMode mode = body.node_mode[i];
-            scratch.inv_mass[i] = mode == NodeMode::free ? h / lhs : 0.0;  // dx = (h/lhs) lambda
-            Vec3 reaction;
-            for (int k = 0; k < 3; ++k) {
-                const double R = external_force(body, gravity, i, k) + s.elastic[3 * i + k];
-                double v_new;
-                switch (mode) {
-                    case NodeMode::free: v_new = (rhs * s.v_half[3 * i + k] + R) / lhs; break;
-                    case NodeMode::fixed: v_new = 0.0; break;
-                    default: v_new = body.prescribed_velocity[3 * i + k]; break;
-                }
-                // The support force that makes a fixed or prescribed node follow its motion
-                // (zero for free nodes): it does work and exerts torque like an external force.
-                reaction[k] = lhs * v_new - rhs * s.v_half[3 * i + k] - R;
-                s.v_half[3 * i + k] = v_new;
-                s.x[3 * i + k] += h * v_new;
+    for (int k = 0; k < 3; ++k) scratch.center_start[k] = c[k];
+    // sums: support work, support torque (3).
+    double sums[4] = {0, 0, 0, 0};
+    blocked_sum<4>(n, pool, sums, [&](uint32_t i, double* out) {
+        for (int k = 0; k < 3; ++k) {
+            scratch.x_start[3 * i + k] = s.x[3 * i + k];
+            scratch.v_old[3 * i + k] = s.v_half[3 * i + k];
+        }
+        const double m = ref.mass[i];
+        const double lhs = m / h_mid + 0.5 * alpha * m, rhs = m / h_mid - 0.5 * alpha * m;
+        const NodeMode mode = body.node_mode[i];
+        scratch.inv_mass[i] = mode == NodeMode::free ? h / lhs : 0.0;  // dx = (h/lhs) lambda
+        Vec3 reaction;
+        for (int k = 0; k < 3; ++k) {
+            const double R = external_force(body, gravity, i, k) + s.elastic[3 * i + k];
+            double v_new;
+            switch (mode) {
+                case NodeMode::free: v_new = (rhs * s.v_half[3 * i + k] + R) / lhs; break;
+                case NodeMode::fixed: v_new = 0.0; break;
+                default: v_new = body.prescribed_velocity[3 * i + k]; break;
             }
-            if (mode != NodeMode::free) {
-                const Vec3 dx = Vec3(&s.x[3 * i]) - Vec3(&scratch.x_start[3 * i]);
-                support_work += reaction.dot(dx);
-                if (paper) torque += (Vec3(&scratch.x_start[3 * i]) - c).cross(reaction);
+            // The support force that makes a fixed or prescribed node follow its motion (zero
+            // for free nodes): it does work and exerts torque like an external force.
+            reaction[k] = lhs * v_new - rhs * s.v_half[3 * i + k] - R;
+            s.v_half[3 * i + k] = v_new;
+            s.x[3 * i + k] += h * v_new;
+        }
+        if (mode != NodeMode::free) {
+            const Vec3 dx = Vec3(&s.x[3 * i]) - Vec3(&scratch.x_start[3 * i]);
+            out[0] += reaction.dot(dx);
+            if (paper) {
+                const Vec3 t = (Vec3(&scratch.x_start[3 * i]) - c).cross(reaction);
+                for (int k = 0; k < 3; ++k) out[1 + k] += t[k];
             }
         }
-        double* out = &sums[4 * std::size_t(blk)];
-        out[0] = support_work, out[1] = torque[0], out[2] = torque[1], out[3] = torque[2];
     });
-    scratch.support_work = 0.0;
-    for (int k = 0; k < 3; ++k) scratch.support_torque[k] = 0.0;
-    for (uint32_t blk = 0; blk < blocks; ++blk) {
-        scratch.support_work += sums[4 * std::size_t(blk)];
-        for (int k = 0; k < 3; ++k) scratch.support_torque[k] += sums[4 * std::size_t(blk) + 1 + k];
-    }
+    scratch.support_work = sums[0];
+    for (int k = 0; k < 3; ++k) scratch.support_torque[k] = sums[1 + k];
 }
 
 // Commit: velocities from the corrected positions, energy bookkeeping, and ("paper") the
@@ -134,50 +125,40 @@ void commit_step(Body& body, const double gravity[3], double h, Scratch& scratch
     const uint32_t n = ref.node_count();
     const double alpha = body.def.damping;
     const bool paper = body.def.model == LFEM_MODEL_PAPER;
-    Vec3 c_old = Vec3::Zero(), torque(scratch.support_torque);
-    if (paper) c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n, pool);
+    const Vec3 c_old(scratch.center_start);
     // Every entry is written in the node loop below (zero where no contact acts), so the
     // array is not cleared first: no serial pass over all nodes.
     if (touched) s.contact_force.resize(3 * std::size_t(n));
     else std::vector<double>().swap(s.contact_force);  // nothing held while not touching
-    // Node blocks in parallel; the sums per block, then in block order.
-    const uint32_t blocks = node_block_count(n);
-    std::vector<double> sums(7 * std::size_t(blocks), 0.0);
-    parallel_for(pool, blocks, [&](uint32_t blk) {
-        const uint32_t i0 = blk * kNodeBlock, i1 = std::min(n, i0 + kNodeBlock);
-        double kinetic = 0.0, work = 0.0, contact_work = 0.0, damping = 0.0;
-        Vec3 block_torque = Vec3::Zero();
-        for (uint32_t i = i0; i < i1; ++i) {
-            const double m = ref.mass[i];
-            Vec3 f_ext, f_contact = Vec3::Zero(), dx;
-            for (int k = 0; k < 3; ++k) {
-                dx[k] = s.x[3 * i + k] - scratch.x_start[3 * i + k];
-                f_ext[k] = external_force(body, gravity, i, k);
-                if (touched && scratch.inv_mass[i] > 0.0) {
-                    // The solve moved the node by (x - x*) = lambda / mhat: its contact force.
-                    const double correction = dx[k] - h * s.v_half[3 * i + k];
-                    f_contact[k] = correction / scratch.inv_mass[i];
-                    s.v_half[3 * i + k] = dx[k] / h;
-                }
-                if (touched) s.contact_force[3 * i + k] = f_contact[k];
-                const double v = s.v_half[3 * i + k];
-                kinetic += 0.5 * m * v * v;
-                damping += alpha * m * 0.5 * (v + scratch.v_old[3 * i + k]) * v * h;
+    // sums: kinetic energy, work of external forces, contact work, damping, torque (3).
+    double sums[7] = {0.0, scratch.support_work, 0.0, 0.0, scratch.support_torque[0],
+                      scratch.support_torque[1], scratch.support_torque[2]};
+    blocked_sum<7>(n, pool, sums, [&](uint32_t i, double* out) {
+        const double m = ref.mass[i];
+        Vec3 f_ext, f_contact = Vec3::Zero(), dx;
+        for (int k = 0; k < 3; ++k) {
+            dx[k] = s.x[3 * i + k] - scratch.x_start[3 * i + k];
+            f_ext[k] = external_force(body, gravity, i, k);
+            if (touched && scratch.inv_mass[i] > 0.0) {
+                // The solve moved the node by (x - x*) = lambda / mhat: its contact force.
+                const double correction = dx[k] - h * s.v_half[3 * i + k];
+                f_contact[k] = correction / scratch.inv_mass[i];
+                s.v_half[3 * i + k] = dx[k] / h;
             }
-            work += f_ext.dot(dx);
-            contact_work += f_contact.dot(dx);
-            if (paper) block_torque += (Vec3(&scratch.x_start[3 * i]) - c_old).cross(f_ext + f_contact);
+            if (touched) s.contact_force[3 * i + k] = f_contact[k];
+            const double v = s.v_half[3 * i + k];
+            out[0] += 0.5 * m * v * v;
+            out[3] += alpha * m * 0.5 * (v + scratch.v_old[3 * i + k]) * v * h;
         }
-        double* out = &sums[7 * std::size_t(blk)];
-        out[0] = kinetic, out[1] = work, out[2] = contact_work, out[3] = damping;
-        for (int k = 0; k < 3; ++k) out[4 + k] = block_torque[k];
+        out[1] += f_ext.dot(dx);
+        out[2] += f_contact.dot(dx);
+        if (paper) {
+            const Vec3 t = (Vec3(&scratch.x_start[3 * i]) - c_old).cross(f_ext + f_contact);
+            for (int k = 0; k < 3; ++k) out[4 + k] += t[k];
+        }
     });
-    double kinetic = 0.0, work = scratch.support_work, contact_work = 0.0, damping = 0.0;
-    for (uint32_t blk = 0; blk < blocks; ++blk) {
-        const double* in = &sums[7 * std::size_t(blk)];
-        kinetic += in[0], work += in[1], contact_work += in[2], damping += in[3];
-        torque += Vec3(in + 4);
-    }
+    const double kinetic = sums[0], work = sums[1], contact_work = sums[2], damping = sums[3];
+    const Vec3 torque(sums + 4);
     tally.kinetic += kinetic;
     tally.work += work;
     tally.contact_work += contact_work;
@@ -194,7 +175,7 @@ void update_global_rotation(Body& body, double h, const Scratch& scratch, Subste
     BodyState& s = body.state;
     const BodyReference& ref = body.ref;
     const uint32_t n = ref.node_count();
-    const Vec3 c_old = center_of_mass(ref.mass.data(), scratch.x_start.data(), n, pool);
+    const Vec3 c_old(scratch.center_start);
     const Eigen::Matrix3d inertia = inertia_tensor(ref.mass.data(), scratch.x_start.data(), n, c_old, pool);
     const Vec3 torque(scratch.torque);
     {
@@ -506,7 +487,7 @@ void World::step(double dt) {
             double kinetic = 0.0, strain = 0.0, step_work = 0.0, limit_now = limit_seen;
             try {
                 substep(h, kinetic, strain, step_work);
-                if (automatic) limit_now = stable_step();  // may allocate (the thread pool)
+                if (automatic) limit_now = stable_step();
             } catch (...) {
                 // Whatever failed inside (out of memory in detection, say), the caller gets the
                 // world as it was before the call, and the failure's own status.

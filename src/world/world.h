@@ -72,7 +72,7 @@ public:
     void set_velocities(Body& body, const double* v);
 
     // Stable limit 2/omega_max over the deformable bodies, neo-Hookean ones at their current
-    // shape (O(n)); +inf without any.
+    // shape (from the stiffening their last force computation estimated); +inf without any.
     double stable_step() const;
     // Advance by dt (see lfem_world_step; under the automatic step, retried with more
     // sub-steps when a body outruns its sub-step or blows up). Throws Error:
@@ -111,6 +111,7 @@ private:
         double support_work = 0;
         double support_torque[3] = {0, 0, 0};
         double torque[3] = {0, 0, 0};  // "paper": torque of the step about the start centre
+        double center_start[3] = {0, 0, 0};  // "paper": centre of mass at the step's start
     };
     void substep(double h, double& kinetic, double& strain, double& work);
     void solve_contacts(double h);
