@@ -142,49 +142,16 @@ struct CorotationalModel {
             for (int k = 0; k < 4; ++k)
                 q[k][l] = l < b.n ? double(rotations[4 * std::size_t(e0 + l) + k]) : double(k == 0);
         for (int l = 0; l < kLanes; ++l) {
-            double norm = 1.0 / std::sqrt(q[0][l] * q[0][l] + q[1][l] * q[1][l] + q[2][l] * q[2][l] +
-                                          q[3][l] * q[3][l]);
+            double A[9], Rl[9];
+            for (int i = 0; i < 9; ++i) A[i] = b.F[i][l];
+            const double norm = 1.0 / std::sqrt(q[0][l] * q[0][l] + q[1][l] * q[1][l] +
+                                                q[2][l] * q[2][l] + q[3][l] * q[3][l]);
             double w = q[0][l] * norm, x = q[1][l] * norm, y = q[2][l] * norm, z = q[3][l] * norm;
-            const double r0 = 1 - 2 * (y * y + z * z), r1 = 2 * (x * y - w * z), r2 = 2 * (x * z + w * y);
-            const double r3 = 2 * (x * y + w * z), r4 = 1 - 2 * (x * x + z * z), r5 = 2 * (y * z - w * x);
-            const double r6 = 2 * (x * z - w * y), r7 = 2 * (y * z + w * x), r8 = 1 - 2 * (x * x + y * y);
-            // M = R^T F
-            const double M0 = r0 * b.F[0][l] + r3 * b.F[3][l] + r6 * b.F[6][l];
-            const double M1 = r0 * b.F[1][l] + r3 * b.F[4][l] + r6 * b.F[7][l];
-            const double M2 = r0 * b.F[2][l] + r3 * b.F[5][l] + r6 * b.F[8][l];
-            const double M3 = r1 * b.F[0][l] + r4 * b.F[3][l] + r7 * b.F[6][l];
-            const double M4 = r1 * b.F[1][l] + r4 * b.F[4][l] + r7 * b.F[7][l];
-            const double M5 = r1 * b.F[2][l] + r4 * b.F[5][l] + r7 * b.F[8][l];
-            const double M6 = r2 * b.F[0][l] + r5 * b.F[3][l] + r8 * b.F[6][l];
-            const double M7 = r2 * b.F[1][l] + r5 * b.F[4][l] + r8 * b.F[7][l];
-            const double M8 = r2 * b.F[2][l] + r5 * b.F[5][l] + r8 * b.F[8][l];
-            const double g0 = M7 - M5, g1 = M2 - M6, g2 = M3 - M1;
-            const double tr = M0 + M4 + M8;
-            const double h00 = tr - M0, h11 = tr - M4, h22 = tr - M8;
-            const double h01 = -0.5 * (M1 + M3), h02 = -0.5 * (M2 + M6), h12 = -0.5 * (M5 + M7);
-            const double c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22,
-                         c02 = h01 * h12 - h02 * h11;
-            const double c11 = h00 * h22 - h02 * h02, c12 = h01 * h02 - h00 * h12,
-                         c22 = h00 * h11 - h01 * h01;
-            const double det = h00 * c00 + h01 * c01 + h02 * c02;
-            // Lanes with an indefinite H are redone by the scalar code below.
-            const bool newton = h00 > 0.0 && c22 > 0.0 && det > 0.0;
-            const double inv = newton ? 1.0 / det : 0.0;
-            const double d0 = (c00 * g0 + c01 * g1 + c02 * g2) * inv;
-            const double d1 = (c01 * g0 + c11 * g1 + c12 * g2) * inv;
-            const double d2 = (c02 * g0 + c12 * g1 + c22 * g2) * inv;
-            angle2[l] = newton ? d0 * d0 + d1 * d1 + d2 * d2 : -1.0;
-            const double a = 0.5 * d0, bb = 0.5 * d1, c = 0.5 * d2;
-            const double nw = w - x * a - y * bb - z * c;
-            const double nx = x + w * a + y * c - z * bb;
-            const double ny = y + w * bb + z * a - x * c;
-            const double nz = z + w * c + x * bb - y * a;
-            norm = 1.0 / std::sqrt(nw * nw + nx * nx + ny * ny + nz * nz);
-            w = nw * norm, x = nx * norm, y = ny * norm, z = nz * norm;
+            // Lanes with an indefinite H (-1) are redone by the scalar code below.
+            angle2[l] = polar_newton_step(A, w, x, y, z, false);
             q[0][l] = w, q[1][l] = x, q[2][l] = y, q[3][l] = z;
-            R[0][l] = 1 - 2 * (y * y + z * z), R[1][l] = 2 * (x * y - w * z), R[2][l] = 2 * (x * z + w * y);
-            R[3][l] = 2 * (x * y + w * z), R[4][l] = 1 - 2 * (x * x + z * z), R[5][l] = 2 * (y * z - w * x);
-            R[6][l] = 2 * (x * z - w * y), R[7][l] = 2 * (y * z + w * x), R[8][l] = 1 - 2 * (x * x + y * y);
+            rotation_matrix(w, x, y, z, Rl);
+            for (int i = 0; i < 9; ++i) R[i][l] = Rl[i];
         }
         for (int l = 0; l < b.n; ++l) {
             float* stored = rotations + 4 * std::size_t(e0 + l);
