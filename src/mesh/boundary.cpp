@@ -41,56 +41,66 @@ bool face_less(const FaceRecord& a, const FaceRecord& b) {
     return a.local < b.local;
 }
 
-// Sorts the faces by face_less. Usually in linear time: a counting pass buckets the faces by
-// their lowest node, and only the few faces around one node are then sorted together. Node
-// indices far beyond the face count (sparse, or hostile) would make the buckets array
-// absurd, so those fall back to one comparison sort.
-void group_equal_faces(std::vector<FaceRecord>& faces) {
+// Face `local` of tet t as a record: its sorted node triple and the parity of the sort.
+FaceRecord make_face(const uint32_t* tets, uint32_t t, int local) {
+    FaceRecord r;
+    uint32_t* k = r.key;
+    for (int i = 0; i < 3; ++i) k[i] = tets[4 * std::size_t(t) + kOutwardFaces[local][i]];
+    // Three compare-and-swaps sort the triple; each swap flips the parity, which remembers the
+    // orientation the sorted key forgets.
+    uint8_t parity = 0;
+    const auto order = [&](int i, int j) {
+        if (k[i] > k[j]) {
+            std::swap(k[i], k[j]);
+            parity ^= 1;
+        }
+    };
+    order(0, 1);
+    order(1, 2);
+    order(0, 1);
+    r.tet = t;
+    r.local = uint8_t(local);
+    r.parity = parity;
+    return r;
+}
+
+// Every tet face, sorted by face_less, so that the copies of a face are neighbours. Usually in
+// linear time: the faces are placed straight into buckets by their lowest node (a counting
+// sort, with no second array of records: this is the peak of a body's memory while its mesh
+// is added), and only the few faces around one node are then sorted together. Node indices
+// far beyond the face count (sparse, or hostile) would make the buckets array absurd, so
+// those fall back to one comparison sort.
+std::vector<FaceRecord> grouped_faces(const uint32_t* tets, uint32_t tet_count) {
+    const std::size_t face_count = 4 * std::size_t(tet_count);
     uint32_t lowest_max = 0;
-    for (const FaceRecord& f : faces) lowest_max = std::max(lowest_max, f.key[0]);
-    if (faces.empty() || lowest_max > 4 * faces.size()) {
+    for (uint32_t t = 0; t < tet_count; ++t)
+        for (int f = 0; f < 4; ++f) lowest_max = std::max(lowest_max, make_face(tets, t, f).key[0]);
+    std::vector<FaceRecord> faces(face_count);
+    if (face_count == 0 || lowest_max > face_count) {
+        for (uint32_t t = 0; t < tet_count; ++t)
+            for (int f = 0; f < 4; ++f) faces[4 * std::size_t(t) + f] = make_face(tets, t, f);
         std::sort(faces.begin(), faces.end(), face_less);
-        return;
+        return faces;
     }
     std::vector<std::size_t> bucket_start(std::size_t(lowest_max) + 2, 0);
-    for (const FaceRecord& f : faces) ++bucket_start[std::size_t(f.key[0]) + 1];
+    for (uint32_t t = 0; t < tet_count; ++t)
+        for (int f = 0; f < 4; ++f) ++bucket_start[std::size_t(make_face(tets, t, f).key[0]) + 1];
     for (std::size_t b = 1; b < bucket_start.size(); ++b) bucket_start[b] += bucket_start[b - 1];
-    std::vector<FaceRecord> bucketed(faces.size());
     std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
-    for (const FaceRecord& f : faces) bucketed[next[f.key[0]]++] = f;
+    for (uint32_t t = 0; t < tet_count; ++t)
+        for (int f = 0; f < 4; ++f) {
+            const FaceRecord r = make_face(tets, t, f);
+            faces[next[r.key[0]]++] = r;
+        }
     for (std::size_t b = 0; b + 1 < bucket_start.size(); ++b)
-        std::sort(bucketed.begin() + bucket_start[b], bucketed.begin() + bucket_start[b + 1],
-                  face_less);
-    faces.swap(bucketed);
+        std::sort(faces.begin() + bucket_start[b], faces.begin() + bucket_start[b + 1], face_less);
+    return faces;
 }
 
 }  // namespace
 
 std::vector<uint32_t> extract_boundary_triangles(const uint32_t* tets, uint32_t tet_count) {
-    std::vector<FaceRecord> faces(4 * std::size_t(tet_count));
-    for (uint32_t t = 0; t < tet_count; ++t) {
-        for (int f = 0; f < 4; ++f) {
-            FaceRecord& r = faces[4 * std::size_t(t) + f];
-            uint32_t* k = r.key;
-            for (int i = 0; i < 3; ++i) k[i] = tets[4 * std::size_t(t) + kOutwardFaces[f][i]];
-            // Three compare-and-swaps sort the triple; each swap flips the parity, which
-            // remembers the orientation the sorted key forgets.
-            uint8_t parity = 0;
-            const auto order = [&](int i, int j) {
-                if (k[i] > k[j]) {
-                    std::swap(k[i], k[j]);
-                    parity ^= 1;
-                }
-            };
-            order(0, 1);
-            order(1, 2);
-            order(0, 1);
-            r.tet = t;
-            r.local = uint8_t(f);
-            r.parity = parity;
-        }
-    }
-    group_equal_faces(faces);
+    const std::vector<FaceRecord> faces = grouped_faces(tets, tet_count);
 
     // Flag the faces seen once, by their place (4 * tet + face) in the input.
     std::vector<unsigned char> on_boundary(faces.size(), 0);
