@@ -455,7 +455,7 @@ typedef struct lfem_contact {
 /* Copy the active contacts of the last step into out[capacity]. *count is always the total;
  * LFEM_BUFFER_TOO_SMALL (nothing copied) when it exceeds capacity. out is nullable when
  * capacity is 0 (to ask for the count). Contacts are listed in a fixed order (by body_a, then
- * node), so repeated runs give the same list. */
+ * node, then body_b and shape), so repeated runs give the same list. */
 LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
                                                size_t capacity, size_t* count);
 

@@ -1,5 +1,8 @@
 // C shim of bodies: every pointer, number, index and handle is checked here before
-// lfem::World sees it; nothing changes unless every check passed.
+// lfem::World sees it; nothing changes unless every check passed. Node and tet indices and
+// per-node arrays cross in the caller's numbering and are translated here to the body's
+// internal order (BodyReference::numbering, mesh/node_ordering.h).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -179,7 +182,7 @@ LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body 
         const Body& b = world_of(world).body(body);
         require_pointer(out, "out");
         require_capacity(node_capacity, b.ref.node_count(), "node");
-        std::copy(b.state.x.begin(), b.state.x.end(), out);
+        b.ref.numbering.nodes_to_api(b.state.x.data(), b.ref.node_count(), out);
     });
 }
 
@@ -190,7 +193,9 @@ LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body
         const Body& b = w.body(body);
         require_pointer(out, "out");
         require_capacity(node_capacity, b.ref.node_count(), "node");
-        w.synchronized_velocities(b, out);
+        std::vector<double> v(b.state.x.size());  // internal order
+        w.synchronized_velocities(b, v.data());
+        b.ref.numbering.nodes_to_api(v.data(), b.ref.node_count(), out);
     });
 }
 
@@ -205,7 +210,9 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
                 "node_count " + std::to_string(node_count) + " differs from the body's " +
                     std::to_string(b.ref.node_count()));
         require_finite(velocities, 3 * std::size_t(node_count), "velocities");
-        w.set_velocities(b, velocities);
+        std::vector<double> v(b.state.x.size());  // internal order
+        b.ref.numbering.nodes_from_api(velocities, node_count, v.data());
+        w.set_velocities(b, v.data());
     });
 }
 
@@ -224,7 +231,7 @@ LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, l
         const Body& b = world_of(world).body(body);
         require_pointer(out, "out");
         require_capacity(triangle_capacity, uint32_t(b.ref.boundary.size() / 3), "triangle");
-        std::copy(b.ref.boundary.begin(), b.ref.boundary.end(), out);
+        for (std::size_t j = 0; j < b.ref.boundary.size(); ++j) out[j] = b.ref.numbering.api_node(b.ref.boundary[j]);
     });
 }
 
@@ -237,7 +244,7 @@ LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfe
         if (b.is_deformable()) {
             std::vector<double> stress(b.ref.tet_count());  // all or nothing for out
             compute_von_mises(b, b.state, stress.data());
-            std::copy(stress.begin(), stress.end(), out);
+            b.ref.numbering.tets_to_api(stress.data(), b.ref.tet_count(), out);
         } else {
             std::fill(out, out + b.ref.tet_count(), 0.0);  // rigid: no strain is modelled
         }
@@ -267,9 +274,10 @@ LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_b
         require(capacity == 0 || out != nullptr, "out is NULL with a non-zero capacity");
         require_finite(lo, 3, "lo");
         require_finite(hi, 3, "hi");
-        auto inside = [&](uint32_t i) {
+        auto inside = [&](uint32_t api) {  // ascending API indices, as the caller numbers
+            const uint32_t i = b.ref.numbering.node(api);
             for (int k = 0; k < 3; ++k) {
-                const double x = b.state.x[3 * i + k];
+                const double x = b.state.x[3 * std::size_t(i) + k];
                 if (x < lo[k] || x > hi[k]) return false;
             }
             return true;
@@ -294,7 +302,7 @@ LFEM_API lfem_status lfem_body_fix_nodes(lfem_world* world, lfem_body body, cons
         Body& b = world_of(world).body(body);
         require_deformable(b, "fixing nodes");
         check_node_list(b, nodes, count);
-        for (uint32_t i = 0; i < count; ++i) b.node_mode[nodes[i]] = NodeMode::fixed;
+        for (uint32_t i = 0; i < count; ++i) b.node_mode[b.ref.numbering.node(nodes[i])] = NodeMode::fixed;
     });
 }
 
@@ -309,8 +317,9 @@ LFEM_API lfem_status lfem_body_prescribe_node_velocity(lfem_world* world, lfem_b
         require_finite(velocity, 3, "velocity");
         if (b.prescribed_velocity.empty()) b.prescribed_velocity.assign(3 * std::size_t(b.ref.node_count()), 0.0);
         for (uint32_t i = 0; i < count; ++i) {
-            b.node_mode[nodes[i]] = NodeMode::prescribed;
-            for (int k = 0; k < 3; ++k) b.prescribed_velocity[3 * nodes[i] + k] = velocity[k];
+            const uint32_t node = b.ref.numbering.node(nodes[i]);
+            b.node_mode[node] = NodeMode::prescribed;
+            for (int k = 0; k < 3; ++k) b.prescribed_velocity[3 * std::size_t(node) + k] = velocity[k];
         }
     });
 }
@@ -321,7 +330,7 @@ LFEM_API lfem_status lfem_body_release_nodes(lfem_world* world, lfem_body body, 
         Body& b = world_of(world).body(body);
         require_deformable(b, "releasing nodes");
         check_node_list(b, nodes, count);
-        for (uint32_t i = 0; i < count; ++i) b.node_mode[nodes[i]] = NodeMode::free;
+        for (uint32_t i = 0; i < count; ++i) b.node_mode[b.ref.numbering.node(nodes[i])] = NodeMode::free;
     });
 }
 
@@ -335,7 +344,7 @@ LFEM_API lfem_status lfem_body_set_node_forces(lfem_world* world, lfem_body body
         require_finite(forces, 3 * std::size_t(count), "forces");
         if (b.node_force.empty()) b.node_force.assign(3 * std::size_t(b.ref.node_count()), 0.0);
         for (uint32_t i = 0; i < count; ++i)
-            for (int k = 0; k < 3; ++k) b.node_force[3 * nodes[i] + k] = forces[3 * i + k];
+            std::copy_n(&forces[3 * std::size_t(i)], 3, &b.node_force[3 * std::size_t(b.ref.numbering.node(nodes[i]))]);
     });
 }
 

@@ -60,25 +60,37 @@ LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series, const 
     return guard(__func__, [&] {
         require_pointer(series, "series");
         const World& w = world_of(world);
-        // Per-body arrays live here until the frame is written.
-        std::vector<std::vector<double>> velocities, stresses;
+        // Per-body arrays live here until the frame is written, in the caller's numbering
+        // (node_ordering.h), so that point and cell ids match the API's node and tet indices.
+        std::vector<std::vector<double>> positions, velocities, stresses;
+        std::vector<std::vector<uint32_t>> tets;
         std::vector<VtkPiece> pieces;
         w.for_each_body([&](const Body& b, uint32_t index) {
             if (!b.has_mesh()) return;
-            velocities.emplace_back(b.state.x.size());
-            w.synchronized_velocities(b, velocities.back().data());
-            stresses.emplace_back(b.ref.tet_count(), 0.0);
-            if (b.is_deformable()) compute_von_mises(b, b.state, stresses.back().data());
+            const Numbering& numbering = b.ref.numbering;
+            const uint32_t n = b.ref.node_count(), t = b.ref.tet_count();
+            std::vector<double> internal(b.state.x.size());
+            w.synchronized_velocities(b, internal.data());
+            velocities.emplace_back(internal.size());
+            numbering.nodes_to_api(internal.data(), n, velocities.back().data());
+            positions.emplace_back(internal.size());
+            numbering.nodes_to_api(b.state.x.data(), n, positions.back().data());
+            std::vector<double> stress(t, 0.0);
+            if (b.is_deformable()) compute_von_mises(b, b.state, stress.data());
+            stresses.emplace_back(t);
+            numbering.tets_to_api(stress.data(), t, stresses.back().data());
+            tets.emplace_back(b.ref.tets.size());
+            numbering.tet_nodes_to_api(b.ref.tets.data(), t, tets.back().data());
             VtkPiece p;
-            p.positions = b.state.x.data();
-            p.node_count = b.ref.node_count();
-            p.tets = b.ref.tets.data();
-            p.tet_count = b.ref.tet_count();
+            p.node_count = n;
+            p.tet_count = t;
             p.body_index = index;
             pieces.push_back(p);
         });
         // Pointers are taken only now: the vectors above no longer reallocate.
         for (std::size_t i = 0; i < pieces.size(); ++i) {
+            pieces[i].positions = positions[i].data();
+            pieces[i].tets = tets[i].data();
             pieces[i].velocities = velocities[i].data();
             pieces[i].von_mises = stresses[i].data();
         }

@@ -1,8 +1,10 @@
 // C shim of the world: validates, translates, and leaves the work to lfem::World.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
+#include <tuple>
 
 #include "api/definitions.h"
 #include "api/handles.h"
@@ -175,5 +177,14 @@ extern "C" LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* worl
         std::size_t i = 0;
         for (const ContactRecord& c : contacts)
             if (c.active()) out[i++] = w.contact_as_c(c);
+        // The list runs in the bodies' internal node order (node_ordering.h); the caller is
+        // promised (body_a, node) in its own numbering. A node's contacts with several bodies
+        // keep their order (body_b, then shape). No std::stable_sort: its scratch buffer comes
+        // from a nothrow new.
+        auto key = [](const lfem_contact& c) {
+            return std::make_tuple(c.body_a.index, c.node, c.body_b.index, c.shape);
+        };
+        std::sort(out, out + active,
+                  [&](const lfem_contact& p, const lfem_contact& q) { return key(p) < key(q); });
     });
 }

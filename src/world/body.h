@@ -9,6 +9,7 @@
 #include "contact/rigid_shape.h"
 #include "fem/element_colouring.h"
 #include "fem/material.h"
+#include "mesh/node_ordering.h"
 #include "lfem.h"
 
 namespace lfem {
@@ -29,6 +30,7 @@ struct BodyReference {
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
     double inertia[9] = {0};        // rigid bodies: inertia about the COM, reference frame
+    Numbering numbering;            // internal (locality) order <-> the caller's numbering
     ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
                                     // from tets: rebuilt, not saved, by checkpoints)
 

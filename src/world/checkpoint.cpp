@@ -22,14 +22,15 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 2;  // 2: thread_count in the def, float tet rotations, stiffening
+constexpr uint32_t kFormatVersion = 3;  // 2: thread_count in the def, float tet rotations,
+                                        // stiffening; 3: the node and tet numbering
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 368,  // colouring: derived, rebuilt by World::restore
+static_assert(sizeof(BodyReference) == 440,  // colouring: derived, rebuilt by World::restore
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 272, "BodyState changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 96, "WorldCounters changed: update the checkpoint");
@@ -144,6 +145,7 @@ void body_fields(A& a, B& b) {
     auto& r = b.ref;
     a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.boundary), a(r.boundary_nodes);
     a(r.feature_nodes), a(r.edge_length), a(r.total_mass), a(r.com), a(r.stable_step), a(r.inertia);
+    a(r.numbering.node_of_api), a(r.numbering.api_of_node), a(r.numbering.api_of_tet);
     auto& s = b.state;
     a(s.x), a(s.v_half), a(s.elastic), a(s.tet_rotation), a(s.contact_force), a(s.h_last);
     a(s.strain_energy), a(s.stiffening), a(s.rotation), a(s.angular_momentum), a(s.center), a(s.velocity);
@@ -177,6 +179,9 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     for (uint32_t i : r.boundary) require(i < n, "boundary node index out of range");
     for (uint32_t i : r.boundary_nodes) require(i < n, "boundary node out of range");
     for (uint32_t i : r.feature_nodes) require(i < n, "feature node out of range");
+    require(n <= UINT32_MAX && t <= UINT32_MAX &&
+                r.numbering.consistent(uint32_t(n), uint32_t(t)),
+            "bad node or tet numbering");
     require(s.x.size() == 3 * n && s.v_half.size() == 3 * n && s.elastic.size() == 3 * n,
             "state size disagrees with the mesh");
     const bool corotational = b.is_deformable() && b.def.model == LFEM_MODEL_COROTATIONAL;

@@ -170,11 +170,20 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     // Build the new reference and state beside the old ones; swap them in only at the end, so
     // any failure (a bad mesh, out of memory) leaves the body untouched.
     BodyReference ref = body.ref;
-    ref.X.insert(ref.X.end(), positions, positions + 3 * std::size_t(node_count));
+    {
+        // The body keeps the new nodes and tets in the order of node_ordering.h (locality of
+        // the element loop); everything below sees the reordered mesh, the caller its own
+        // numbering. The reordered copies go as soon as they are appended (peak memory).
+        LocalityOrder order = order_for_locality(positions, node_count, tets, tet_count);
+        ref.numbering.append(order, old_nodes, old_tets);
+        ref.X.insert(ref.X.end(), order.positions.begin(), order.positions.end());
+        ref.tets.reserve(ref.tets.size() + order.tets.size());
+        for (uint32_t v : order.tets) ref.tets.push_back(v + old_nodes);
+    }
+    const double* new_positions = &ref.X[3 * std::size_t(old_nodes)];
+    const uint32_t* new_tets = &ref.tets[4 * std::size_t(old_tets)];
     ref.mass.resize(ref.X.size() / 3, 0.0);
-    for (uint32_t i = 0; i < 4 * tet_count; ++i) ref.tets.push_back(tets[i] + old_nodes);
-    std::vector<uint32_t> boundary = extract_boundary_triangles(tets, tet_count);
-    for (uint32_t& v : boundary) v += old_nodes;
+    std::vector<uint32_t> boundary = extract_boundary_triangles(new_tets, tet_count);
     ref.boundary.insert(ref.boundary.end(), boundary.begin(), boundary.end());
     compute_surface_data(ref);
     ref.Dm_inv.resize(9 * std::size_t(old_tets + tet_count));
@@ -202,7 +211,7 @@ void World::add_mesh(Body& body, const double* positions, uint32_t node_count,
     // Existing nodes continue from their synchronized velocities; new ones get the def's.
     std::vector<double> v(3 * std::size_t(n), 0.0);
     if (old_nodes) synchronized_velocities(body, v.data());
-    state.x.insert(state.x.end(), positions, positions + 3 * std::size_t(node_count));
+    state.x.insert(state.x.end(), new_positions, new_positions + 3 * std::size_t(node_count));
     const Vec3 c = center_of_mass(ref.mass.data(), state.x.data(), n);
     double added_kinetic = 0.0;
     const Vec3 lin(body.def.linear_velocity), ang(body.def.angular_velocity);
@@ -487,11 +496,11 @@ lfem_contact World::contact_as_c(const ContactRecord& c) const {
     const Body& b = slots_[c.body_b].body;
     out.body_a = lfem_body{c.body_a, a.generation};
     out.body_b = lfem_body{c.body_b, b.generation};
-    out.node = c.node;
+    out.node = a.ref.numbering.api_node(c.node);  // the caller's numbering
     out.shape = c.shape;
     const double w[3] = {1.0 - c.t1 - c.t2, c.t2, c.t1};
     for (int k = 0; k < 3; ++k) {
-        out.triangle[k] = c.triangle[k];
+        out.triangle[k] = c.shape != UINT32_MAX ? c.triangle[k] : b.ref.numbering.api_node(c.triangle[k]);
         out.normal[k] = c.normal[k];
         out.force[k] = c.lambda_n * c.normal[k] + c.lambda_t[k];
         if (c.shape != UINT32_MAX)
