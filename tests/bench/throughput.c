@@ -3,11 +3,15 @@
  * peak resident set, VmHWM), and the cost of contact: the same cube resting on a static floor,
  * as a ratio of its step time to the contact-free step.
  *
- *   bench_throughput [cells] [steps] [model]
+ *   bench_throughput [cells] [steps] [model] [order]
  *
  * cells: cube cells per edge (6 tets per cell; 55 gives 998,250 tets), default 55.
  * steps: timed sub-steps per run, default 20.
- * model: linear, paper, neo_hookean or corotational to run only that one (default: all).
+ * model: linear, paper, neo_hookean or corotational to run only that one ("all": every one).
+ * order: "ordered" (default) gives the box builder's mesh as it is, numbered plane by plane;
+ *        "shuffled" numbers its nodes and tets in a random order (fixed seed) first, as a mesh
+ *        generator that numbers in no spatial order would. The library reorders every mesh
+ *        for locality (src/mesh/node_ordering.h), so the two should run alike.
  *
  * Columns: wall-clock Mtet-steps/s; its ratio to the 1-thread run (speed-up); Mtet-steps per
  * second of CPU time summed over threads (the work done, less sensitive to other load on the
@@ -58,8 +62,38 @@ static double clock_seconds(clockid_t id) {
  * z) and breathing (radial velocity 0.01 m/s per m): free vibration with a large rotation, so
  * every model does its full work. With contact it rests on a static floor plane at z = 0 under
  * gravity, every bottom node touching it. */
+/* A random permutation of 0..n-1 (Fisher-Yates on a fixed xorshift sequence). */
+static uint32_t* random_permutation(uint32_t n, uint64_t* state) {
+    uint32_t* p = malloc(sizeof(uint32_t) * (n ? n : 1));
+    if (!p) exit(1);
+    for (uint32_t i = 0; i < n; ++i) p[i] = i;
+    for (uint32_t i = n; i > 1; --i) {
+        *state ^= *state << 13, *state ^= *state >> 7, *state ^= *state << 17;
+        const uint32_t j = (uint32_t)(*state % i), t = p[i - 1];
+        p[i - 1] = p[j], p[j] = t;
+    }
+    return p;
+}
+
+/* Renumbers a mesh in place: node i becomes node_perm[i], tet e is moved to tet_perm[e]. */
+static void shuffle_mesh(double* x, uint32_t node_count, uint32_t* tets, uint32_t tet_count) {
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    uint32_t* node_perm = random_permutation(node_count, &state);
+    uint32_t* tet_perm = random_permutation(tet_count, &state);
+    double* x_new = malloc(3 * sizeof(double) * node_count);
+    uint32_t* t_new = malloc(4 * sizeof(uint32_t) * tet_count);
+    if (!x_new || !t_new) exit(1);
+    for (uint32_t i = 0; i < node_count; ++i)
+        for (int k = 0; k < 3; ++k) x_new[3 * node_perm[i] + k] = x[3 * i + k];
+    for (uint32_t e = 0; e < tet_count; ++e)
+        for (int a = 0; a < 4; ++a) t_new[4 * tet_perm[e] + a] = node_perm[tets[4 * e + a]];
+    memcpy(x, x_new, 3 * sizeof(double) * node_count);
+    memcpy(tets, t_new, 4 * sizeof(uint32_t) * tet_count);
+    free(x_new), free(t_new), free(node_perm), free(tet_perm);
+}
+
 static result run_config(lfem_model model, unsigned threads, int contact, unsigned cells,
-                         unsigned steps) {
+                         unsigned steps, int shuffled) {
     result r;
     memset(&r, 0, sizeof r);
     const double size[3] = {1.0, 1.0, 1.0};
@@ -68,9 +102,10 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
     CHECK(lfem_mesh_create_box(size, n, &mesh));
     const uint32_t node_count = lfem_mesh_get_node_count(mesh);
     const uint32_t tet_count = lfem_mesh_get_tet_count(mesh);
-    const double* x = lfem_mesh_get_positions(mesh);
+    double* x = malloc(3 * sizeof(double) * node_count);
+    uint32_t* tets = malloc(4 * sizeof(uint32_t) * tet_count);
     double* v = malloc(3 * sizeof(double) * node_count);
-    if (!v) exit(1);
+    if (!x || !tets || !v) exit(1);
     /* The box builder centres nothing: find its extent to place it. */
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
     for (uint32_t i = 0; i < node_count; ++i)
@@ -78,7 +113,10 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
             if (x[3 * i + k] < lo[k]) lo[k] = x[3 * i + k];
     const double shift[3] = {-lo[0], -lo[1], -lo[2]};
     CHECK(lfem_mesh_translate(mesh, shift));
-    x = lfem_mesh_get_positions(mesh);
+    memcpy(x, lfem_mesh_get_positions(mesh), 3 * sizeof(double) * node_count);
+    memcpy(tets, lfem_mesh_get_tets(mesh), 4 * sizeof(uint32_t) * tet_count);
+    lfem_mesh_destroy(mesh);
+    if (shuffled) shuffle_mesh(x, node_count, tets, tet_count);
     for (uint32_t i = 0; i < node_count; ++i) {
         const double dx = x[3 * i] - 0.5, dy = x[3 * i + 1] - 0.5, dz = x[3 * i + 2] - 0.5;
         v[3 * i + 0] = -0.5 * dy + 0.01 * dx;
@@ -109,7 +147,7 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
     bd.friction = 0.5;
     lfem_body body;
     CHECK(lfem_body_create(w, &bd, &body));
-    CHECK(lfem_body_add_mesh(w, body, x, node_count, lfem_mesh_get_tets(mesh), tet_count));
+    CHECK(lfem_body_add_mesh(w, body, x, node_count, tets, tet_count));
     if (!contact) CHECK(lfem_body_set_velocities(w, body, v, node_count));
 
     double limit = 0.0;
@@ -127,14 +165,13 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
     r.bytes_per_tet = (bench_status_bytes("VmHWM:") - base) / tet_count;
     r.ok = 1;
     lfem_world_destroy(w);
-    lfem_mesh_destroy(mesh);
-    free(v);
+    free(x), free(tets), free(v);
     return r;
 }
 
 /* Runs a configuration in a child process and reads its result back through a pipe. */
 static result run_isolated(lfem_model model, unsigned threads, int contact, unsigned cells,
-                           unsigned steps) {
+                           unsigned steps, int shuffled) {
     result r;
     memset(&r, 0, sizeof r);
     int fd[2];
@@ -143,7 +180,7 @@ static result run_isolated(lfem_model model, unsigned threads, int contact, unsi
     const pid_t pid = fork();
     if (pid == 0) {
         close(fd[0]);
-        const result c = run_config(model, threads, contact, cells, steps);
+        const result c = run_config(model, threads, contact, cells, steps, shuffled);
         const ssize_t written = write(fd[1], &c, sizeof c);
         _exit(written == (ssize_t)sizeof c ? 0 : 1);
     }
@@ -159,9 +196,11 @@ static result run_isolated(lfem_model model, unsigned threads, int contact, unsi
 int main(int argc, char** argv) {
     const unsigned cells = argc > 1 ? (unsigned)atoi(argv[1]) : 55;
     const unsigned steps = argc > 2 ? (unsigned)atoi(argv[2]) : 20;
-    const char* only = argc > 3 ? argv[3] : NULL;
-    if (cells < 1 || steps < 1) {
-        fprintf(stderr, "usage: %s [cells per edge >= 1] [steps >= 1] [model]\n", argv[0]);
+    const char* only = argc > 3 && strcmp(argv[3], "all") != 0 ? argv[3] : NULL;
+    const int shuffled = argc > 4 && strcmp(argv[4], "shuffled") == 0;
+    if (cells < 1 || steps < 1 || (argc > 4 && !shuffled && strcmp(argv[4], "ordered") != 0)) {
+        fprintf(stderr, "usage: %s [cells per edge >= 1] [steps >= 1] [model|all] [ordered|shuffled]\n",
+                argv[0]);
         return 2;
     }
     static const struct {
@@ -173,8 +212,9 @@ int main(int argc, char** argv) {
                   {LFEM_MODEL_COROTATIONAL, "corotational"}};
     const unsigned thread_counts[] = {1, 2};
     const unsigned thread_options = sizeof thread_counts / sizeof thread_counts[0];
-    printf("lfem %s, cube of %u^3 cells (%u tets), %u timed sub-steps per run\n",
-           lfem_version_string(), cells, 6 * cells * cells * cells, steps);
+    printf("lfem %s, cube of %u^3 cells (%u tets), %u timed sub-steps per run, mesh given %s\n",
+           lfem_version_string(), cells, 6 * cells * cells * cells, steps,
+           shuffled ? "in a random node and tet order" : "as the box builder numbers it");
     printf("%-13s %7s %14s %9s %12s %10s %13s\n", "model", "threads", "Mtet-steps/s", "speed-up",
            "per CPU-s", "bytes/tet", "contact/free");
     for (unsigned m = 0; m < sizeof models / sizeof models[0]; ++m) {
@@ -182,8 +222,8 @@ int main(int argc, char** argv) {
         double first = 0.0;
         for (unsigned t = 0; t < thread_options; ++t) {
             const unsigned threads = thread_counts[t];
-            const result free_run = run_isolated(models[m].model, threads, 0, cells, steps);
-            const result contact_run = run_isolated(models[m].model, threads, 1, cells, steps);
+            const result free_run = run_isolated(models[m].model, threads, 0, cells, steps, shuffled);
+            const result contact_run = run_isolated(models[m].model, threads, 1, cells, steps, shuffled);
             if (!free_run.ok || !contact_run.ok) {
                 printf("%-13s %7u   failed\n", models[m].name, threads);
                 continue;
