@@ -8,8 +8,10 @@
  *             proportional damping that Bullet solves implicitly (a Krylov solve every step);
  *   Bullet-M  no stiffness damping; btSoftBody::Config::drag = alpha x step, the same
  *             mass-proportional damping alpha as lfem's (explicit, nearly free).
- * lfem runs twice as well: with its automatic step (re-checking the stable limit of the
- * neo-Hookean bodies as they deform) and with Bullet's step fixed (checked once per call).
+ * lfem runs three times: with its automatic step (re-checking the stable limit of the
+ * neo-Hookean bodies as they deform), with Bullet's step fixed (checked once per call), both on
+ * one thread like Bullet, and with the automatic step on two threads ("lfem-2t": this machine's
+ * two cores; Debian's Bullet steps a deformable world on one thread).
  *
  * Printed per run: the step, wall time per simulated second, tet-steps per second, the largest
  * penetration into the floor, the RMS node speed at rest (last 10 % of the run), the final
@@ -158,7 +160,8 @@ int main(int argc, char** argv) {
     bullet_step = s.frame / s.bullet_substeps;
     if (bench_scene_build_mesh(&s) != 0) return 1;
 
-    printf("lfem %s against Bullet %s (single precision, its default build), one thread each.\n"
+    printf("lfem %s against Bullet %s (single precision, its default build), one thread each "
+           "(lfem-2t: lfem on two).\n"
            "Scene: neo-Hookean cubes of %.3g m edge, %u^3 cells x 6 = %u tets (%u nodes) each, "
            "E = %.3g Pa, nu = %.2f, rho = %.0f kg/m^3, friction %.2f,\n"
            "dropped from %.3g m onto a static floor (lfem: a plane shape; Bullet: a static box), "
@@ -177,10 +180,10 @@ int main(int argc, char** argv) {
            "step s", "steps", "wall s/s", "tet-steps/s", "max pen. m", "rest RMS v", "lowest z",
            "top z");
     for (g = 0; g < grid_count; ++g) {
-        bench_result la, lf, bs, bm;
-        lfem_profile pa, pf;
+        bench_result la, lf, l2, bs, bm;
+        lfem_profile pa, pf, p2;
         const uint32_t cubes = grids[g] * grids[g];
-        memset(&la, 0, sizeof la), memset(&lf, 0, sizeof lf);
+        memset(&la, 0, sizeof la), memset(&lf, 0, sizeof lf), memset(&l2, 0, sizeof l2);
         memset(&bs, 0, sizeof bs), memset(&bm, 0, sizeof bm);
         s.grid = grids[g];
         if (run_lfem) {
@@ -190,6 +193,11 @@ int main(int argc, char** argv) {
             s.lfem_step = bullet_step;
             lf = bench_run_lfem(&s, &pf);
             print_row("lfem-fixed", cubes, &lf);
+            s.lfem_step = 0.0;
+            s.lfem_threads = 2;
+            l2 = bench_run_lfem(&s, &p2);
+            print_row("lfem-2t", cubes, &l2);
+            s.lfem_threads = 0;
         }
         if (run_bullet) {
             const double damping = s.bullet_damping;
@@ -207,13 +215,18 @@ int main(int argc, char** argv) {
             print_ratio("lfem/B-M", cubes, &la, &bm);
             print_ratio("fixed/B-S", cubes, &lf, &bs);
             print_ratio("fixed/B-M", cubes, &lf, &bm);
+            print_ratio("2t/B-S", cubes, &l2, &bs);
+            print_ratio("2t/B-M", cubes, &l2, &bm);
         }
         fflush(stdout);
         if (run_lfem && la.ok) print_profile("lfem", cubes, &pa, &la);
         if (run_lfem && lf.ok) print_profile("lfem-fixed", cubes, &pf, &lf);
+        if (run_lfem && l2.ok) print_profile("lfem-2t", cubes, &p2, &l2);
         if (run_lfem && run_bullet) {
             print_target("Bullet-S", cubes, &la, &bs);
             print_target("Bullet-M", cubes, &la, &bm);
+            print_target("Bullet-S, lfem on 2 threads", cubes, &l2, &bs);
+            print_target("Bullet-M, lfem on 2 threads", cubes, &l2, &bm);
         }
         fflush(stdout);
     }

@@ -33,6 +33,7 @@ bench_result bench_run_lfem(const bench_scene* s, lfem_profile* profile) {
     if (!cubes || !x || !v || !placed) goto fail;
 
     wd.time_step = s->lfem_step; /* gravity: default (0, 0, -9.81) m/s^2 */
+    if (s->lfem_threads) wd.thread_count = s->lfem_threads;
     BENCH_TRY(lfem_world_create(&wd, &w));
 
     /* The floor: the half-space z < 0 (a closed-form shape query, no libccd). */

@@ -29,6 +29,7 @@ typedef struct bench_scene {
     /* Engine-specific settings (each engine's own kind of damping and step). */
     double lfem_damping;   /* 1/s, lfem's mass-proportional damping alpha */
     double lfem_step;      /* s, lfem's fixed sub-step; 0 = automatic (0.9 x stable limit) */
+    uint32_t lfem_threads; /* lfem_world_def.thread_count; 0 = the default (1) */
     double bullet_damping; /* s, the damping argument of btDeformableNeoHookeanForce (Bullet's
                               default 0.05: a stiffness-proportional damping) */
     double bullet_drag;    /* btSoftBody::Config::drag: node velocities scaled by (1 - drag)
