@@ -227,28 +227,35 @@ struct NarrowInput {
     bool any_shapes;
 };
 
-// Lays the tested bodies' slave nodes out as one sequence (slave_begin) with each node's
-// outward unit normal at x*: the area-weighted mean of the normals of the triangles around it.
-// Serial: a body's triangles add into its nodes in triangle order. Returns the block count.
+// Lays the tested bodies' slave nodes out as one sequence (slave_begin), and adds up, per
+// node of each tested body, the area-weighted normals of the boundary triangles around it
+// (node_normals, body ai's from node_begin[ai]). Serial: a node's triangles add in triangle
+// order. Only the entries that are read or added to are zeroed, not every node of the body:
+// the blocks normalize the slave nodes' sums. Returns the block count.
 uint32_t prepare_slave_blocks(const std::vector<ContactBody>& bodies, DetectionScratch& s) {
     s.slave_begin.assign(1, 0);
-    s.slave_normals.clear();
+    s.node_begin.assign(1, 0);
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
+        const bool tested = s.tested[ai];  // else no slave nodes, or nothing within their reach
+        s.slave_begin.push_back(s.slave_begin.back() + (tested ? bodies[ai].node_count : 0));
+        s.node_begin.push_back(s.node_begin.back() + (tested ? bodies[ai].total_nodes : 0));
+    }
+    s.node_normals.resize(3 * std::size_t(s.node_begin.back()));
+    s.slave_normals.resize(3 * std::size_t(s.slave_begin.back()));
+    for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
+        if (!s.tested[ai]) continue;
         const ContactBody& a = bodies[ai];
-        if (s.tested[ai]) {  // else no slave nodes, or nothing within their reach
-            s.node_normals.assign(3 * std::size_t(a.total_nodes), 0.0);
-            for (uint32_t t = 0; t < a.triangle_count; ++t) {
-                const uint32_t* tri = &a.triangles[3 * t];
-                const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));
-                for (int v = 0; v < 3; ++v)
-                    for (int k = 0; k < 3; ++k) s.node_normals[3 * tri[v] + k] += n2[k];
-            }
-            for (uint32_t j = 0; j < a.node_count; ++j) {
-                const Vec3 n = at(s.node_normals.data(), a.nodes[j]).normalized();
-                for (int k = 0; k < 3; ++k) s.slave_normals.push_back(n[k]);
-            }
+        double* sum = s.node_normals.data() + 3 * std::size_t(s.node_begin[ai]);
+        for (uint32_t j = 0; j < a.node_count; ++j)
+            for (int k = 0; k < 3; ++k) sum[3 * a.nodes[j] + k] = 0.0;
+        for (uint32_t c = 0; c < 3 * a.triangle_count; ++c)
+            for (int k = 0; k < 3; ++k) sum[3 * a.triangles[c] + k] = 0.0;
+        for (uint32_t t = 0; t < a.triangle_count; ++t) {
+            const uint32_t* tri = &a.triangles[3 * t];
+            const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));
+            for (int v = 0; v < 3; ++v)
+                for (int k = 0; k < 3; ++k) sum[3 * tri[v] + k] += n2[k];
         }
-        s.slave_begin.push_back(uint32_t(s.slave_normals.size() / 3));
     }
     const uint32_t blocks = (s.slave_begin.back() + kSlaveBlock - 1) / kSlaveBlock;
     if (s.blocks.size() < blocks) s.blocks.resize(blocks);  // never shrinks: keeps capacity
@@ -331,17 +338,22 @@ void test_node_triangles(const NarrowInput& in, uint32_t ai, uint32_t p, const V
     }
 }
 
-// Every slave node of block b against the triangles near its path. When some body has rigid
-// shapes, where each node's records start and the gap of every record are kept for the shape
-// pass.
-void test_block_triangles(const NarrowInput& in, uint32_t b, DetectionBlock& block) {
+// Every slave node of block b against the triangles near its path; its unit normal goes to
+// slave_normals (3 per node of the sequence). When some body has rigid shapes, where each
+// node's records start and the gap of every record are kept for the shape pass.
+void test_block_triangles(const NarrowInput& in, uint32_t b, DetectionBlock& block, double* slave_normals) {
     block.records.clear();
     block.record_begin.clear();
     block.record_gap.clear();
     block.shape_tests = block.ccd_queries = 0;
     for_each_slave_of_block(in.s.slave_begin, b, [&](uint32_t ai, uint32_t j, uint32_t g) {
+        // The node's outward unit normal at x*, kept for the shape pass (the block's own
+        // entries of slave_normals).
+        const uint32_t p = in.bodies[ai].nodes[j];
+        const Vec3 n = at(in.s.node_normals.data() + 3 * std::size_t(in.s.node_begin[ai]), p).normalized();
+        for (int k = 0; k < 3; ++k) slave_normals[3 * std::size_t(g) + k] = n[k];
         if (in.any_shapes) block.record_begin.push_back(uint32_t(block.records.size()));
-        test_node_triangles(in, ai, in.bodies[ai].nodes[j], at(in.s.slave_normals.data(), g), block);
+        test_node_triangles(in, ai, p, n, block);
     });
     if (in.any_shapes) block.record_begin.push_back(uint32_t(block.records.size()));
 }
@@ -548,7 +560,8 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     {
         PhaseTimer timer(profile.narrow_phase);
         blocks = prepare_slave_blocks(bodies, s);
-        parallel_for(pool, blocks, [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b]); });
+        parallel_for(pool, blocks,
+                     [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], s.slave_normals.data()); });
         if (!any_shapes) join_blocks(s, blocks, out, profile);
     }
     if (!any_shapes) return;

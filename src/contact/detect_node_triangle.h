@@ -57,10 +57,12 @@ struct DetectionScratch {
     std::vector<uint32_t> box_body, box_triangle;  // which body and triangle a box belongs to
     BroadPhase grid;
     // Narrow phase: per body where its slave nodes start in the sequence of all tested bodies'
-    // slave nodes (+1 at the end), 3 per node of the body being prepared, 3 per slave node of
-    // that sequence (outward unit normals at x*), and the blocks (only the first ones may be
-    // in use: the vector never shrinks, so a block's vectors keep their capacity).
-    std::vector<uint32_t> slave_begin;
+    // slave nodes and where its nodes start in node_normals (+1 at the end, both), 3 per node
+    // of the tested bodies (sums of the triangle normals around it; only the boundary nodes'
+    // are set), 3 per slave node of the sequence (outward unit normals at x*), and the blocks
+    // (only the first ones may be in use: the vector never shrinks, so a block's vectors keep
+    // their capacity).
+    std::vector<uint32_t> slave_begin, node_begin;
     std::vector<double> node_normals, slave_normals;
     std::vector<DetectionBlock> blocks;
 };
