@@ -32,6 +32,11 @@ constexpr double kEdgeTolerance = 0.01;
 // rather than in one violent jump.
 constexpr double kOverlapRecovery = 0.2;
 constexpr double kMaxRecovery = 1e-3;
+// Slave nodes per block of the parallel narrow phase. Fixed, not per thread, so the blocks
+// and the order they are joined in are the same for any thread count. Far fewer than the
+// node loops' kNodeBlock: a node's hash query and face tests cost much more than a predictor
+// update, and a contact region of a few thousand nodes should still give every thread work.
+constexpr uint32_t kSlaveBlock = 256;
 
 Vec3 at(const double* x, uint32_t i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
 
@@ -46,16 +51,7 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, dou
     w[0] = 1.0 - w[1] - w[2];
 }
 
-struct Candidate {
-    bool found = false;
-    uint32_t triangle = 0;
-    uint32_t shape = UINT32_MAX;  // a rigid shape instead of a triangle
-    Vec3 point_start = Vec3::Zero(), point_end = Vec3::Zero();
-    double gap = 0;        // g* at the end of the step (m)
-    double start_gap = 0;  // g^n
-    double w[3] = {0, 0, 0};
-    Vec3 normal = Vec3::Zero();
-};
+using Candidate = NodeCandidate;
 
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
@@ -115,8 +111,9 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
 // Test node p of `a` against rigid shape j of `b`, same rules as for a triangle: within the
 // capture band at the end of the step, no deeper at its start than the pair was left, facing
 // the node's surface.
+// The queries are counted in `counts` (its shape_tests and ccd_queries).
 void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
-                     uint32_t j, double depth_allowance, Candidate& best, lfem_profile& profile) {
+                     uint32_t j, double depth_allowance, Candidate& best, DetectionBlock& counts) {
     const RigidShape& shape = b.shapes[j];
     const ShapePose pose_end = ShapePose::load(b.shape_pose + 7 * std::size_t(j));
     const ShapePose pose_start = ShapePose::load(b.shape_pose_start + 7 * std::size_t(j));
@@ -127,11 +124,11 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
     double gap, start_gap;
     Vec3 n, n_start;
     const uint64_t by_ccd = shape.type == LFEM_SHAPE_CONVEX_HULL;
-    profile.shape_tests += 1, profile.ccd_queries += by_ccd;
+    counts.shape_tests += 1, counts.ccd_queries += by_ccd;
     if (!shape_signed_distance(shape, pose_end, x_end, band, gap, n)) return;
     // At the start the node may be anywhere along its path: ask with the whole path as reach.
     const double path = (x_end - x_start).norm() + band;
-    profile.shape_tests += 1, profile.ccd_queries += by_ccd;
+    counts.shape_tests += 1, counts.ccd_queries += by_ccd;
     if (shape_signed_distance(shape, pose_start, x_start, path, start_gap, n_start) &&
         start_gap < -depth_allowance)
         return;
@@ -176,12 +173,13 @@ ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b
 }
 
 // Does the open segment from `from` to `to` cross a boundary triangle of body b other than
-// `skip`? (Möller-Trumbore against the triangles whose boxes the segment's box overlaps.)
+// `skip`? (Möller-Trumbore against the triangles whose boxes the segment's box overlaps;
+// `ids` is scratch for the hash's answer.)
 bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t bi, uint32_t skip,
-                          const ContactBody& b, DetectionScratch& s) {
+                          const ContactBody& b, const DetectionScratch& s, std::vector<uint32_t>& ids) {
     Aabb box;
     for (int k = 0; k < 3; ++k) box.lo[k] = std::min(from[k], to[k]), box.hi[k] = std::max(from[k], to[k]);
-    std::vector<uint32_t> ids;
+    ids.clear();
     s.grid.query(box, ids);
     const Vec3 d = to - from;
     for (uint32_t id : ids) {
@@ -203,28 +201,227 @@ bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t bi, uint32_
     return false;
 }
 
+// The last step's record of a (node, body) pair, if any (the list is in that order).
+const ContactRecord* find_previous(const std::vector<ContactRecord>& previous, uint32_t body_a,
+                                   uint32_t node, uint32_t body_b) {
+    const auto key = std::make_tuple(body_a, node, body_b);
+    const auto it = std::lower_bound(previous.begin(), previous.end(), key,
+                                     [](const ContactRecord& r, const decltype(key)& k) {
+                                         return std::make_tuple(r.body_a, r.node, r.body_b) < k;
+                                     });
+    return it != previous.end() && it->body_a == body_a && it->node == node && it->body_b == body_b
+               ? &*it
+               : nullptr;
+}
+
+// How deep the last step left the pair: a kept overlap or the solver's residual.
+double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; }
+
+// What the narrow phase's blocks read and none of them writes: the broad phase's results in
+// the scratch (everything but the blocks themselves), the bodies and the last step's list.
+struct NarrowInput {
+    const std::vector<ContactBody>& bodies;
+    const std::vector<ContactRecord>& previous;
+    const DetectionScratch& s;
+    bool scan_overlaps;
+    bool any_shapes;
+};
+
+// Lays the tested bodies' slave nodes out as one sequence (slave_begin), and adds up, per
+// node of each tested body, the area-weighted normals of the boundary triangles around it
+// (node_normals, body ai's from node_begin[ai]). Serial: a node's triangles add in triangle
+// order. Only the entries that are read or added to are zeroed, not every node of the body:
+// the blocks normalize the slave nodes' sums. Returns the block count.
+uint32_t prepare_slave_blocks(const std::vector<ContactBody>& bodies, DetectionScratch& s) {
+    s.slave_begin.assign(1, 0);
+    s.node_begin.assign(1, 0);
+    for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
+        const bool tested = s.tested[ai];  // else no slave nodes, or nothing within their reach
+        s.slave_begin.push_back(s.slave_begin.back() + (tested ? bodies[ai].node_count : 0));
+        s.node_begin.push_back(s.node_begin.back() + (tested ? bodies[ai].total_nodes : 0));
+    }
+    s.node_normals.resize(3 * std::size_t(s.node_begin.back()));
+    s.slave_normals.resize(3 * std::size_t(s.slave_begin.back()));
+    for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
+        if (!s.tested[ai]) continue;
+        const ContactBody& a = bodies[ai];
+        double* sum = s.node_normals.data() + 3 * std::size_t(s.node_begin[ai]);
+        for (uint32_t j = 0; j < a.node_count; ++j)
+            for (int k = 0; k < 3; ++k) sum[3 * a.nodes[j] + k] = 0.0;
+        for (uint32_t c = 0; c < 3 * a.triangle_count; ++c)
+            for (int k = 0; k < 3; ++k) sum[3 * a.triangles[c] + k] = 0.0;
+        for (uint32_t t = 0; t < a.triangle_count; ++t) {
+            const uint32_t* tri = &a.triangles[3 * t];
+            const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));
+            for (int v = 0; v < 3; ++v)
+                for (int k = 0; k < 3; ++k) sum[3 * tri[v] + k] += n2[k];
+        }
+    }
+    const uint32_t blocks = (s.slave_begin.back() + kSlaveBlock - 1) / kSlaveBlock;
+    if (s.blocks.size() < blocks) s.blocks.resize(blocks);  // never shrinks: keeps capacity
+    return blocks;
+}
+
+// Calls visit(ai, j, g) for the slave nodes g of block b of the sequence: node j of body ai.
+template <class Visit>
+void for_each_slave_of_block(const std::vector<uint32_t>& slave_begin, uint32_t b, const Visit& visit) {
+    const uint32_t first = b * kSlaveBlock, last = std::min(slave_begin.back(), first + kSlaveBlock);
+    // The body holding `first`: the last whose nodes start at or before it (bodies without
+    // nodes in the sequence start where the next one does).
+    uint32_t ai = uint32_t(std::upper_bound(slave_begin.begin(), slave_begin.end(), first) - slave_begin.begin()) - 1;
+    for (uint32_t g = first; g < last; ++g) {
+        while (slave_begin[ai + 1] <= g) ++ai;
+        visit(ai, g - slave_begin[ai], g);
+    }
+}
+
+// Node p of body ai against the triangles near its path: at most one record per other body,
+// in body order, appended to the block's records.
+void test_node_triangles(const NarrowInput& in, uint32_t ai, uint32_t p, const Vec3& node_normal,
+                         DetectionBlock& block) {
+    const DetectionScratch& s = in.s;
+    const ContactBody& a = in.bodies[ai];
+    const uint32_t* partner = s.partners.data() + s.partner_begin[ai];
+    const uint32_t partner_count = s.partner_begin[ai + 1] - s.partner_begin[ai];
+    Aabb box;
+    for (int k = 0; k < 3; ++k) {
+        box.lo[k] = std::min(a.x_start[3 * p + k], a.x[3 * p + k]);
+        box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
+    }
+    bool reaches = false;  // some partner body's box: else nothing to ask the hash
+    for (uint32_t q = 0; q < partner_count && !reaches; ++q) {
+        const Aabb& other = s.body_box[partner[q]];
+        reaches = true;
+        for (int k = 0; k < 3; ++k) reaches = reaches && box.hi[k] >= other.lo[k] && other.hi[k] >= box.lo[k];
+    }
+    if (!reaches || s.boxes.empty()) return;
+    block.candidates.clear();
+    s.grid.query(box, block.candidates);
+    // Candidates come in box order, which is body order: `touched` stays sorted, and a body's
+    // best and deepest faces are the last entries while its triangles are tested.
+    block.touched.clear();
+    block.best.clear();
+    block.deep.clear();
+    // The last step's record of (node, body): looked up once per body met.
+    double allowance = 0.0;
+    bool first_touch = false;
+    for (uint32_t id : block.candidates) {
+        const uint32_t bi = s.box_body[id];
+        const ContactBody& b = in.bodies[bi];
+        if (bi == ai || !bodies_may_touch(a, b)) continue;
+        if (block.touched.empty() || block.touched.back() != bi) {
+            block.touched.push_back(bi);
+            block.best.emplace_back();
+            block.deep.emplace_back();
+            const ContactRecord* last = find_previous(in.previous, a.slot, p, b.slot);
+            allowance = 1.25 * kept_offset(last) + kResidualDepth * b.edge_length;
+            first_touch = in.scan_overlaps && last == nullptr;
+        }
+        test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance, block.best.back(),
+                           first_touch ? &block.deep.back() : nullptr);
+    }
+    // An overlap met for the first time: accepted when nothing of the other body lies between
+    // the node and the face (then the node is inside, and this face is its nearest way out);
+    // otherwise the node is merely beyond a thin part.
+    for (std::size_t k = 0; k < block.touched.size(); ++k) {
+        const Candidate& c = block.deep[k];
+        if (!c.found || block.best[k].found) continue;
+        const uint32_t bi = block.touched[k];
+        const Vec3 x = at(a.x_start, p);
+        if (!segment_crosses_body(x, x - c.start_gap * c.normal, bi, c.triangle, in.bodies[bi], s, block.crossing))
+            block.best[k] = c;
+    }
+    for (std::size_t k = 0; k < block.touched.size(); ++k) {
+        if (!block.best[k].found) continue;
+        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], block.best[k]));
+        if (in.any_shapes) block.record_gap.push_back(block.best[k].gap);
+    }
+}
+
+// Every slave node of block b against the triangles near its path; its unit normal goes to
+// slave_normals (3 per node of the sequence). When some body has rigid shapes, where each
+// node's records start and the gap of every record are kept for the shape pass.
+void test_block_triangles(const NarrowInput& in, uint32_t b, DetectionBlock& block, double* slave_normals) {
+    block.records.clear();
+    block.record_begin.clear();
+    block.record_gap.clear();
+    block.shape_tests = block.ccd_queries = 0;
+    for_each_slave_of_block(in.s.slave_begin, b, [&](uint32_t ai, uint32_t j, uint32_t g) {
+        // The node's outward unit normal at x*, kept for the shape pass (the block's own
+        // entries of slave_normals).
+        const uint32_t p = in.bodies[ai].nodes[j];
+        const Vec3 n = at(in.s.node_normals.data() + 3 * std::size_t(in.s.node_begin[ai]), p).normalized();
+        for (int k = 0; k < 3; ++k) slave_normals[3 * std::size_t(g) + k] = n[k];
+        if (in.any_shapes) block.record_begin.push_back(uint32_t(block.records.size()));
+        test_node_triangles(in, ai, p, n, block);
+    });
+    if (in.any_shapes) block.record_begin.push_back(uint32_t(block.records.size()));
+}
+
+// Rigid shapes: each slave node of block b against the shapes of the other bodies; a shape
+// replaces the node's triangle of the same body when it is penetrated less. The block's
+// records are rebuilt in the same order (body, node, other body).
+void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block) {
+    const DetectionScratch& s = in.s;
+    block.merged.clear();
+    const std::vector<ContactRecord>& found = block.records;
+    uint32_t local = 0;  // the node's place in the block
+    for_each_slave_of_block(s.slave_begin, b, [&](uint32_t ai, uint32_t j, uint32_t g) {
+        const ContactBody& a = in.bodies[ai];
+        const uint32_t p = a.nodes[j];
+        const Vec3 node_normal = at(s.slave_normals.data(), g);
+        const uint32_t begin = block.record_begin[local], end = block.record_begin[local + 1];
+        ++local;
+        uint32_t next = begin;  // this node's records, ordered by body
+        for (uint32_t bi : s.shape_bodies) {
+            const ContactBody& o = in.bodies[bi];
+            while (next < end && found[next].body_b < o.slot) block.merged.push_back(found[next++]);
+            const bool has_triangle = next < end && found[next].body_b == o.slot;
+            if (bi != ai && bodies_may_touch(a, o)) {
+                Candidate c;
+                c.found = has_triangle;
+                if (has_triangle) c.gap = block.record_gap[next];
+                const double allowance =
+                    1.25 * kept_offset(find_previous(in.previous, a.slot, p, o.slot)) + kResidualDepth * a.edge_length;
+                for (uint32_t k = 0; k < o.shape_count; ++k)
+                    test_node_shape(a, p, node_normal, o, k, allowance, c, block);
+                if (c.found && c.shape != UINT32_MAX) {
+                    block.merged.push_back(make_record(a, p, o, c));
+                    next += has_triangle;  // replaced by the shape
+                    continue;
+                }
+            }
+            if (has_triangle) block.merged.push_back(found[next++]);
+        }
+        while (next < end) block.merged.push_back(found[next++]);
+    });
+    block.records.swap(block.merged);
+}
+
+// The blocks' records joined in block order, which is the list's order; their counts added
+// to the profile in the same order.
+void join_blocks(const DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out,
+                 lfem_profile& profile) {
+    std::size_t total = out.size();
+    for (uint32_t b = 0; b < blocks; ++b) total += s.blocks[b].records.size();
+    out.reserve(total);
+    for (uint32_t b = 0; b < blocks; ++b) {
+        const DetectionBlock& block = s.blocks[b];
+        out.insert(out.end(), block.records.begin(), block.records.end());
+        profile.shape_tests += block.shape_tests;
+        profile.ccd_queries += block.ccd_queries;
+    }
+}
+
 }  // namespace
 
 void detect_node_triangle(const std::vector<ContactBody>& bodies,
                           const std::vector<ContactRecord>& previous, bool scan_overlaps,
                           DetectionScratch& s, std::vector<ContactRecord>& out,
-                          lfem_profile& profile) {
+                          lfem_profile& profile, ThreadPool* pool) {
     out.clear();
     double max_offset = 0.0;
     for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
-    // The last step's record of a (node, body) pair, if any (the list is in that order).
-    const auto find_previous = [&](uint32_t body_a, uint32_t node, uint32_t body_b) {
-        const auto key = std::make_tuple(body_a, node, body_b);
-        const auto it = std::lower_bound(previous.begin(), previous.end(), key,
-                                         [](const ContactRecord& r, const decltype(key)& k) {
-                                             return std::make_tuple(r.body_a, r.node, r.body_b) < k;
-                                         });
-        return it != previous.end() && it->body_a == body_a && it->node == node && it->body_b == body_b
-                   ? &*it
-                   : nullptr;
-    };
-    // How deep the last step left the pair: a kept overlap or the solver's residual.
-    const auto kept_offset = [](const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; };
     // Broad phase. First at the level of bodies: a body's slave nodes are tested only against
     // bodies whose triangles their paths may reach (boxes overlap, filters allow), and only the
     // triangles near some such node enter the spatial hash. This is exact - a triangle left
@@ -356,129 +553,21 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     bool any_shapes = !s.shape_bodies.empty();
     if (s.boxes.empty() && !any_shapes) return;
 
-    // Narrow phase: every slave node of a tested body against the triangles near its path.
-    // When some body has rigid shapes, the node normals, where each node's records start in
-    // `out` and the gap of every record are kept for the shape pass below.
-    s.slave_normals.clear();
-    s.record_begin.clear();
-    s.record_gap.clear();
-    std::vector<Candidate> best(bodies.size()), deep(bodies.size());
+    // Narrow phase: every slave node of a tested body against the triangles near its path,
+    // in blocks on the pool, each block writing only its own records and scratch.
+    const NarrowInput in{bodies, previous, s, scan_overlaps, any_shapes};
+    uint32_t blocks = 0;
     {
         PhaseTimer timer(profile.narrow_phase);
-        for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
-            const ContactBody& a = bodies[ai];
-            if (!s.tested[ai]) continue;  // no slave nodes, or nothing within their reach
-            // Outward normals of the body's boundary nodes at x*: area-weighted means of the
-            // normals of the triangles around each node.
-            s.node_normals.assign(3 * std::size_t(a.total_nodes), 0.0);
-            for (uint32_t t = 0; t < a.triangle_count; ++t) {
-                const uint32_t* tri = &a.triangles[3 * t];
-                const Vec3 n2 = (at(a.x, tri[1]) - at(a.x, tri[0])).cross(at(a.x, tri[2]) - at(a.x, tri[0]));
-                for (int v = 0; v < 3; ++v)
-                    for (int k = 0; k < 3; ++k) s.node_normals[3 * tri[v] + k] += n2[k];
-            }
-            const uint32_t* partner = s.partners.data() + s.partner_begin[ai];
-            const uint32_t partner_count = s.partner_begin[ai + 1] - s.partner_begin[ai];
-            for (uint32_t j = 0; j < a.node_count; ++j) {
-                const uint32_t p = a.nodes[j];
-                const Vec3 node_normal = at(s.node_normals.data(), p).normalized();
-                if (any_shapes) {
-                    for (int k = 0; k < 3; ++k) s.slave_normals.push_back(node_normal[k]);
-                    s.record_begin.push_back(uint32_t(out.size()));
-                }
-                Aabb box;
-                for (int k = 0; k < 3; ++k) {
-                    box.lo[k] = std::min(a.x_start[3 * p + k], a.x[3 * p + k]);
-                    box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
-                }
-                bool reaches = false;  // some partner body's box: else nothing to ask the hash
-                for (uint32_t q = 0; q < partner_count && !reaches; ++q) {
-                    const Aabb& other = s.body_box[partner[q]];
-                    reaches = true;
-                    for (int k = 0; k < 3; ++k)
-                        reaches = reaches && box.hi[k] >= other.lo[k] && other.hi[k] >= box.lo[k];
-                }
-                if (!reaches || s.boxes.empty()) continue;
-                s.candidates.clear();
-                s.grid.query(box, s.candidates);
-                // Candidates come in box order, which is body order: `touched` stays sorted.
-                for (uint32_t bi : s.touched) best[bi].found = deep[bi].found = false;
-                s.touched.clear();
-                // The last step's record of (node, body): looked up once per body met.
-                double allowance = 0.0;
-                bool first_touch = false;
-                for (uint32_t id : s.candidates) {
-                    const uint32_t bi = s.box_body[id];
-                    const ContactBody& b = bodies[bi];
-                    if (bi == ai || !bodies_may_touch(a, b)) continue;
-                    if (s.touched.empty() || s.touched.back() != bi) {
-                        s.touched.push_back(bi);
-                        const ContactRecord* last = find_previous(a.slot, p, b.slot);
-                        allowance = 1.25 * kept_offset(last) + kResidualDepth * b.edge_length;
-                        first_touch = scan_overlaps && last == nullptr;
-                    }
-                    test_node_triangle(a, p, node_normal, b, s.box_triangle[id], allowance, best[bi],
-                                       first_touch ? &deep[bi] : nullptr);
-                }
-                // An overlap met for the first time: accepted when nothing of the other body
-                // lies between the node and the face (then the node is inside, and this face is
-                // its nearest way out); otherwise the node is merely beyond a thin part.
-                for (uint32_t bi : s.touched) {
-                    Candidate& c = deep[bi];
-                    if (!c.found || best[bi].found) continue;
-                    const Vec3 x = at(a.x_start, p);
-                    if (!segment_crosses_body(x, x - c.start_gap * c.normal, bi, c.triangle, bodies[bi], s))
-                        best[bi] = c;
-                }
-                for (uint32_t bi : s.touched) {
-                    if (!best[bi].found) continue;
-                    out.push_back(make_record(a, p, bodies[bi], best[bi]));
-                    if (any_shapes) s.record_gap.push_back(best[bi].gap);
-                }
-            }
-        }
-        if (any_shapes) s.record_begin.push_back(uint32_t(out.size()));
+        blocks = prepare_slave_blocks(bodies, s);
+        parallel_for(pool, blocks,
+                     [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], s.slave_normals.data()); });
+        if (!any_shapes) join_blocks(s, blocks, out, profile);
     }
     if (!any_shapes) return;
-
-    // Rigid shapes: each slave node against the shapes of the other bodies; a shape replaces
-    // the node's triangle of the same body when it is penetrated less. The records are rebuilt
-    // in the same order (body, node, other body).
     PhaseTimer timer(profile.shape_queries);
-    s.merged.clear();
-    std::size_t g = 0;  // slave node over the tested bodies, as in the narrow phase
-    for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
-        const ContactBody& a = bodies[ai];
-        if (!s.tested[ai]) continue;
-        for (uint32_t j = 0; j < a.node_count; ++j, ++g) {
-            const uint32_t p = a.nodes[j];
-            const Vec3 node_normal = at(s.slave_normals.data(), uint32_t(g));
-            const uint32_t begin = s.record_begin[g], end = s.record_begin[g + 1];
-            uint32_t next = begin;  // this node's records, ordered by body
-            for (uint32_t bi : s.shape_bodies) {
-                const ContactBody& b = bodies[bi];
-                while (next < end && out[next].body_b < b.slot) s.merged.push_back(out[next++]);
-                const bool has_triangle = next < end && out[next].body_b == b.slot;
-                if (bi != ai && bodies_may_touch(a, b)) {
-                    Candidate c;
-                    c.found = has_triangle;
-                    if (has_triangle) c.gap = s.record_gap[next];
-                    const double allowance =
-                        1.25 * kept_offset(find_previous(a.slot, p, b.slot)) + kResidualDepth * a.edge_length;
-                    for (uint32_t k = 0; k < b.shape_count; ++k)
-                        test_node_shape(a, p, node_normal, b, k, allowance, c, profile);
-                    if (c.found && c.shape != UINT32_MAX) {
-                        s.merged.push_back(make_record(a, p, b, c));
-                        next += has_triangle;  // replaced by the shape
-                        continue;
-                    }
-                }
-                if (has_triangle) s.merged.push_back(out[next++]);
-            }
-            while (next < end) s.merged.push_back(out[next++]);
-        }
-    }
-    out.swap(s.merged);
+    parallel_for(pool, blocks, [&](uint32_t b) { test_block_shapes(in, b, s.blocks[b]); });
+    join_blocks(s, blocks, out, profile);
 }
 
 }  // namespace lfem

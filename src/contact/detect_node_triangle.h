@@ -5,12 +5,42 @@
 
 #include <vector>
 
+#include "common/thread_pool.h"
 #include "contact/broad_phase.h"
 #include "contact/contact_body.h"
 #include "contact/contact_record.h"
+#include "fem/tet_element.h"
 #include "lfem.h"
 
 namespace lfem {
+
+// The best face (or rigid shape) of another body found so far for one slave node.
+struct NodeCandidate {
+    bool found = false;
+    uint32_t triangle = 0;
+    uint32_t shape = UINT32_MAX;  // a rigid shape instead of a triangle
+    Vec3 point_start = Vec3::Zero(), point_end = Vec3::Zero();
+    double gap = 0;        // g* at the end of the step (m)
+    double start_gap = 0;  // g^n
+    double w[3] = {0, 0, 0};
+    Vec3 normal = Vec3::Zero();
+};
+
+// One block of consecutive slave nodes (the tested bodies' slave nodes in body order, cut into
+// blocks of a fixed size): its own records and scratch, so that blocks run in parallel on the
+// pool and their records are joined in block order, the list's order (body, node, other body).
+// Kept between steps, so the vectors are reused and not allocated again.
+struct DetectionBlock {
+    std::vector<ContactRecord> records, merged;  // merged: rebuilt with the shape contacts
+    // Shape pass: where each of the block's nodes' records start (+1 at the end) and the gap
+    // of each record.
+    std::vector<uint32_t> record_begin;
+    std::vector<double> record_gap;
+    std::vector<uint32_t> touched;            // bodies with a candidate for the current node
+    std::vector<NodeCandidate> best, deep;    // per touched body
+    std::vector<uint32_t> candidates, crossing;  // hash answers: the node's path, a segment
+    uint64_t shape_tests = 0, ccd_queries = 0;   // the profile's counts, added in block order
+};
 
 struct DetectionScratch {
     // Body level, to leave out what cannot touch: per body the joined boxes of its triangles
@@ -22,19 +52,19 @@ struct DetectionScratch {
     std::vector<uint64_t> reached_by;
     std::vector<uint8_t> tested;
     BroadPhase body_grid;
-    std::vector<uint32_t> touched;  // bodies with a candidate for the current node
+    std::vector<uint32_t> candidates;  // bodies near one body's slave node paths
     std::vector<Aabb> boxes;
     std::vector<uint32_t> box_body, box_triangle;  // which body and triangle a box belongs to
-    std::vector<uint32_t> candidates;
-    std::vector<double> node_normals;  // 3 per node of the body being tested
-    // Shape pass, used only when some body has rigid shapes: 3 per slave node (all bodies),
-    // where each slave node's records start (+1 at the end), the gap of each record, and the
-    // records rebuilt with the shape contacts.
-    std::vector<double> slave_normals;
-    std::vector<uint32_t> record_begin;
-    std::vector<double> record_gap;
-    std::vector<ContactRecord> merged;
     BroadPhase grid;
+    // Narrow phase: per body where its slave nodes start in the sequence of all tested bodies'
+    // slave nodes and where its nodes start in node_normals (+1 at the end, both), 3 per node
+    // of the tested bodies (sums of the triangle normals around it; only the boundary nodes'
+    // are set), 3 per slave node of the sequence (outward unit normals at x*), and the blocks
+    // (only the first ones may be in use: the vector never shrinks, so a block's vectors keep
+    // their capacity).
+    std::vector<uint32_t> slave_begin, node_begin;
+    std::vector<double> node_normals, slave_normals;
+    std::vector<DetectionBlock> blocks;
 };
 
 // Fills `out` with one constraint per (node, other body): the boundary triangle the node
@@ -43,10 +73,12 @@ struct DetectionScratch {
 // node, other body), which says which overlaps are being recovered. With scan_overlaps (the
 // first step after bodies were added) nodes found up to half an edge inside another body are
 // taken as overlaps to be removed gradually. Time and counts of the broad phase, the
-// node-triangle tests and the rigid-shape queries are added to `profile`.
+// node-triangle tests and the rigid-shape queries are added to `profile`. The node tests run
+// in blocks on the pool when one is given; the list and the counts are bitwise the same for
+// any number of threads.
 void detect_node_triangle(const std::vector<ContactBody>& bodies,
                           const std::vector<ContactRecord>& previous, bool scan_overlaps,
                           DetectionScratch& scratch, std::vector<ContactRecord>& out,
-                          lfem_profile& profile);
+                          lfem_profile& profile, ThreadPool* pool = nullptr);
 
 }  // namespace lfem

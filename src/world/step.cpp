@@ -261,7 +261,7 @@ void World::solve_contacts(double h) {
     counters_.max_penetration = 0.0;
     if (movable > 0 && contact_bodies_.size() > 1) {
         detect_node_triangle(contact_bodies_, contacts_, counters_.scan_overlaps, detection_, detected_,
-                             profile_);
+                             profile_, pool_.get());
         counters_.scan_overlaps = false;
     }
     // Warm start: both lists are ordered by (body_a, node, body_b). Timed with the solve.
