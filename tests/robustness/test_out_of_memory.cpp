@@ -19,12 +19,13 @@ std::atomic<long> g_count{0};
 
 void* allocate(std::size_t n) {
     g_count.fetch_add(1, std::memory_order_relaxed);
+    // One compare-and-swap per allocation: the worker threads of a step allocate at the same
+    // time, and exactly the planned allocation must fail, once.
     long left = g_allow.load(std::memory_order_relaxed);
-    if (left == 0) {
-        g_allow.store(-1, std::memory_order_relaxed);
-        throw std::bad_alloc();
+    while (left >= 0 && !g_allow.compare_exchange_weak(left, left == 0 ? -1 : left - 1,
+                                                       std::memory_order_relaxed)) {
     }
-    if (left > 0) g_allow.store(left - 1, std::memory_order_relaxed);
+    if (left == 0) throw std::bad_alloc();
     if (void* p = std::malloc(n ? n : 1)) return p;
     throw std::bad_alloc();
 }
