@@ -14,8 +14,8 @@ PACKAGES=(
   cmake
   make
   pkg-config
-  # compiler cache: tests/configs.sh builds the reduced configurations mostly from the objects
-  # of the first one
+  # compiler cache (used by CMakeLists.txt when found): tests/configs.sh builds the reduced
+  # configurations mostly from the objects of the main build
   ccache
   # libraries the library itself builds against (linked privately into liblfem.so)
   libeigen3-dev

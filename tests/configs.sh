@@ -6,12 +6,12 @@
 # fuzz replays are left out so it stays quick. A build without libccd must also not link it.
 # Ends with "configs: N passed, M failed"; exits non-zero when any configuration failed.
 #
-#   bash tests/configs.sh            (folders under build-configs/, override with
+#   bash tests/configs.sh            (folders build-config-NAME/ beside build/, or under
 #                                     LFEM_CONFIGS_DIR; LFEM_CONFIGS_JOBS sets -j, default 2)
 set -u
 
 root=$(cd "$(dirname "$0")/.." && pwd)
-base=${LFEM_CONFIGS_DIR:-$root/build-configs}
+base=${LFEM_CONFIGS_DIR:-$root}
 jobs=${LFEM_CONFIGS_JOBS:-2}
 common=(-DCMAKE_BUILD_TYPE=Release -DLFEM_BUILD_TESTS=ON -DLFEM_BUILD_EXAMPLES=OFF
         -DLFEM_BUILD_BINDINGS=OFF -DLFEM_BUILD_FUZZ_REPLAY=OFF)
@@ -23,13 +23,9 @@ configs=(
   "no-threads|-DLFEM_WITH_THREADS=OFF"
 )
 
-# Through ccache when it is there: only files that test an option (LFEM_WITH_*, see
-# CMakeLists.txt) differ between configurations, so after the first one the rest is reused.
-# All build folders sit at the same depth, so the relative paths ccache hashes are equal.
-if command -v ccache >/dev/null 2>&1; then
-  common+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-  export CCACHE_DIR=${CCACHE_DIR:-$base/ccache} CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
-fi
+# CMakeLists.txt compiles through ccache when it is installed: only files that test an option
+# (LFEM_WITH_*) differ from the main build's, so the rest comes from the cache. The folders
+# sit at the same depth as build/ (ccache hashes paths relative to them).
 
 # The two longest physics tests (a cantilever of 1e8 tet-steps, 1e5 steps of resting contact)
 # use no shape and no file: they run in the full build only.
@@ -41,7 +37,7 @@ failed_names=()
 for entry in "${configs[@]}"; do
   name=${entry%%|*}
   read -r -a extra <<< "${entry#*|}"
-  dir=$base/$name
+  dir=$base/build-config-$name
   log=$dir.log
   mkdir -p "$base"
   echo "== $name: ${extra[*]}"
