@@ -37,15 +37,6 @@ std::string number(double v) {
     return buf;
 }
 
-// What the sub-step adds to the world's energy bookkeeping.
-struct SubstepTally {
-    double kinetic = 0;    // J, of the new mid-step velocities
-    double work = 0;       // J, of gravity, node forces and supports over the step
-    double contact_work = 0; // J, of the contact forces on moving nodes (<= 0 when passive)
-    double damping = 0;    // J, removed by damping over the step
-    double drift = 0;      // rad, eq. (2) rotation against the re-fitted one
-};
-
 Eigen::Quaterniond load_q(const double* q) { return {q[0], q[1], q[2], q[3]}; }
 
 double external_force(const Body& b, const double g[3], uint32_t i, int k) {
@@ -322,11 +313,42 @@ double World::step_velocity(uint32_t slot, uint32_t i, int k, double h) const {
     return 0.0;
 }
 
+// A body that is big, or that holds more than one thread's share of the tets of all the
+// deformable bodies, runs its node and element loops on the pool, one such body after another.
+// The others run side by side, one body per task, each on one thread: a 6000-tet body has only
+// about 3 element blocks per colour and one node block, too little work per round of the pool
+// to be worth handing out, while sixteen of them keep two threads busy. A lone small body also
+// runs on the pool (there is nothing to put beside it). Either way every loop has the same
+// fixed blocks, so the split changes the speed only, never a bit of the result.
+template <class Work>
+void World::for_each_deformable(const Work& work) {
+    ThreadPool* pool = pool_.get();
+    const uint64_t threads = pool ? pool->size() : 1;
+    uint64_t total = 0;
+    for (const Slot& s : slots_)
+        if (s.body.generation != 0 && s.body.has_mesh() && s.body.is_deformable()) total += s.body.ref.tet_count();
+    side_by_side_.clear();
+    for (uint32_t i = 0; i < slots_.size(); ++i) {
+        const Body& b = slots_[i].body;
+        if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;
+        const uint64_t tets = b.ref.tet_count();
+        if (tets >= 32 * 1024 || tets * threads > total) work(i, pool);
+        else side_by_side_.push_back(i);
+    }
+    if (side_by_side_.size() == 1) {
+        work(side_by_side_[0], pool);
+    } else {
+        parallel_for(pool, uint32_t(side_by_side_.size()),
+                     [&](uint32_t k) { work(side_by_side_[k], nullptr); });
+    }
+}
+
 void World::substep(double h, double& kinetic, double& strain, double& work) {
     // kinetic, strain: of the new state; work: what gravity, forces, supports and contacts
     // did over the step (added to `work`).
-    SubstepTally tally;
     scratch_.resize(slots_.size());
+    // Per body, added up in slot order below (the bodies may run side by side).
+    tallies_.assign(slots_.size(), SubstepTally{});
     profile_.substeps += 1;
     uint64_t kinematic = 0;
     PhaseTimer predictor_timer(profile_.predictor, 0);
@@ -335,9 +357,7 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_geometry()) continue;
         predicted += b.is_dynamic();
-        if (b.is_deformable()) {
-            predict_positions(b, def_.gravity, h, scratch_[i], pool_.get());
-        } else if (b.is_rigid()) {
+        if (b.is_rigid()) {
             scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
             scratch_[i].support_torque[0] = b.state.center[0];  // the centre at the start
             scratch_[i].support_torque[1] = b.state.center[1];
@@ -347,6 +367,9 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         }
         kinematic += b.def.type == LFEM_BODY_KINEMATIC;
     }
+    for_each_deformable([&](uint32_t i, ThreadPool* pool) {
+        predict_positions(slots_[i].body, def_.gravity, h, scratch_[i], pool);
+    });
     predictor_timer.set_calls(predicted);
     predictor_timer.stop();
     if (kinematic > 0) {
@@ -361,9 +384,9 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
     }
     // Static bodies: nothing to do.
     solve_contacts(h);
-    std::vector<uint8_t> touched(slots_.size(), 0);
+    touched_.assign(slots_.size(), 0);
     for (const ContactRecord& r : contacts_)
-        if (r.active()) touched[r.body_a] = touched[r.body_b] = 1;
+        if (r.active()) touched_[r.body_a] = touched_[r.body_b] = 1;
     // Commit every moving body; then eq. (2) and the re-fit for "paper" bodies; then the
     // elastic forces at x^{n+1} (they need the re-fitted rotation).
     uint64_t committed = 0, paper = 0;
@@ -372,10 +395,9 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
         Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_mesh()) continue;
         committed += b.is_dynamic();
-        if (b.is_deformable()) {
-            commit_step(b, def_.gravity, h, scratch_[i], touched[i] != 0, tally, pool_.get());
-            paper += b.def.model == LFEM_MODEL_PAPER;
-        } else if (b.is_rigid()) {
+        paper += b.is_deformable() && b.def.model == LFEM_MODEL_PAPER;
+        if (b.is_rigid()) {
+            SubstepTally& tally = tallies_[i];
             tally.contact_work += commit_rigid(b, h, rigid_responses_[i]);
             // Work of gravity and node forces on the moving centre (node forces' torques act
             // through eq. 2; their work is booked with the translation only).
@@ -388,23 +410,34 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
                 b.state.v_half[k] = (b.state.x[k] - scratch_[i].x_start[k]) / h;
         }
     }
+    for_each_deformable([&](uint32_t i, ThreadPool* pool) {
+        commit_step(slots_[i].body, def_.gravity, h, scratch_[i], touched_[i] != 0, tallies_[i], pool);
+    });
     commit_timer.set_calls(committed);
     commit_timer.stop();
     if (paper > 0) {
         PhaseTimer timer(profile_.global_rotation, paper);
-        for (uint32_t i = 0; i < slots_.size(); ++i) {
+        for_each_deformable([&](uint32_t i, ThreadPool* pool) {
             Body& b = slots_[i].body;
-            if (b.generation == 0 || !b.has_mesh() || !b.is_deformable() || b.def.model != LFEM_MODEL_PAPER)
-                continue;
-            update_global_rotation(b, h, scratch_[i], tally, pool_.get());
-        }
+            if (b.def.model == LFEM_MODEL_PAPER) update_global_rotation(b, h, scratch_[i], tallies_[i], pool);
+        });
     }
     PhaseTimer elastic_timer(profile_.internal_forces, 0);
     uint64_t deformable = 0;
-    for (uint32_t i = 0; i < slots_.size(); ++i) {
+    for_each_deformable([&](uint32_t i, ThreadPool* pool) {
         Body& b = slots_[i].body;
+        compute_elastic_forces(b, b.state, pool);
+    });
+    SubstepTally tally;
+    for (uint32_t i = 0; i < slots_.size(); ++i) {
+        const Body& b = slots_[i].body;
+        const SubstepTally& t = tallies_[i];
+        tally.kinetic += t.kinetic;
+        tally.work += t.work;
+        tally.contact_work += t.contact_work;
+        tally.damping += t.damping;
+        tally.drift = std::max(tally.drift, t.drift);
         if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;
-        compute_elastic_forces(b, b.state, pool_.get());
         strain += b.state.strain_energy;
         deformable += 1;
     }

@@ -36,6 +36,15 @@ struct WorldCounters {
     bool scan_overlaps = false;      // bodies were added: look for initial overlaps once
 };
 
+// What a sub-step adds to the world's energy bookkeeping (per body, then summed).
+struct SubstepTally {
+    double kinetic = 0;       // J, of the new mid-step velocities
+    double work = 0;          // J, of gravity, node forces and supports over the step
+    double contact_work = 0;  // J, of the contact forces on moving nodes (<= 0 when passive)
+    double damping = 0;       // J, removed by damping over the step
+    double drift = 0;         // rad, eq. (2) rotation against the re-fitted one
+};
+
 class World {
 public:
     // Starts def.thread_count - 1 worker threads (joined by the destructor).
@@ -114,6 +123,11 @@ private:
         double center_start[3] = {0, 0, 0};  // "paper": centre of mass at the step's start
     };
     void substep(double h, double& kinetic, double& strain, double& work);
+    // Calls work(slot, pool) for every deformable body with a mesh: big bodies one after
+    // another with the pool for their own loops, the others side by side on the pool with
+    // none (step.cpp). Each call may write only that body's state, scratch and tally.
+    template <class Work>
+    void for_each_deformable(const Work& work);
     void solve_contacts(double h);
     double step_velocity(uint32_t slot, uint32_t node, int axis, double h) const;
 
@@ -124,6 +138,9 @@ private:
     lfem_profile profile_{};
     std::vector<ContactRecord> contacts_;
     std::vector<StepScratch> scratch_;
+    std::vector<SubstepTally> tallies_;      // per slot, this sub-step's energy bookkeeping
+    std::vector<uint8_t> touched_;           // per slot: in contact this sub-step
+    std::vector<uint32_t> side_by_side_;     // slots of the bodies run one per task
     std::vector<RigidResponse> rigid_responses_;  // per slot, rigid bodies only
     std::vector<ContactBody> contact_bodies_;
     std::vector<uint32_t> contact_body_of_slot_;

@@ -1,6 +1,7 @@
 // The step's parallel loops (element forces by coloured blocks, predictor and commit by node
-// blocks) give results bitwise independent of lfem_world_def.thread_count: every node sums its
-// contributions, and every energy its blocks, in an order fixed by the mesh alone.
+// blocks, or small bodies side by side, one per task) give results bitwise independent of
+// lfem_world_def.thread_count: every node sums its contributions, and every energy its blocks,
+// in an order fixed by the mesh alone.
 #include <cstring>
 
 #include "physics/lfem_test_util.h"
@@ -9,40 +10,51 @@ using namespace lfem_test;
 
 namespace {
 
-// A spinning block of each model dropped onto a plate of the same model lying on a static
-// floor: contact between deformable bodies and with the floor. The plate has enough tets
-// (6 * 20 * 20 * 4 = 9600) and nodes (2205) for many element blocks and colours and for two
-// node blocks, so every parallel loop really splits.
-std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads) {
+// Spinning blocks dropped onto a plate of the given model lying on a static floor: contact
+// with the floor and between the bodies. With one block the plate holds most of the tets and
+// runs its own loops on the pool (and so does the block, the only other body): the plate has
+// enough tets (6 * 20 * 20 * 4 = 9600) and nodes (2205) for many element blocks and colours and
+// for two node blocks, so every parallel loop really splits. With four blocks (3072 tets each)
+// no body holds half of the tets, so on two threads all five bodies are stepped side by side,
+// one per task (on three, the plate again on the pool beside the four).
+std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads, uint32_t blocks) {
     lfem_world_def wd = lfem_world_def_default();
     wd.thread_count = threads;
     wd.contact_iterations = 20;  // a short test: equality, not accuracy, is the point
     World w(wd);
-    Mesh floor_mesh, a, b;
+    Mesh floor_mesh, plate_mesh;
     make_box_mesh(floor_mesh, 0.6, 0.6, 0.05, 2, 2, 1, -0.3, -0.3, -0.05);
     lfem_body_def f = lfem_body_def_default();
     f.young_modulus = 1e7;
     f.friction = 0.4;
     lfem_body_def fixed = f;
     fixed.type = LFEM_BODY_STATIC;
-    const lfem_body floor = add_body(w, fixed, floor_mesh);
+    std::vector<lfem_body> bodies{add_body(w, fixed, floor_mesh)};
     lfem_body_def d = lfem_body_def_default();
     d.model = model;
     d.young_modulus = 3e5;
     d.friction = 0.4;
-    make_box_mesh(b, 0.1, 0.1, 0.02, 20, 20, 4, -0.05, -0.05, 0.0);
-    const lfem_body plate = add_body(w, d, b);
+    make_box_mesh(plate_mesh, 0.1, 0.1, 0.02, 20, 20, 4, -0.05, -0.05, 0.0);
+    bodies.push_back(add_body(w, d, plate_mesh));
     d.angular_velocity[0] = 3.0;
     d.linear_velocity[2] = -1.0;
-    make_box_mesh(a, 0.06, 0.06, 0.06, 8, 8, 8, -0.03, -0.02, 0.021);
-    const lfem_body top = add_body(w, d, a);
+    for (uint32_t k = 0; k < blocks; ++k) {
+        Mesh block;
+        if (blocks == 1) {
+            make_box_mesh(block, 0.06, 0.06, 0.06, 8, 8, 8, -0.03, -0.02, 0.021);
+        } else {  // a 2 x 2 grid of 4 cm blocks, 1 cm apart
+            const double x0 = k % 2 ? 0.005 : -0.045, y0 = k / 2 ? 0.005 : -0.045;
+            make_box_mesh(block, 0.04, 0.04, 0.04, 8, 8, 8, x0, y0, 0.021);
+        }
+        bodies.push_back(add_body(w, d, block));
+    }
     uint32_t most = 0;  // the scene must exercise contact
     for (int i = 0; i < 4; ++i) {
         EXPECT_EQ(lfem_world_step(w, 0.002), LFEM_OK) << lfem_last_error();
         most = std::max(most, stats(w).contact_count);
     }
     EXPECT_GT(most, 100u);
-    std::vector<unsigned char> out = fingerprint(w, {floor, plate, top});
+    std::vector<unsigned char> out = fingerprint(w, bodies);
     size_t count = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);
     std::vector<lfem_contact> c(count);
@@ -58,12 +70,14 @@ std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads) {
 TEST(Threads, OneTwoAndThreeThreadsGiveBitwiseIdenticalResults) {
     for (lfem_model model : {LFEM_MODEL_LINEAR, LFEM_MODEL_PAPER, LFEM_MODEL_NEO_HOOKEAN,
                              LFEM_MODEL_COROTATIONAL}) {
-        const std::vector<unsigned char> one = run_scene(model, 1);
-        for (uint32_t threads : {2u, 3u}) {
-            const std::vector<unsigned char> many = run_scene(model, threads);
-            ASSERT_EQ(one.size(), many.size());
-            EXPECT_EQ(0, std::memcmp(one.data(), many.data(), one.size()))
-                << "model " << model << ", " << threads << " threads";
+        for (uint32_t blocks : {1u, 4u}) {
+            const std::vector<unsigned char> one = run_scene(model, 1, blocks);
+            for (uint32_t threads : {2u, 3u}) {
+                const std::vector<unsigned char> many = run_scene(model, threads, blocks);
+                ASSERT_EQ(one.size(), many.size());
+                EXPECT_EQ(0, std::memcmp(one.data(), many.data(), one.size()))
+                    << "model " << model << ", " << threads << " threads, " << blocks << " block(s)";
+            }
         }
     }
 }
