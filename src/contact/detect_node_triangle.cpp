@@ -431,7 +431,6 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     {
         PhaseTimer timer(profile.broad_phase);
         const uint32_t nb = uint32_t(bodies.size());
-        s.triangle_box.clear();
         s.body_box.resize(nb);
         s.slave_box.resize(nb);
         const auto empty_box = [] {
@@ -449,10 +448,15 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
             return true;
         };
         // Triangle boxes over the whole step, grown by the capture band and the deepest
-        // overlap being recovered; the node paths' boxes.
-        double extent_sum = 0.0;
-        uint32_t extent_count = 0;
-        for (uint32_t bi = 0; bi < nb; ++bi) {
+        // overlap being recovered; the node paths' boxes. Body by body on the pool, each body
+        // writing its own range of triangle_box (from the prefix sums of the triangle
+        // counts) and its own entries; the extents are added up in body order after.
+        s.triangle_begin.resize(nb + 1);
+        s.triangle_begin[0] = 0;
+        for (uint32_t bi = 0; bi < nb; ++bi) s.triangle_begin[bi + 1] = s.triangle_begin[bi] + bodies[bi].triangle_count;
+        s.triangle_box.resize(s.triangle_begin[nb]);
+        s.body_extent.assign(nb, -1.0);
+        parallel_for(pool, nb, [&](uint32_t bi) {
             const ContactBody& b = bodies[bi];
             const double grow = std::max(kCaptureBand * b.edge_length + max_offset,
                                          scan_overlaps ? kInitialDepth * b.edge_length : 0.0);
@@ -468,7 +472,7 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
                     }
                 }
                 for (int k = 0; k < 3; ++k) box.lo[k] -= grow, box.hi[k] += grow;
-                s.triangle_box.push_back(box);
+                s.triangle_box[s.triangle_begin[bi] + t] = box;
                 join(s.body_box[bi], box);
             }
             s.slave_box[bi] = empty_box();
@@ -483,9 +487,13 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
             if (b.triangle_count > 0) {
                 const Aabb& box = s.body_box[bi];
                 const double extent = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
-                if (std::isfinite(extent)) extent_sum += extent, ++extent_count;
+                if (std::isfinite(extent)) s.body_extent[bi] = extent;
             }
-        }
+        });
+        double extent_sum = 0.0;
+        uint32_t extent_count = 0;
+        for (uint32_t bi = 0; bi < nb; ++bi)
+            if (s.body_extent[bi] >= 0.0) extent_sum += s.body_extent[bi], ++extent_count;
         // Pairs of bodies through a hash of the body boxes (cells of the mean body size; a
         // floor much larger than the bodies on it is kept aside and tested directly).
         s.body_grid.build(s.body_box, extent_count > 0 && extent_sum > 0.0 ? extent_sum / extent_count : 1.0);

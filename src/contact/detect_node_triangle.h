@@ -48,6 +48,8 @@ struct DetectionScratch {
     // reach (partner_begin: where each body's list starts, +1 at the end), and per body whether
     // its nodes are tested at all; reached_by: (reached body << 32 | reaching body).
     std::vector<Aabb> triangle_box, body_box, slave_box;
+    std::vector<uint32_t> triangle_begin;  // per body, where its boxes start in triangle_box
+    std::vector<double> body_extent;       // per body, its box's largest extent (-1: none)
     std::vector<uint32_t> partner_begin, partners, shape_bodies;
     std::vector<uint64_t> reached_by;
     std::vector<uint8_t> tested;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "common/thread_pool.h"
 #include "fem/tet_element.h"
 #include "rigid/rigid_body.h"
 
@@ -92,17 +93,110 @@ Vec3 relative_motion(const Pair& q) {
     return r;
 }
 
+// Bodies whose points the solve moves: deformable bodies (their free nodes) and rigid ones.
+bool movable(const ContactBody& b) { return b.inv_mass != nullptr || b.rigid != nullptr; }
+
+// Union-find root of body i (path halving).
+uint32_t root_of(std::vector<uint32_t>& parent, uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+// What one group's solve reports; CPU seconds, so that the solve's wall time can be split
+// between its normal and friction parts however the groups ran.
+struct GroupResult {
+    ContactSolveResult solve;
+    double seconds = 0, friction_seconds = 0;
+};
+
+// Projected Gauss-Seidel over one group's pairs (indices `order`, in list order): the warm
+// start, then sweeps until one moves no point by more than `tolerance`.
+void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, const uint32_t* order,
+                 uint32_t count, uint32_t max_iterations, double tolerance, GroupResult& out) {
+    const auto group_start = std::chrono::steady_clock::now();
+    ContactSolveResult& result = out.solve;
+    // Warm start: the multipliers the records carry in (last step's, for the same node and
+    // body) are applied first, so a resting contact starts converged.
+    for (uint32_t k = 0; k < count; ++k) {
+        const uint32_t j = order[k];
+        ContactRecord& r = records[j];
+        if (!(pairs[j].H > 0.0)) {
+            r.lambda_n = 0.0, r.lambda_t[0] = r.lambda_t[1] = r.lambda_t[2] = 0.0;
+            continue;
+        }
+        const Vec3 n(r.normal);
+        Vec3 lt(r.lambda_t);
+        lt -= n * n.dot(lt);  // the normal may have turned since: keep the tangential part
+        if (pairs[j].mu == 0.0) lt.setZero();
+        for (int d = 0; d < 3; ++d) r.lambda_t[d] = lt[d];
+        apply(pairs[j], r.lambda_n * n + lt);
+    }
+
+    // Each sweep: the normal updates of every pair, then the friction updates of the pairs
+    // that have friction (in the same sweep, as the paper's forward increment asks; split into
+    // two passes so each part's time can be measured on its own).
+    bool any_friction = false;
+    for (uint32_t k = 0; k < count; ++k) {
+        const Pair& q = pairs[order[k]];
+        any_friction = any_friction || (q.mu > 0.0 && q.H > 0.0);
+    }
+    for (uint32_t sweep = 0; sweep < max_iterations; ++sweep) {
+        double largest = 0.0;
+        for (uint32_t k = 0; k < count; ++k) {
+            ContactRecord& r = records[order[k]];
+            Pair& q = pairs[order[k]];
+            if (!(q.H > 0.0)) continue;  // both sides immovable: nothing to solve
+            const Vec3 n(r.normal);
+            // Normal: lambda_n <- max(0, lambda_n - (g - g_target)/H); the clamp is the
+            // paper's tension release.
+            const double g = n.dot(relative_position(q)) + r.offset;
+            const double lambda_n = std::max(0.0, r.lambda_n - g / q.H);
+            largest = std::max(largest, apply(q, (lambda_n - r.lambda_n) * n));
+            r.lambda_n = lambda_n;
+        }
+        if (any_friction) {
+            const auto start = std::chrono::steady_clock::now();
+            for (uint32_t k = 0; k < count; ++k) {
+                ContactRecord& r = records[order[k]];
+                Pair& q = pairs[order[k]];
+                if (!(q.H > 0.0) || q.mu == 0.0) continue;  // frictionless: no tangential work
+                const Vec3 n(r.normal);
+                // Friction: the tangential slip of the node relative to the triangle over the
+                // step, cancelled by the stick trial, then returned onto the Coulomb cone (eq. 7).
+                Vec3 slip = relative_motion(q);
+                slip -= n * n.dot(slip);
+                const Vec3 lt_old(r.lambda_t);
+                Vec3 lt = lt_old - slip / q.H;
+                const double cap = q.mu * r.lambda_n, norm = lt.norm();
+                r.sliding = norm > cap;
+                if (r.sliding) lt *= norm > 0.0 ? cap / norm : 0.0;
+                largest = std::max(largest, apply(q, lt - lt_old));
+                for (int d = 0; d < 3; ++d) r.lambda_t[d] = lt[d];
+            }
+            out.friction_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        }
+        result.iterations = sweep + 1;
+        result.residual = largest;
+        if (largest <= tolerance) break;
+    }
+    for (uint32_t k = 0; k < count; ++k) {
+        ContactRecord& r = records[order[k]];
+        r.gap_after = Vec3(r.normal).dot(relative_position(pairs[order[k]]));
+        result.max_penetration = std::max(result.max_penetration, -(r.gap_after + r.offset));
+    }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - group_start).count();
+}
+
 }  // namespace
 
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
                                              std::vector<ContactRecord>& records,
                                              uint32_t max_iterations, double tolerance,
-                                             lfem_profile& profile) {
-    // The whole solve is timed as the normal part; the friction passes' own time is moved
-    // from it to the friction part at the end.
+                                             lfem_profile& profile, ThreadPool* pool) {
+    // The whole solve is timed as the normal part; the friction passes' share of it is moved
+    // to the friction part at the end.
     const auto solve_start = std::chrono::steady_clock::now();
-    ContactSolveResult result;
     std::vector<Pair> pairs(records.size());
     for (std::size_t j = 0; j < records.size(); ++j) {
         ContactRecord& r = records[j];  // shape contacts lend their surface points
@@ -138,77 +232,63 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         }
         q.mu = pair_friction(a.friction, b.friction);
     }
-    // Warm start: the multipliers the records carry in (last step's, for the same node and
-    // body) are applied first, so a resting contact starts converged.
-    for (std::size_t j = 0; j < records.size(); ++j) {
-        ContactRecord& r = records[j];
-        if (!(pairs[j].H > 0.0)) {
-            r.lambda_n = 0.0, r.lambda_t[0] = r.lambda_t[1] = r.lambda_t[2] = 0.0;
-            continue;
-        }
-        const Vec3 n(r.normal);
-        Vec3 lt(r.lambda_t);
-        lt -= n * n.dot(lt);  // the normal may have turned since: keep the tangential part
-        if (pairs[j].mu == 0.0) lt.setZero();
-        for (int k = 0; k < 3; ++k) r.lambda_t[k] = lt[k];
-        apply(pairs[j], r.lambda_n * n + lt);
-    }
 
-    // Each sweep: the normal updates of every pair, then the friction updates of the pairs
-    // that have friction (in the same sweep, as the paper's forward increment asks; split into
-    // two passes so each part's time can be measured on its own).
-    bool any_friction = false;
-    for (const Pair& q : pairs) any_friction = any_friction || (q.mu > 0.0 && q.H > 0.0);
-    double friction_seconds = 0.0;
-    for (uint32_t sweep = 0; sweep < max_iterations; ++sweep) {
-        double largest = 0.0;
-        for (std::size_t j = 0; j < records.size(); ++j) {
-            ContactRecord& r = records[j];
-            Pair& q = pairs[j];
-            if (!(q.H > 0.0)) continue;  // both sides immovable: nothing to solve
-            const Vec3 n(r.normal);
-            // Normal: lambda_n <- max(0, lambda_n - (g - g_target)/H); the clamp is the
-            // paper's tension release.
-            const double g = n.dot(relative_position(q)) + r.offset;
-            const double lambda_n = std::max(0.0, r.lambda_n - g / q.H);
-            largest = std::max(largest, apply(q, (lambda_n - r.lambda_n) * n));
-            r.lambda_n = lambda_n;
-        }
-        if (any_friction) {
-            const auto start = std::chrono::steady_clock::now();
-            for (std::size_t j = 0; j < records.size(); ++j) {
-                ContactRecord& r = records[j];
-                Pair& q = pairs[j];
-                if (!(q.H > 0.0) || q.mu == 0.0) continue;  // frictionless: no tangential work
-                const Vec3 n(r.normal);
-                // Friction: the tangential slip of the node relative to the triangle over the
-                // step, cancelled by the stick trial, then returned onto the Coulomb cone (eq. 7).
-                Vec3 slip = relative_motion(q);
-                slip -= n * n.dot(slip);
-                const Vec3 lt_old(r.lambda_t);
-                Vec3 lt = lt_old - slip / q.H;
-                const double cap = q.mu * r.lambda_n, norm = lt.norm();
-                r.sliding = norm > cap;
-                if (r.sliding) lt *= norm > 0.0 ? cap / norm : 0.0;
-                largest = std::max(largest, apply(q, lt - lt_old));
-                for (int k = 0; k < 3; ++k) r.lambda_t[k] = lt[k];
-            }
-            friction_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        }
-        result.iterations = sweep + 1;
-        result.residual = largest;
-        if (largest <= tolerance) break;
+    // Groups: pairs that share no movable point cannot affect each other, so each group of
+    // pairs linked through movable bodies is solved on its own, to its own convergence, and
+    // the groups side by side on the pool. Static and kinematic bodies do not link (their
+    // points never move): sixteen cubes on one static floor are sixteen groups. A group's
+    // result does not depend on the others or on the thread count: on one thread the groups
+    // simply run one after another.
+    const uint32_t nb = uint32_t(bodies.size());
+    std::vector<uint32_t> parent(nb);
+    for (uint32_t i = 0; i < nb; ++i) parent[i] = i;
+    for (const ContactRecord& r : records) {
+        const uint32_t a = body_of_slot[r.body_a], b = body_of_slot[r.body_b];
+        if (movable(bodies[a]) && movable(bodies[b])) parent[root_of(parent, a)] = root_of(parent, b);
     }
+    // Group numbers in order of first appearance in the list; a pair's group is that of its
+    // movable body (the node's, or else the triangle's).
+    std::vector<uint32_t> group_of_root(nb, UINT32_MAX), group_of_pair(records.size());
+    uint32_t groups = 0;
+    for (std::size_t j = 0; j < records.size(); ++j) {
+        const uint32_t a = body_of_slot[records[j].body_a], b = body_of_slot[records[j].body_b];
+        const uint32_t root = root_of(parent, movable(bodies[a]) ? a : b);
+        if (group_of_root[root] == UINT32_MAX) group_of_root[root] = groups++;
+        group_of_pair[j] = group_of_root[root];
+    }
+    // The pairs of each group, in list order (a counting sort).
+    std::vector<uint32_t> begin(groups + 1, 0), order(records.size());
+    for (uint32_t g : group_of_pair) ++begin[g + 1];
+    for (uint32_t g = 0; g < groups; ++g) begin[g + 1] += begin[g];
+    {
+        std::vector<uint32_t> next(begin.begin(), begin.end() - 1);
+        for (std::size_t j = 0; j < records.size(); ++j) order[next[group_of_pair[j]]++] = uint32_t(j);
+    }
+    std::vector<GroupResult> results(groups);
+    parallel_for(pool, groups, [&](uint32_t g) {
+        solve_group(records, pairs, order.data() + begin[g], begin[g + 1] - begin[g], max_iterations,
+                    tolerance, results[g]);
+    });
+
+    // Iterations and residual of the slowest group to converge, the deepest penetration.
+    ContactSolveResult result;
+    double seconds = 0.0, friction_seconds = 0.0;
+    bool any_friction = false;
+    for (const GroupResult& g : results) {
+        result.iterations = std::max(result.iterations, g.solve.iterations);
+        result.residual = std::max(result.residual, g.solve.residual);
+        result.max_penetration = std::max(result.max_penetration, g.solve.max_penetration);
+        seconds += g.seconds;
+        friction_seconds += g.friction_seconds;
+        any_friction = any_friction || g.friction_seconds > 0.0;
+    }
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
+    const double friction = seconds > 0.0 ? total * friction_seconds / seconds : 0.0;
     if (any_friction) {
-        profile.friction.seconds += friction_seconds;
+        profile.friction.seconds += friction;
         profile.friction.calls += 1;
     }
-    for (std::size_t j = 0; j < records.size(); ++j) {
-        records[j].gap_after = Vec3(records[j].normal).dot(relative_position(pairs[j]));
-        result.max_penetration = std::max(result.max_penetration, -(records[j].gap_after + records[j].offset));
-    }
-    const std::chrono::duration<double> total = std::chrono::steady_clock::now() - solve_start;
-    profile.normal_solve.seconds += total.count() - friction_seconds;
+    profile.normal_solve.seconds += total - friction;
     profile.normal_solve.calls += 1;
     return result;
 }
