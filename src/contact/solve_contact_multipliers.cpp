@@ -42,6 +42,9 @@ struct PointRef {
             rigid->dtheta += rigid->inv_inertia * arm.cross(d);
             return (position() - before).cwiseAbs().maxCoeff();
         }
+        // An immovable point (static, kinematic or fixed) is not written at all: the contact
+        // groups solved side by side may share it (a static floor's nodes).
+        if (w == 0.0) return 0.0;
         for (int k = 0; k < 3; ++k) x[k] += w * d[k];
         return w * d.cwiseAbs().maxCoeff();
     }
