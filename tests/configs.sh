@@ -38,8 +38,8 @@ for entry in "${configs[@]}"; do
   name=${entry%%|*}
   read -r -a extra <<< "${entry#*|}"
   dir=$base/build-config-$name
-  log=$dir.log
-  mkdir -p "$base"
+  log=$dir/configs.log
+  mkdir -p "$dir"
   echo "== $name: ${extra[*]}"
   ok=1
   {
