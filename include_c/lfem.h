@@ -23,7 +23,7 @@
  *   functions may be called from any thread at any time. A world created with thread_count > 1
  *   owns that many worker threads (created with it, joined by lfem_world_destroy); they work
  *   only inside its lfem_world_step and lfem_body_add_mesh calls, and results do not depend on
- *   their number. Between the short parallel loops of a step they spin for about 30 us before
+ *   their number. Between the short parallel loops of a step they spin for up to 50 us before
  *   sleeping, so a world stepped in a loop keeps its threads' cores busy while it steps.
  */
 #ifndef LFEM_H

@@ -32,7 +32,7 @@ finish() {  # waits for the started jobs; prints their output; returns non-zero 
   wait
   for name in "${jobs[@]}"; do
     echo "sanitizers: $name"
-    cat "$build/$name.out" | tee -a "$log"
+    tee -a "$log" <"$build/$name.out"
     if [ "$(cat "$build/$name.status")" != 0 ]; then
       echo "sanitizers: $name FAILED"
       failed=1

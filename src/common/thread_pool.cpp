@@ -5,6 +5,7 @@
 
 #if LFEM_WITH_THREADS
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -21,8 +22,9 @@ namespace lfem {
 // worker waiting for the next round, the caller waiting for the last task of its round. A step
 // runs many short rounds back to back (a few per phase and body, some of tens of
 // microseconds); waking a sleeping thread takes the kernel several microseconds, often more
-// on a virtual machine, which made two threads slower than one on small bodies. About 30 us.
-constexpr int kSpinRounds = 4096;
+// on a virtual machine, which made two threads slower than one on small bodies. Bounded by the
+// clock, not by a count of pauses: a pause takes 10 to 140 cycles depending on the CPU.
+constexpr std::chrono::microseconds kSpinTime{50};
 
 inline void spin_pause() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -32,14 +34,18 @@ inline void spin_pause() {
 #endif
 }
 
-// Spins until ready() or kSpinRounds pauses have passed; returns ready().
+// Spins until ready() or kSpinTime has passed; returns ready(). The clock is read every 16
+// pauses (a read costs about as much as a few pauses).
 template <class Ready>
 bool spin_until(const Ready& ready) {
-    for (int i = 0; i < kSpinRounds; ++i) {
-        if (ready()) return true;
-        spin_pause();
+    const auto until = std::chrono::steady_clock::now() + kSpinTime;
+    for (;;) {
+        for (int i = 0; i < 16; ++i) {
+            if (ready()) return true;
+            spin_pause();
+        }
+        if (std::chrono::steady_clock::now() >= until) return ready();
     }
-    return ready();
 }
 
 // A loop is a "round". Task indices are claimed from one 64-bit counter that carries the

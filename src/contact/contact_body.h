@@ -30,11 +30,14 @@ struct ContactBody {
     const double* shape_pose_start = nullptr; // 7 per shape, start of the step
 };
 
+// A body whose points contact can move: a deformable one (its free nodes) or a rigid one.
+// Static and kinematic bodies follow their own motion whatever the contacts do.
+inline bool is_movable(const ContactBody& b) { return b.inv_mass != nullptr || b.rigid != nullptr; }
+
 // Two bodies are checked against each other only if each one's category is in the other's
 // mask, and at least one of them can move.
 inline bool bodies_may_touch(const ContactBody& a, const ContactBody& b) {
-    return (a.category & b.mask) != 0 && (b.category & a.mask) != 0 &&
-           (a.inv_mass != nullptr || b.inv_mass != nullptr || a.rigid != nullptr || b.rigid != nullptr);
+    return (a.category & b.mask) != 0 && (b.category & a.mask) != 0 && (is_movable(a) || is_movable(b));
 }
 
 // Friction of a pair: the geometric mean, so a frictionless surface (mu = 0) makes every

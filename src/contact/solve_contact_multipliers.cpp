@@ -96,9 +96,6 @@ Vec3 relative_motion(const Pair& q) {
     return r;
 }
 
-// Bodies whose points the solve moves: deformable bodies (their free nodes) and rigid ones.
-bool movable(const ContactBody& b) { return b.inv_mass != nullptr || b.rigid != nullptr; }
-
 // Union-find root of body i (path halving).
 uint32_t root_of(std::vector<uint32_t>& parent, uint32_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -247,7 +244,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     for (uint32_t i = 0; i < nb; ++i) parent[i] = i;
     for (const ContactRecord& r : records) {
         const uint32_t a = body_of_slot[r.body_a], b = body_of_slot[r.body_b];
-        if (movable(bodies[a]) && movable(bodies[b])) parent[root_of(parent, a)] = root_of(parent, b);
+        if (is_movable(bodies[a]) && is_movable(bodies[b])) parent[root_of(parent, a)] = root_of(parent, b);
     }
     // Group numbers in order of first appearance in the list; a pair's group is that of its
     // movable body (the node's, or else the triangle's).
@@ -255,7 +252,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     uint32_t groups = 0;
     for (std::size_t j = 0; j < records.size(); ++j) {
         const uint32_t a = body_of_slot[records[j].body_a], b = body_of_slot[records[j].body_b];
-        const uint32_t root = root_of(parent, movable(bodies[a]) ? a : b);
+        const uint32_t root = root_of(parent, is_movable(bodies[a]) ? a : b);
         if (group_of_root[root] == UINT32_MAX) group_of_root[root] = groups++;
         group_of_pair[j] = group_of_root[root];
     }

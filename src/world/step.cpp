@@ -320,27 +320,30 @@ double World::step_velocity(uint32_t slot, uint32_t i, int k, double h) const {
 // to be worth handing out, while sixteen of them keep two threads busy. A lone small body also
 // runs on the pool (there is nothing to put beside it). Either way every loop has the same
 // fixed blocks, so the split changes the speed only, never a bit of the result.
-template <class Work>
-void World::for_each_deformable(const Work& work) {
-    ThreadPool* pool = pool_.get();
-    const uint64_t threads = pool ? pool->size() : 1;
+void World::plan_deformable_loops() {
+    const uint64_t threads = pool_ ? pool_->size() : 1;
     uint64_t total = 0;
     for (const Slot& s : slots_)
         if (s.body.generation != 0 && s.body.has_mesh() && s.body.is_deformable()) total += s.body.ref.tet_count();
+    on_pool_.clear();
     side_by_side_.clear();
     for (uint32_t i = 0; i < slots_.size(); ++i) {
         const Body& b = slots_[i].body;
         if (b.generation == 0 || !b.has_mesh() || !b.is_deformable()) continue;
         const uint64_t tets = b.ref.tet_count();
-        if (tets >= 32 * 1024 || tets * threads > total) work(i, pool);
-        else side_by_side_.push_back(i);
+        (tets >= 32 * 1024 || tets * threads > total ? on_pool_ : side_by_side_).push_back(i);
     }
-    if (side_by_side_.size() == 1) {
-        work(side_by_side_[0], pool);
-    } else {
-        parallel_for(pool, uint32_t(side_by_side_.size()),
-                     [&](uint32_t k) { work(side_by_side_[k], nullptr); });
+    if (side_by_side_.size() == 1) {  // nothing to put beside it
+        on_pool_.push_back(side_by_side_[0]);
+        side_by_side_.clear();
     }
+}
+
+template <class Work>
+void World::for_each_deformable(const Work& work) {
+    for (uint32_t i : on_pool_) work(i, pool_.get());
+    parallel_for(pool_.get(), uint32_t(side_by_side_.size()),
+                 [&](uint32_t k) { work(side_by_side_[k], nullptr); });
 }
 
 void World::substep(double h, double& kinetic, double& strain, double& work) {
@@ -349,6 +352,7 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
     scratch_.resize(slots_.size());
     // Per body, added up in slot order below (the bodies may run side by side).
     tallies_.assign(slots_.size(), SubstepTally{});
+    plan_deformable_loops();
     profile_.substeps += 1;
     uint64_t kinematic = 0;
     PhaseTimer predictor_timer(profile_.predictor, 0);

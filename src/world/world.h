@@ -123,9 +123,12 @@ private:
         double center_start[3] = {0, 0, 0};  // "paper": centre of mass at the step's start
     };
     void substep(double h, double& kinetic, double& strain, double& work);
-    // Calls work(slot, pool) for every deformable body with a mesh: big bodies one after
-    // another with the pool for their own loops, the others side by side on the pool with
-    // none (step.cpp). Each call may write only that body's state, scratch and tally.
+    // Sorts the deformable bodies with a mesh into on_pool_ and side_by_side_ (step.cpp),
+    // once per sub-step.
+    void plan_deformable_loops();
+    // Calls work(slot, pool) for every deformable body with a mesh: the on_pool_ bodies one
+    // after another with the pool for their own loops, the side_by_side_ ones side by side on
+    // the pool with none. Each call may write only that body's state, scratch and tally.
     template <class Work>
     void for_each_deformable(const Work& work);
     void solve_contacts(double h);
@@ -140,6 +143,7 @@ private:
     std::vector<StepScratch> scratch_;
     std::vector<SubstepTally> tallies_;      // per slot, this sub-step's energy bookkeeping
     std::vector<uint8_t> touched_;           // per slot: in contact this sub-step
+    std::vector<uint32_t> on_pool_;          // slots of the bodies that run their loops on the pool
     std::vector<uint32_t> side_by_side_;     // slots of the bodies run one per task
     std::vector<RigidResponse> rigid_responses_;  // per slot, rigid bodies only
     std::vector<ContactBody> contact_bodies_;
