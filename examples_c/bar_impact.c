@@ -241,7 +241,7 @@ int main(int argc, char** argv) {
                              (double*)malloc(sizeof(double) * 3 * nodes[1])};
     double* velocity_x[2] = {(double*)malloc(sizeof(double) * nodes[0]),
                              (double*)malloc(sizeof(double) * nodes[1])};
-    size_t contact_capacity = 1024;
+    uint32_t contact_capacity = 1024;
     lfem_contact* contacts = (lfem_contact*)malloc(sizeof(lfem_contact) * contact_capacity);
     FILE* csv = fopen(csv_path, "w");
     if (!time_us || !force_n || !velocities[0] || !velocities[1] || !velocity_x[0] ||
@@ -268,12 +268,12 @@ int main(int argc, char** argv) {
         lfem_world_stats s;
         CHECK(lfem_world_get_stats(world, &s));
         if (s.max_penetration > max_penetration) max_penetration = s.max_penetration;
-        size_t count = 0;
+        uint32_t count = 0;
         CHECK(scene_query_contacts(world, &contacts, &contact_capacity, &count));
         /* The force on bar 2 along +x: its nodes' contact forces, and the opposite of the
          * forces on bar 1's nodes (whose reaction lands on bar 2's triangles). */
         double force = 0;
-        for (size_t c = 0; c < count; ++c)
+        for (uint32_t c = 0; c < count; ++c)
             force += (contacts[c].body_a.index == bars[1].index ? 1.0 : -1.0) * contacts[c].force[0];
         impulse += force * h;
         if (force > 0) {

@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     const double frame = 0.002;
     const int frames = (int)(duration / frame + 0.5);
     lfem_contact* contacts = NULL;
-    size_t capacity = 0;
+    uint32_t capacity = 0;
     double strongest = 0, max_penetration = 0;
     const double t0 = scene_now();
     for (int f = 1; f <= frames; ++f) {
@@ -98,10 +98,10 @@ int main(int argc, char** argv) {
         lfem_world_stats s;
         CHECK(lfem_world_get_stats(world, &s));
         if (s.max_penetration > max_penetration) max_penetration = s.max_penetration;
-        size_t count = 0;
+        uint32_t count = 0;
         CHECK(scene_query_contacts(world, &contacts, &capacity, &count));
         double force = 0; /* the wall's push on the cup, along -x */
-        for (size_t c = 0; c < count; ++c) force -= contacts[c].force[0];
+        for (uint32_t c = 0; c < count; ++c) force -= contacts[c].force[0];
         if (force > strongest) {
             /* Key frame: colour each node by its speed relative to the cup's mean velocity,
              * which is zero for a rigid cup: the struck side lights up, the far side not. */

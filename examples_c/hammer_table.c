@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
     const double frame = 0.005;
     const int frames = (int)(duration / frame + 0.5);
     lfem_contact* contacts = NULL;
-    size_t capacity = 0;
+    uint32_t capacity = 0;
     double strongest = 0, max_penetration = 0;
     const double start = scene_now();
     for (int f = 1; f <= frames; ++f) {
@@ -142,10 +142,10 @@ int main(int argc, char** argv) {
         if (s.max_penetration > max_penetration) max_penetration = s.max_penetration;
         /* The hammer's contact force on the table (its nodes' forces and the reactions on its
          * triangles), for choosing the key frame. */
-        size_t count = 0;
+        uint32_t count = 0;
         CHECK(scene_query_contacts(world, &contacts, &capacity, &count));
         double fz = 0;
-        for (size_t c = 0; c < count; ++c) {
+        for (uint32_t c = 0; c < count; ++c) {
             if (contacts[c].body_a.index == bodies[5].index) fz += contacts[c].force[2];
             if (contacts[c].body_b.index == bodies[5].index) fz -= contacts[c].force[2];
         }

@@ -65,7 +65,7 @@ static inline int scene_sibling_path(const char* pvd_path, const char* name, cha
  * is its size), their number into *count. Returns LFEM_OK, or the failing status
  * (LFEM_OUT_OF_MEMORY when the buffer cannot grow). */
 static inline lfem_status scene_query_contacts(const lfem_world* world, lfem_contact** contacts,
-                                               size_t* capacity, size_t* count) {
+                                               uint32_t* capacity, uint32_t* count) {
     lfem_status status = lfem_world_query_contacts(world, *contacts, *capacity, count);
     if (status != LFEM_BUFFER_TOO_SMALL) return status;
     lfem_contact* grown = (lfem_contact*)realloc(*contacts, sizeof(lfem_contact) * *count);

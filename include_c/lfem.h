@@ -264,7 +264,7 @@ typedef struct lfem_body_def {
     lfem_body_type type;      /* default LFEM_BODY_DEFORMABLE */
     lfem_model model;         /* default LFEM_MODEL_PAPER */
     double young_modulus;     /* Pa, > 0, default 1e6 */
-    double poisson_ratio;     /* in [0, 0.5), default 0.3 */
+    double poisson_ratio;     /* in (-1, 0.5), default 0.3 (negative: auxetic materials) */
     double density;           /* kg/m^3, > 0, default 1000 */
     double damping;           /* 1/s, mass-proportional damping alpha (force -alpha m v), >= 0,
                                  default 0 */
@@ -427,9 +427,10 @@ LFEM_API lfem_shape_def lfem_shape_def_default(void);
 /* Give a static or kinematic body a rigid shape (a body may have several, with or without a
  * tet mesh). Deformable bodies' boundary nodes collide with it. A kinematic body's shapes move
  * with its velocity (about the body's centre: its mesh's centre of mass, or the first shape's
- * centre for a body without mesh). */
+ * centre for a body without mesh). *index (nullable) receives the shape's index on the body,
+ * 0 for its first shape: the `shape` of the contacts that touch it. */
 LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body,
-                                         const lfem_shape_def* def);
+                                         const lfem_shape_def* def, uint32_t* index);
 
 /* ---------------------------------------------------------------------------------------- */
 /* Contacts                                                                                   */
@@ -460,7 +461,7 @@ typedef struct lfem_contact {
  * capacity is 0 (to ask for the count). Contacts are listed in a fixed order (by body_a, then
  * node, then body_b and shape), so repeated runs give the same list. */
 LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
-                                               size_t capacity, size_t* count);
+                                               uint32_t capacity, uint32_t* count);
 
 /* ---------------------------------------------------------------------------------------- */
 /* Meshes: builders and Gmsh import                                                           */

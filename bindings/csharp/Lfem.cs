@@ -156,7 +156,7 @@ namespace Lfem
         public BodyType Type;         // default Deformable
         public Model Model;           // default Paper
         public double YoungModulus;   // Pa, > 0, default 1e6
-        public double PoissonRatio;   // [0, 0.5), default 0.3
+        public double PoissonRatio;   // (-1, 0.5), default 0.3
         public double Density;        // kg/m^3, > 0, default 1000
         public double Damping;        // 1/s, >= 0, default 0
         public double Friction;       // Coulomb coefficient, >= 0, default 0.5
@@ -399,8 +399,9 @@ namespace Lfem
         }
 
         /// <summary>Give a static or kinematic body a rigid shape; points: the convex hull's
-        /// points (local coordinates, m), null for the other shapes.</summary>
-        public void AddShape(Body body, ShapeDef def, Vec3[] points = null)
+        /// points (local coordinates, m), null for the other shapes. Returns the shape's index
+        /// on the body (the Shape of the contacts that touch it).</summary>
+        public uint AddShape(Body body, ShapeDef def, Vec3[] points = null)
         {
             GCHandle pin = default(GCHandle);
             try
@@ -416,7 +417,9 @@ namespace Lfem
                     def.Points = IntPtr.Zero;
                     def.PointCount = 0;
                 }
-                LfemException.Check(Native.lfem_body_add_shape(handle, body, ref def));
+                uint index;
+                LfemException.Check(Native.lfem_body_add_shape(handle, body, ref def, out index));
+                return index;
             }
             finally
             {
@@ -568,10 +571,10 @@ namespace Lfem
         {
             get
             {
-                UIntPtr count;
-                Status s = Native.lfem_world_query_contacts(handle, null, UIntPtr.Zero, out count);
+                uint count;
+                Status s = Native.lfem_world_query_contacts(handle, null, 0, out count);
                 if (s != Status.BufferTooSmall) LfemException.Check(s);
-                return checked((int)count.ToUInt64());
+                return checked((int)count);
             }
         }
 
@@ -580,9 +583,9 @@ namespace Lfem
         public int GetContacts(Contact[] buffer)
         {
             if (buffer == null) throw new ArgumentNullException("buffer");
-            UIntPtr count;
-            LfemException.Check(Native.lfem_world_query_contacts(handle, buffer, new UIntPtr((uint)buffer.Length), out count));
-            return checked((int)count.ToUInt64());
+            uint count;
+            LfemException.Check(Native.lfem_world_query_contacts(handle, buffer, (uint)buffer.Length, out count));
+            return checked((int)count);
         }
 
         public Contact[] GetContacts()
@@ -767,10 +770,10 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_kinematic_velocity(WorldHandle world, Body body, ref Vec3 linear, ref Vec3 angular);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern ShapeDef lfem_shape_def_default();
-        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_shape(WorldHandle world, Body body, ref ShapeDef def);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_shape(WorldHandle world, Body body, ref ShapeDef def, out uint index);
 
-        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(WorldHandle world, [Out] Contact[] contacts, UIntPtr capacity, out UIntPtr count);
-        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(IntPtr world, [Out] Contact[] contacts, UIntPtr capacity, out UIntPtr count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(WorldHandle world, [Out] Contact[] contacts, uint capacity, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(IntPtr world, [Out] Contact[] contacts, uint capacity, out uint count);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_box(ref Vec3 size, [In] uint[] cells, out MeshHandle mesh);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_cylinder(double radius, double height, uint segments, uint rings, uint layers, out MeshHandle mesh);

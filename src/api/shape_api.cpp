@@ -49,7 +49,8 @@ LFEM_API lfem_shape_def lfem_shape_def_default(void) {
     return d;
 }
 
-LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, const lfem_shape_def* def) {
+LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, const lfem_shape_def* def,
+                                         uint32_t* index) {
     return guard(__func__, [&] {
         World& w = world_of(world);
         Body& b = w.body(body);
@@ -94,7 +95,8 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, cons
         }
         const double pose[7] = {d.center[0], d.center[1], d.center[2], q.w() / q.norm(),
                                 q.x() / q.norm(), q.y() / q.norm(), q.z() / q.norm()};
-        w.add_shape(b, shape, pose);
+        const uint32_t added = w.add_shape(b, shape, pose);
+        if (index) *index = added;
     });
 }
 

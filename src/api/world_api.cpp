@@ -158,10 +158,8 @@ LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world) {
     return guard(__func__, [&] { world_of(world).reset_profile(); });
 }
 
-}  // extern "C"
-
-extern "C" LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
-                                                          size_t capacity, size_t* count) {
+LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
+                                               uint32_t capacity, uint32_t* count) {
     return guard(__func__, [&] {
         const World& w = world_of(world);
         require_pointer(count, "count");
@@ -169,7 +167,8 @@ extern "C" LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* worl
         const std::vector<ContactRecord>& contacts = w.contacts();
         std::size_t active = 0;
         for (const ContactRecord& c : contacts) active += c.active();
-        *count = active;
+        require(active <= UINT32_MAX, "more than 2^32 - 1 active contacts");
+        *count = uint32_t(active);
         if (active > capacity)
             throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) +
                                                    " is below the " + std::to_string(active) +
@@ -188,3 +187,5 @@ extern "C" LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* worl
                   [&](const lfem_contact& p, const lfem_contact& q) { return key(p) < key(q); });
     });
 }
+
+}  // extern "C"

@@ -322,7 +322,7 @@ void World::add_triangle_mesh(Body& body, const double* positions, uint32_t node
     counters_.scan_overlaps = true;
 }
 
-void World::add_shape(Body& body, const RigidShape& shape, const double pose[7]) {
+uint32_t World::add_shape(Body& body, const RigidShape& shape, const double pose[7]) {
     RigidShape copy = shape;
     body.shapes.reserve(body.shapes.size() + 1);
     body.state.shape_pose.reserve(body.state.shape_pose.size() + 7);
@@ -331,6 +331,7 @@ void World::add_shape(Body& body, const RigidShape& shape, const double pose[7])
         for (int k = 0; k < 3; ++k) body.state.center[k] = pose[k];  // kinematic pivot
     body.shapes.push_back(std::move(copy));
     body.state.shape_pose.insert(body.state.shape_pose.end(), pose, pose + 7);
+    return uint32_t(body.shapes.size() - 1);
 }
 
 void World::set_velocities(Body& body, const double* v) {

@@ -75,8 +75,9 @@ public:
     // Gives a static or kinematic body a surface of triangles (no tets, no mass), e.g. terrain.
     void add_triangle_mesh(Body& body, const double* positions, uint32_t node_count,
                            const uint32_t* triangles, uint32_t triangle_count);
-    // Gives a static or kinematic body a rigid shape at the given placement (7 doubles).
-    void add_shape(Body& body, const RigidShape& shape, const double pose[7]);
+    // Gives a static or kinematic body a rigid shape at the given placement (7 doubles);
+    // returns its index on the body.
+    uint32_t add_shape(Body& body, const RigidShape& shape, const double pose[7]);
     // Overwrites velocities; the change of kinetic energy is booked as external work.
     void set_velocities(Body& body, const double* v);
 

@@ -217,7 +217,7 @@ TEST(StaleHandles, DestroyingABodyInContactDropsItsContacts) {
     make_box_mesh(cube, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0);
     const lfem_body block = add_body(w, lfem_body_def_default(), cube);
     for (int i = 0; i < 20; ++i) ASSERT_EQ(lfem_world_step(w, 0.002), LFEM_OK) << lfem_last_error();
-    size_t count = 0;  // asked with capacity 0: too small while there are contacts
+    uint32_t count = 0;  // asked with capacity 0: too small while there are contacts
     ASSERT_EQ(lfem_world_query_contacts(w, nullptr, 0, &count), LFEM_BUFFER_TOO_SMALL);
     ASSERT_GT(count, 0u) << "the block must rest on the floor for this test to mean anything";
     ASSERT_EQ(lfem_body_destroy(w, block), LFEM_OK);

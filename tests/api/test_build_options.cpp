@@ -35,17 +35,17 @@ TEST(BuildOptions, ConvexHullsNeedLibccd) {
     hull.type = LFEM_SHAPE_CONVEX_HULL;
     hull.points = pts;
     hull.point_count = 4;
-    const lfem_status s = lfem_body_add_shape(w, ground, &hull);
+    const lfem_status s = lfem_body_add_shape(w, ground, &hull, NULL);
     if (LFEM_WITH_CCD) {
         EXPECT_EQ(s, LFEM_OK) << lfem_last_error();
     } else {
         expect_unsupported(s, "LFEM_WITH_CCD", "add a convex hull");
         // Refused after the argument checks: a bad hull is still an invalid argument.
         hull.point_count = 3;
-        EXPECT_EQ(lfem_body_add_shape(w, ground, &hull), LFEM_INVALID_ARGUMENT);
+        EXPECT_EQ(lfem_body_add_shape(w, ground, &hull, NULL), LFEM_INVALID_ARGUMENT);
         // The closed-form shapes stay.
         const lfem_shape_def plane = lfem_shape_def_default();
-        EXPECT_EQ(lfem_body_add_shape(w, ground, &plane), LFEM_OK) << lfem_last_error();
+        EXPECT_EQ(lfem_body_add_shape(w, ground, &plane, NULL), LFEM_OK) << lfem_last_error();
     }
 }
 

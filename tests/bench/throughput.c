@@ -139,7 +139,7 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
         lfem_body floor_body;
         CHECK(lfem_body_create(w, &fd, &floor_body));
         lfem_shape_def sd = lfem_shape_def_default(); /* plane through 0 facing +z */
-        CHECK(lfem_body_add_shape(w, floor_body, &sd));
+        CHECK(lfem_body_add_shape(w, floor_body, &sd, NULL));
     }
     lfem_body_def bd = lfem_body_def_default();
     bd.model = model;

@@ -34,8 +34,8 @@ two_bar_exact two_bar_exact_solution(void) {
 /* The contact force on bar 2 along +x in the last step: its nodes' multipliers, and the
  * opposite of bar 1's nodes' (whose reaction lands on bar 2's triangles). */
 static int multiplier_force(lfem_world* world, lfem_body bar2, lfem_contact** contacts,
-                            size_t* capacity, double* force) {
-    size_t count = 0;
+                            uint32_t* capacity, double* force) {
+    uint32_t count = 0;
     lfem_status s = lfem_world_query_contacts(world, *contacts, *capacity, &count);
     if (s == LFEM_BUFFER_TOO_SMALL) {
         lfem_contact* grown = (lfem_contact*)realloc(*contacts, sizeof(lfem_contact) * 2 * count);
@@ -49,7 +49,7 @@ static int multiplier_force(lfem_world* world, lfem_body bar2, lfem_contact** co
         return -1;
     }
     double f = 0;
-    for (size_t c = 0; c < count; ++c)
+    for (uint32_t c = 0; c < count; ++c)
         f += ((*contacts)[c].body_a.index == bar2.index ? 1.0 : -1.0) * (*contacts)[c].force[0];
     *force = f;
     return 0;
@@ -59,7 +59,7 @@ int two_bar_run(const two_bar_config* config, two_bar_result* r) {
     const double start_wall = bench_now();
     lfem_world* world = NULL;
     penalty_contact* penalty = NULL;
-    size_t contact_capacity = 256;
+    uint32_t contact_capacity = 256;
     lfem_contact* contacts = (lfem_contact*)malloc(sizeof(lfem_contact) * contact_capacity);
     if (!contacts) return -1;
     *r = (two_bar_result){0};

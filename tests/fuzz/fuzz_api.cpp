@@ -117,9 +117,9 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
         }
         case 5: {
             name = "world_query_contacts";
-            const size_t capacity = in.below(40);
+            const uint32_t capacity = uint32_t(in.below(40));
             std::vector<lfem_contact> out(capacity);
-            size_t count = 0;
+            uint32_t count = 0;
             return lfem_world_query_contacts(w, capacity ? out.data() : nullptr, capacity, &count);
         }
         case 6: {
@@ -166,7 +166,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             for (double& v : points) v = in.number(-0.3, 0.3);
             d.point_count = uint32_t(points.size() / 3);
             d.points = points.empty() ? nullptr : points.data();
-            return lfem_body_add_shape(w, pick_body(s, in), &d);
+            return lfem_body_add_shape(w, pick_body(s, in), &d, NULL);
         }
         case 12: {
             name = "world_set_gravity/time_step";

@@ -54,19 +54,19 @@ TEST(CollisionFilter, QueryReportsTheCountAndRefusesASmallBuffer) {
     make_box_mesh(block_mesh, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0);
     add_body(w, lfem_body_def_default(), block_mesh);
     ASSERT_EQ(lfem_world_step(w, 0.05), LFEM_OK) << lfem_last_error();
-    size_t count = 0;
+    uint32_t count = 0;
     ASSERT_EQ(lfem_world_query_contacts(w, nullptr, 0, &count), LFEM_BUFFER_TOO_SMALL);
     ASSERT_EQ(count, stats(w).contact_count);
     ASSERT_GT(count, 0u);
     std::vector<lfem_contact> c(count - 1);
-    size_t again = 0;
-    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), c.size(), &again), LFEM_BUFFER_TOO_SMALL);
+    uint32_t again = 0;
+    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), uint32_t(c.size()), &again), LFEM_BUFFER_TOO_SMALL);
     EXPECT_EQ(again, count);
     c.resize(count);
-    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), c.size(), &again), LFEM_OK);
+    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), uint32_t(c.size()), &again), LFEM_OK);
     for (const lfem_contact& k : c) {
         EXPECT_EQ(k.shape, UINT32_MAX);  // mesh against mesh
         EXPECT_GT(k.force[2] * (k.body_a.index == 1 ? 1 : -1), 0.0);  // the floor pushes up
     }
-    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), c.size(), nullptr), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), uint32_t(c.size()), nullptr), LFEM_INVALID_ARGUMENT);
 }

@@ -33,7 +33,7 @@ std::vector<unsigned char> run_scene() {
     }
     EXPECT_GT(most, 10u);
     std::vector<unsigned char> out = fingerprint(w, {floor, ba, bb});
-    size_t count = 0;
+    uint32_t count = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);
     std::vector<lfem_contact> c(count);
     lfem_world_query_contacts(w, c.data(), count, &count);

@@ -102,7 +102,7 @@ TEST(Friction, BlockSlidesDownARealThirtyDegreePlane) {
     f.friction = 0.3;
     lfem_body ground{};
     ASSERT_EQ(lfem_body_create(w, &f, &ground), LFEM_OK);
-    ASSERT_EQ(lfem_body_add_shape(w, ground, &plane), LFEM_OK) << lfem_last_error();
+    ASSERT_EQ(lfem_body_add_shape(w, ground, &plane, NULL), LFEM_OK) << lfem_last_error();
     Mesh m;
     make_box_mesh(m, 0.1, 0.1, 0.1, 3, 3, 3, -0.05, -0.05, 0.0);
     const double axis[3] = {0, 1, 0};

@@ -160,7 +160,7 @@ Outcome run(lfem_model model, const Numbered& mesh, const Numbered& base_mesh) {
         std::rotate(b.begin(), std::min_element(b.begin(), b.end()), b.end());  // keeps the turn
         out.boundary.insert(b);
     }
-    size_t count = 0;
+    uint32_t count = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);
     std::vector<lfem_contact> c(count);
     EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);

@@ -151,7 +151,7 @@ TEST(Profile, ClosedFormShapesNeverCallLibccd) {
     lfem_body ground{};
     ASSERT_EQ(lfem_body_create(w, &gd, &ground), LFEM_OK);
     const lfem_shape_def plane = lfem_shape_def_default();
-    ASSERT_EQ(lfem_body_add_shape(w, ground, &plane), LFEM_OK) << lfem_last_error();
+    ASSERT_EQ(lfem_body_add_shape(w, ground, &plane, NULL), LFEM_OK) << lfem_last_error();
     Mesh bm;
     block(w, bm, 0.5);
     run(w, 10);
@@ -174,7 +174,7 @@ TEST(Profile, ConvexHullGoesThroughLibccd) {
     hull.type = LFEM_SHAPE_CONVEX_HULL;
     hull.points = pts;
     hull.point_count = 8;
-    const lfem_status added = lfem_body_add_shape(w, ground, &hull);
+    const lfem_status added = lfem_body_add_shape(w, ground, &hull, NULL);
     if (added == LFEM_UNSUPPORTED) GTEST_SKIP() << "built without libccd (LFEM_WITH_CCD=OFF)";
     ASSERT_EQ(added, LFEM_OK) << lfem_last_error();
     Mesh bm;

@@ -20,7 +20,7 @@ lfem_body add_floor(lfem_world* w, Mesh& mesh, double friction = 0.5) {
 // Sum of the contact forces on body `on` (N): nodes of `on` get the force, triangles of `on`
 // get its opposite.
 void contact_force_on(lfem_world* w, lfem_body on, double out[3]) {
-    size_t count = 0;
+    uint32_t count = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);
     std::vector<lfem_contact> c(count);
     EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
@@ -113,7 +113,7 @@ TEST(RestingContact, StackOfThreeSoftCubesComesToRestWithoutPenetration) {
     contact_force_on(w, bodies[0], f);  // the bottom cube: floor pushes up, cube 2 down
     double floor_force = 0;
     {
-        size_t count = 0;
+        uint32_t count = 0;
         lfem_world_query_contacts(w, nullptr, 0, &count);
         std::vector<lfem_contact> c(count);
         lfem_world_query_contacts(w, c.data(), count, &count);

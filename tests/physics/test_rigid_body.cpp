@@ -71,7 +71,7 @@ TEST(RigidBody, BoxDroppedOnASoftSlabExchangesMomentumWithoutPenetration) {
     uint32_t most = 0, iterations = 0;
     for (int i = 0; i < 600; ++i) {
         ASSERT_EQ(lfem_world_step(w, h), LFEM_OK) << lfem_last_error();
-        size_t count = 0;
+        uint32_t count = 0;
         lfem_world_query_contacts(w, nullptr, 0, &count);
         std::vector<lfem_contact> c(count);
         lfem_world_query_contacts(w, c.data(), count, &count);

@@ -13,12 +13,12 @@ lfem_body shape_body(lfem_world* w, const lfem_shape_def& s, lfem_body_type type
     d.type = type;
     lfem_body b{};
     EXPECT_EQ(lfem_body_create(w, &d, &b), LFEM_OK) << lfem_last_error();
-    EXPECT_EQ(lfem_body_add_shape(w, b, &s), LFEM_OK) << lfem_last_error();
+    EXPECT_EQ(lfem_body_add_shape(w, b, &s, NULL), LFEM_OK) << lfem_last_error();
     return b;
 }
 
 double vertical_contact_force(lfem_world* w, lfem_body on) {
-    size_t count = 0;
+    uint32_t count = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);
     std::vector<lfem_contact> c(count);
     EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
@@ -125,7 +125,7 @@ TEST(Shapes, KinematicPlaneCarriesABlockAlong) {
     fd.friction = 0.8;
     lfem_body floor{};
     ASSERT_EQ(lfem_body_create(w, &fd, &floor), LFEM_OK);
-    ASSERT_EQ(lfem_body_add_shape(w, floor, &plane), LFEM_OK) << lfem_last_error();
+    ASSERT_EQ(lfem_body_add_shape(w, floor, &plane, NULL), LFEM_OK) << lfem_last_error();
     Mesh m;
     make_box_mesh(m, 0.1, 0.1, 0.1, 3, 3, 3, -0.05, -0.05, 0.0);
     lfem_body_def d = lfem_body_def_default();
@@ -153,23 +153,23 @@ TEST(Shapes, BadShapesAreRefused) {
     dd.type = LFEM_BODY_STATIC;
     ASSERT_EQ(lfem_body_create(w, &dd, &ground), LFEM_OK);
     lfem_shape_def s = lfem_shape_def_default();
-    EXPECT_EQ(lfem_body_add_shape(w, soft, &s), LFEM_INVALID_ARGUMENT);  // deformable body
+    EXPECT_EQ(lfem_body_add_shape(w, soft, &s, NULL), LFEM_INVALID_ARGUMENT);  // deformable body
     s.type = LFEM_SHAPE_SPHERE;
     s.radius = 0.0;
-    EXPECT_EQ(lfem_body_add_shape(w, ground, &s), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_add_shape(w, ground, &s, NULL), LFEM_INVALID_ARGUMENT);
     s = lfem_shape_def_default();
     s.rotation[0] = 2.0;
-    EXPECT_EQ(lfem_body_add_shape(w, ground, &s), LFEM_INVALID_ARGUMENT);  // not a unit quaternion
+    EXPECT_EQ(lfem_body_add_shape(w, ground, &s, NULL), LFEM_INVALID_ARGUMENT);  // not a unit quaternion
     const double flat[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
     s = lfem_shape_def_default();
     s.type = LFEM_SHAPE_CONVEX_HULL;
     s.points = flat;
     s.point_count = 4;
-    EXPECT_EQ(lfem_body_add_shape(w, ground, &s), LFEM_INVALID_ARGUMENT);  // coplanar
+    EXPECT_EQ(lfem_body_add_shape(w, ground, &s, NULL), LFEM_INVALID_ARGUMENT);  // coplanar
     EXPECT_NE(std::string(lfem_last_error()).find("coplanar"), std::string::npos);
     s.type = lfem_shape_type(42);
-    EXPECT_EQ(lfem_body_add_shape(w, ground, &s), LFEM_INVALID_ARGUMENT);
-    EXPECT_EQ(lfem_body_add_shape(w, ground, nullptr), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_add_shape(w, ground, &s, NULL), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_add_shape(w, ground, nullptr, NULL), LFEM_INVALID_ARGUMENT);
 }
 
 TEST(Shapes, BlockRestsOnAStaticTriangleMesh) {
@@ -191,7 +191,7 @@ TEST(Shapes, BlockRestsOnAStaticTriangleMesh) {
     double mass = 0;
     lfem_body_get_mass(w, block, &mass);
     ASSERT_EQ(lfem_world_step(w, 1.2), LFEM_OK) << lfem_last_error();
-    size_t count = 0;
+    uint32_t count = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);
     std::vector<lfem_contact> c(count);
     ASSERT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);

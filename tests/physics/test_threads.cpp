@@ -59,7 +59,7 @@ std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads, uint32_
     }
     EXPECT_GT(most, 100u);
     std::vector<unsigned char> out = fingerprint(w, bodies);
-    size_t count = 0;
+    uint32_t count = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);
     std::vector<lfem_contact> c(count);
     lfem_world_query_contacts(w, c.data(), count, &count);

@@ -59,7 +59,7 @@ Impact run(uint32_t nx, uint32_t ny, double nu) {
         EXPECT_EQ(lfem_world_step(w, h), LFEM_OK) << lfem_last_error();
         const lfem_world_stats s = stats(w);
         r.max_penetration = std::fmax(r.max_penetration, s.max_penetration);
-        size_t count = 0;
+        uint32_t count = 0;
         lfem_world_query_contacts(w, nullptr, 0, &count);
         contacts.resize(count);
         EXPECT_EQ(lfem_world_query_contacts(w, contacts.data(), count, &count), LFEM_OK);

@@ -28,7 +28,7 @@ struct RobustnessScene {
         sphere.type = LFEM_SHAPE_SPHERE;
         sphere.radius = 0.05;
         sphere.center[0] = 0.2;
-        EXPECT_EQ(lfem_body_add_shape(w, bodies[0], &sphere), LFEM_OK) << lfem_last_error();
+        EXPECT_EQ(lfem_body_add_shape(w, bodies[0], &sphere, NULL), LFEM_OK) << lfem_last_error();
 
         lfem_body_def k = lfem_body_def_default();
         k.type = LFEM_BODY_KINEMATIC;

@@ -56,7 +56,7 @@ TEST(Checkpoint, ContinuedRunIsBitwiseIdentical) {
         ASSERT_EQ(lfem_world_step(loaded, 0.0037), LFEM_OK) << lfem_last_error();
     }
     EXPECT_EQ(original.state(), fingerprint(loaded, original.bodies));
-    size_t n1 = 0, n2 = 0;
+    uint32_t n1 = 0, n2 = 0;
     lfem_world_query_contacts(original.w, nullptr, 0, &n1);
     lfem_world_query_contacts(loaded, nullptr, 0, &n2);
     ASSERT_EQ(n1, n2);

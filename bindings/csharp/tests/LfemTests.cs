@@ -322,8 +322,8 @@ public static class LfemTests
         Equal(Status.InvalidArgument, Native.lfem_world_step(IntPtr.Zero, 0.01), "step(NULL)");
         Check(Library.LastError.StartsWith("lfem_world_step"), "last error: " + Library.LastError);
         Equal(Status.InvalidArgument, Native.lfem_world_create(IntPtr.Zero, IntPtr.Zero), "create(NULL, NULL)");
-        UIntPtr count;
-        Equal(Status.InvalidArgument, Native.lfem_world_query_contacts(IntPtr.Zero, null, UIntPtr.Zero, out count), "query(NULL)");
+        uint count;
+        Equal(Status.InvalidArgument, Native.lfem_world_query_contacts(IntPtr.Zero, null, 0, out count), "query(NULL)");
     }
 
     public static void TestDestroyedAndForeignHandlesAreRefused()

@@ -207,7 +207,7 @@ class BodyDef(ctypes.Structure):
         ("type", _enum),                      # BodyType, default DEFORMABLE
         ("model", _enum),                     # Model, default PAPER
         ("young_modulus", ctypes.c_double),   # Pa, default 1e6
-        ("poisson_ratio", ctypes.c_double),   # [0, 0.5), default 0.3
+        ("poisson_ratio", ctypes.c_double),   # (-1, 0.5), default 0.3
         ("density", ctypes.c_double),         # kg/m^3, default 1000
         ("damping", ctypes.c_double),         # 1/s, default 0
         ("friction", ctypes.c_double),        # default 0.5
@@ -378,9 +378,9 @@ _declare("lfem_body_clear_node_forces", _st, _vp, Body)
 _declare("lfem_body_set_kinematic_velocity", _st, _vp, Body, _dp, _dp)
 
 _declare("lfem_shape_def_default", ShapeDef)
-_declare("lfem_body_add_shape", _st, _vp, Body, _p(ShapeDef))
+_declare("lfem_body_add_shape", _st, _vp, Body, _p(ShapeDef), _p(ctypes.c_uint32))
 
-_declare("lfem_world_query_contacts", _st, _vp, _vp, ctypes.c_size_t, _p(ctypes.c_size_t))
+_declare("lfem_world_query_contacts", _st, _vp, _vp, _u32, _p(ctypes.c_uint32))
 
 _declare("lfem_mesh_create_box", _st, _dp, _up, _p(_vp))
 _declare("lfem_mesh_create_cylinder", _st, _dbl, _dbl, _u32, _u32, _u32, _p(_vp))
@@ -582,7 +582,8 @@ class World:
 
     def add_shape(self, body, definition=None, points=None):
         """Give a static or kinematic body a rigid shape (ShapeDef, default a plane z = 0);
-        points: the convex hull's (n, 3) local coordinates (m), None for the other shapes."""
+        points: the convex hull's (n, 3) local coordinates (m), None for the other shapes.
+        Returns the shape's index on the body (the `shape` of the contacts that touch it)."""
         d = ShapeDef.default() if definition is None else ShapeDef.from_buffer_copy(definition)
         keep = None
         if points is not None:
@@ -592,8 +593,10 @@ class World:
         else:
             d.points = None
             d.point_count = 0
-        _lib.lfem_body_add_shape(self.handle, body, ctypes.byref(d))
+        index = ctypes.c_uint32()
+        _lib.lfem_body_add_shape(self.handle, body, ctypes.byref(d), ctypes.byref(index))
         del keep
+        return index.value
 
     def mass(self, body):
         """Total mass (kg) of a body: the sum of its lumped node masses, rho V."""
@@ -709,7 +712,7 @@ class World:
 
     def contact_count(self):
         """The number of active contacts of the last step."""
-        count = ctypes.c_size_t()
+        count = ctypes.c_uint32()
         try:
             _lib.lfem_world_query_contacts(self.handle, None, 0, ctypes.byref(count))
         except LfemError as e:
@@ -728,9 +731,9 @@ class World:
               or not out.flags.c_contiguous or not out.flags.writeable):
             raise LfemError(Status.INVALID_ARGUMENT,
                             "lfem (Python): out must be a writeable 1-d array of CONTACT_DTYPE")
-        count = ctypes.c_size_t()
+        count = ctypes.c_uint32()
         _lib.lfem_world_query_contacts(self.handle, out.ctypes.data if out.size else None,
-                                       out.size, ctypes.byref(count))
+                                       min(out.size, 0xFFFFFFFF), ctypes.byref(count))
         return out[:count.value]
 
 

@@ -41,7 +41,7 @@ bench_result bench_run_lfem(const bench_scene* s, lfem_profile* profile) {
     floor_def.friction = s->friction;
     BENCH_TRY(lfem_body_create(w, &floor_def, &floor_body));
     plane.type = LFEM_SHAPE_PLANE;
-    BENCH_TRY(lfem_body_add_shape(w, floor_body, &plane));
+    BENCH_TRY(lfem_body_add_shape(w, floor_body, &plane, NULL));
 
     cube_def.model = LFEM_MODEL_NEO_HOOKEAN;
     cube_def.young_modulus = s->young_modulus;

@@ -342,14 +342,19 @@ extern "C" {
 
     // rigid shapes
     pub fn lfem_shape_def_default() -> lfem_shape_def;
-    pub fn lfem_body_add_shape(world: *mut lfem_world, body: lfem_body, def: *const lfem_shape_def) -> lfem_status;
+    pub fn lfem_body_add_shape(
+        world: *mut lfem_world,
+        body: lfem_body,
+        def: *const lfem_shape_def,
+        index: *mut u32,
+    ) -> lfem_status;
 
     // contacts
     pub fn lfem_world_query_contacts(
         world: *const lfem_world,
         out: *mut lfem_contact,
-        capacity: usize,
-        count: *mut usize,
+        capacity: u32,
+        count: *mut u32,
     ) -> lfem_status;
 
     // meshes

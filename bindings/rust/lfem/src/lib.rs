@@ -286,7 +286,7 @@ pub struct BodyDef {
     pub model: Model,
     /// Pa, > 0, default 1e6.
     pub young_modulus: f64,
-    /// In [0, 0.5), default 0.3.
+    /// In (-1, 0.5), default 0.3.
     pub poisson_ratio: f64,
     /// kg/m^3, > 0, default 1000.
     pub density: f64,
@@ -683,8 +683,9 @@ impl World {
         })
     }
 
-    /// Give a static or kinematic body a rigid shape.
-    pub fn add_shape(&mut self, body: Body, def: &ShapeDef) -> Result<()> {
+    /// Give a static or kinematic body a rigid shape; returns its index on the body (the
+    /// `shape` of the contacts that touch it).
+    pub fn add_shape(&mut self, body: Body, def: &ShapeDef) -> Result<u32> {
         let raw = sys::lfem_shape_def {
             type_: match def.shape_type {
                 ShapeType::Plane => sys::LFEM_SHAPE_PLANE,
@@ -704,7 +705,9 @@ impl World {
             padding: 0,
         };
         // SAFETY: live world; raw.points holds 3*point_count doubles (copied by lfem).
-        check(unsafe { sys::lfem_body_add_shape(self.ptr_mut(), body.raw(), &raw) })
+        let mut index = 0u32;
+        check(unsafe { sys::lfem_body_add_shape(self.ptr_mut(), body.raw(), &raw, &mut index) })?;
+        Ok(index)
     }
 
     /// Total mass (kg) of a body: the sum of its lumped node masses, rho V.
@@ -896,24 +899,26 @@ impl World {
 
     /// The number of active contacts of the last step.
     pub fn contact_count(&self) -> Result<usize> {
-        let mut count = 0usize;
+        let mut count = 0u32;
         // SAFETY: capacity 0 with a null out asks for the count.
         let status = unsafe { sys::lfem_world_query_contacts(self.ptr(), ptr::null_mut(), 0, &mut count) };
         if status != sys::LFEM_BUFFER_TOO_SMALL {
             check(status)?;
         }
-        Ok(count)
+        Ok(count as usize)
     }
 
     /// Copy the active contacts into the front of `out`; returns how many. When `out` is too
     /// short: `Status::BufferTooSmall` and nothing copied (ask [`World::contact_count`]).
     pub fn contacts_into(&self, out: &mut [Contact]) -> Result<usize> {
-        let mut count = 0usize;
-        // SAFETY: Contact has the layout of lfem_contact; out holds out.len() of them.
+        let mut count = 0u32;
+        // A capacity beyond u32 is as good as u32::MAX (lfem counts contacts in u32).
+        let capacity = out.len().min(u32::MAX as usize) as u32;
+        // SAFETY: Contact has the layout of lfem_contact; out holds at least capacity of them.
         check(unsafe {
-            sys::lfem_world_query_contacts(self.ptr(), out.as_mut_ptr() as *mut sys::lfem_contact, out.len(), &mut count)
+            sys::lfem_world_query_contacts(self.ptr(), out.as_mut_ptr() as *mut sys::lfem_contact, capacity, &mut count)
         })?;
-        Ok(count)
+        Ok(count as usize)
     }
 
     /// The active contacts of the last step, in lfem's fixed order.
