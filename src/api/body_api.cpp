@@ -10,7 +10,6 @@
 #include "api/definitions.h"
 #include "api/handles.h"
 #include "fem/internal_forces.h"
-#include "fem/tet_element.h"
 
 using namespace lfem;
 using namespace lfem::api;
@@ -64,6 +63,14 @@ void require_deformable(const Body& b, const char* what) {
     require(b.is_deformable(), std::string(what) + " needs a deformable body");
 }
 
+// A checked list of the caller's node indices in the body's internal numbering.
+std::vector<uint32_t> internal_nodes(const Body& b, const uint32_t* nodes, uint32_t count) {
+    check_node_list(b, nodes, count);
+    std::vector<uint32_t> internal(count);
+    for (uint32_t i = 0; i < count; ++i) internal[i] = b.ref.numbering.node(nodes[i]);
+    return internal;
+}
+
 }  // namespace
 
 extern "C" {
@@ -106,13 +113,13 @@ LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body, const
                                         uint32_t node_count, const uint32_t* tets, uint32_t tet_count) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        Body& b = w.body(body);
+        w.body(body);  // the handle first
         require_pointer(positions, "positions");
         require_pointer(tets, "tets");
         require(node_count >= 4, "node_count must be >= 4");
         require(tet_count >= 1, "tet_count must be >= 1");
         require_finite(positions, 3 * std::size_t(node_count), "positions");
-        w.add_mesh(b, positions, node_count, tets, tet_count);
+        w.add_mesh(body, positions, node_count, tets, tet_count);
     });
 }
 
@@ -121,13 +128,13 @@ LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body bo
                                                  uint32_t triangle_count) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        Body& b = w.body(body);
+        w.body(body);  // the handle first
         require_pointer(positions, "positions");
         require_pointer(triangles, "triangles");
         require(node_count >= 3, "node_count must be >= 3");
         require(triangle_count >= 1, "triangle_count must be >= 1");
         require_finite(positions, 3 * std::size_t(node_count), "positions");
-        w.add_triangle_mesh(b, positions, node_count, triangles, triangle_count);
+        w.add_triangle_mesh(body, positions, node_count, triangles, triangle_count);
     });
 }
 
@@ -167,7 +174,7 @@ LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body b
                                             double angular[3]) {
     return guard(__func__, [&] {
         const World& w = world_of(world);
-        double P[3], L[3];
+        Vec3 P, L;
         w.body_momentum(w.body(body), P, L);
         for (int k = 0; k < 3; ++k) {
             if (linear) linear[k] = P[k];
@@ -203,7 +210,7 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
                                               uint32_t node_count) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        Body& b = w.body(body);
+        const Body& b = w.body(body);
         require_deformable(b, "setting node velocities");
         require_pointer(velocities, "velocities");
         require(node_count == b.ref.node_count(),
@@ -212,7 +219,7 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
         require_finite(velocities, 3 * std::size_t(node_count), "velocities");
         std::vector<double> v(b.state.x.size());  // internal order
         b.ref.numbering.nodes_from_api(velocities, node_count, v.data());
-        w.set_velocities(b, v.data());
+        w.set_velocities(body, v.data());
     });
 }
 
@@ -221,7 +228,7 @@ LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* wor
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(body);
         require_pointer(out, "out");
-        *out = uint32_t(b.ref.boundary.size() / 3);
+        *out = b.ref.surface.triangle_count();
     });
 }
 
@@ -230,8 +237,9 @@ LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, l
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(body);
         require_pointer(out, "out");
-        require_capacity(triangle_capacity, uint32_t(b.ref.boundary.size() / 3), "triangle");
-        for (std::size_t j = 0; j < b.ref.boundary.size(); ++j) out[j] = b.ref.numbering.api_node(b.ref.boundary[j]);
+        const std::vector<uint32_t>& triangles = b.ref.surface.triangles;
+        require_capacity(triangle_capacity, b.ref.surface.triangle_count(), "triangle");
+        for (std::size_t j = 0; j < triangles.size(); ++j) out[j] = b.ref.numbering.api_node(triangles[j]);
     });
 }
 
@@ -243,7 +251,8 @@ LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfe
         require_capacity(tet_capacity, b.ref.tet_count(), "tet");
         if (b.is_deformable()) {
             std::vector<double> stress(b.ref.tet_count());  // all or nothing for out
-            compute_von_mises(b, b.state, stress.data());
+            compute_von_mises(element_mesh(b.ref), material_of(b), b.state.x.data(), b.state.tet_rotation.data(),
+                              b.state.global.rotation, stress.data());
             b.ref.numbering.tets_to_api(stress.data(), b.ref.tet_count(), out);
         } else {
             std::fill(out, out + b.ref.tet_count(), 0.0);  // rigid: no strain is modelled
@@ -255,11 +264,9 @@ LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body b
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(body);
         require_pointer(out, "out");
-        const double* q = b.state.rotation;
-        const Mat3 R = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
+        const Mat3 R = load_quaternion(b.state.global.rotation).toRotationMatrix();
         for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c)
-                out[3 * r + c] = (b.is_rigid() || (b.is_deformable() && b.def.model == LFEM_MODEL_PAPER)) ? R(r, c) : (r == c);
+            for (int c = 0; c < 3; ++c) out[3 * r + c] = (b.is_rigid() || b.is_paper()) ? R(r, c) : (r == c);
     });
 }
 
@@ -299,10 +306,11 @@ LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_b
 LFEM_API lfem_status lfem_body_fix_nodes(lfem_world* world, lfem_body body, const uint32_t* nodes,
                                          uint32_t count) {
     return guard(__func__, [&] {
-        Body& b = world_of(world).body(body);
+        World& w = world_of(world);
+        const Body& b = w.body(body);
         require_deformable(b, "fixing nodes");
-        check_node_list(b, nodes, count);
-        for (uint32_t i = 0; i < count; ++i) b.node_mode[b.ref.numbering.node(nodes[i])] = NodeMode::fixed;
+        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
+        w.set_node_mode(body, internal.data(), count, NodeMode::fixed);
     });
 }
 
@@ -310,64 +318,58 @@ LFEM_API lfem_status lfem_body_prescribe_node_velocity(lfem_world* world, lfem_b
                                                        const uint32_t* nodes, uint32_t count,
                                                        const double velocity[3]) {
     return guard(__func__, [&] {
-        Body& b = world_of(world).body(body);
+        World& w = world_of(world);
+        const Body& b = w.body(body);
         require_deformable(b, "prescribing node velocities");
-        check_node_list(b, nodes, count);
+        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
         require_pointer(velocity, "velocity");
         require_finite(velocity, 3, "velocity");
-        if (b.prescribed_velocity.empty()) b.prescribed_velocity.assign(3 * std::size_t(b.ref.node_count()), 0.0);
-        for (uint32_t i = 0; i < count; ++i) {
-            const uint32_t node = b.ref.numbering.node(nodes[i]);
-            b.node_mode[node] = NodeMode::prescribed;
-            for (int k = 0; k < 3; ++k) b.prescribed_velocity[3 * std::size_t(node) + k] = velocity[k];
-        }
+        w.set_node_mode(body, internal.data(), count, NodeMode::prescribed, velocity);
     });
 }
 
 LFEM_API lfem_status lfem_body_release_nodes(lfem_world* world, lfem_body body, const uint32_t* nodes,
                                              uint32_t count) {
     return guard(__func__, [&] {
-        Body& b = world_of(world).body(body);
+        World& w = world_of(world);
+        const Body& b = w.body(body);
         require_deformable(b, "releasing nodes");
-        check_node_list(b, nodes, count);
-        for (uint32_t i = 0; i < count; ++i) b.node_mode[b.ref.numbering.node(nodes[i])] = NodeMode::free;
+        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
+        w.set_node_mode(body, internal.data(), count, NodeMode::free);
     });
 }
 
 LFEM_API lfem_status lfem_body_set_node_forces(lfem_world* world, lfem_body body, const uint32_t* nodes,
                                                uint32_t count, const double* forces) {
     return guard(__func__, [&] {
-        Body& b = world_of(world).body(body);
+        World& w = world_of(world);
+        const Body& b = w.body(body);
         require_deformable(b, "node forces");
-        check_node_list(b, nodes, count);
+        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
         require(count == 0 || forces != nullptr, "forces is NULL");
         require_finite(forces, 3 * std::size_t(count), "forces");
-        if (b.node_force.empty()) b.node_force.assign(3 * std::size_t(b.ref.node_count()), 0.0);
-        for (uint32_t i = 0; i < count; ++i)
-            std::copy_n(&forces[3 * std::size_t(i)], 3, &b.node_force[3 * std::size_t(b.ref.numbering.node(nodes[i]))]);
+        w.set_node_forces(body, internal.data(), count, forces);
     });
 }
 
 LFEM_API lfem_status lfem_body_clear_node_forces(lfem_world* world, lfem_body body) {
     return guard(__func__, [&] {
-        Body& b = world_of(world).body(body);
-        std::vector<double>().swap(b.node_force);  // unused features hold no memory
+        World& w = world_of(world);
+        w.body(body);
+        w.clear_node_forces(body);
     });
 }
 
 LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_body body,
                                                       const double linear[3], const double angular[3]) {
     return guard(__func__, [&] {
-        Body& b = world_of(world).body(body);
-        require(b.def.type == LFEM_BODY_KINEMATIC, "the body is not kinematic");
+        World& w = world_of(world);
+        require(w.body(body).is_kinematic(), "the body is not kinematic");
         require_pointer(linear, "linear");
         require_pointer(angular, "angular");
         require_finite(linear, 3, "linear");
         require_finite(angular, 3, "angular");
-        for (int k = 0; k < 3; ++k) {
-            b.def.linear_velocity[k] = linear[k];
-            b.def.angular_velocity[k] = angular[k];
-        }
+        w.set_kinematic_velocity(body, linear, angular);
     });
 }
 

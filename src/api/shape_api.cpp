@@ -53,7 +53,7 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, cons
                                          uint32_t* index) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        Body& b = w.body(body);
+        const Body& b = w.body(body);
         require_pointer(def, "def");
         const lfem_shape_def& d = *def;
         require(d.internal_value == shape_def_cookie, "def was not initialised by lfem_shape_def_default()");
@@ -61,7 +61,7 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, cons
                 "rigid shapes belong to static or kinematic bodies");
         require_finite(d.center, 3, "def->center");
         require_finite(d.rotation, 4, "def->rotation");
-        const Eigen::Quaterniond q(d.rotation[0], d.rotation[1], d.rotation[2], d.rotation[3]);
+        const Quat q = load_quaternion(d.rotation);
         require(std::fabs(q.norm() - 1.0) < 1e-6, "def->rotation must be a unit quaternion (w, x, y, z)");
         RigidShape shape;
         shape.type = d.type;
@@ -95,7 +95,7 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, cons
         }
         const double pose[7] = {d.center[0], d.center[1], d.center[2], q.w() / q.norm(),
                                 q.x() / q.norm(), q.y() / q.norm(), q.z() / q.norm()};
-        const uint32_t added = w.add_shape(b, shape, pose);
+        const uint32_t added = w.add_shape(body, shape, pose);
         if (index) *index = added;
     });
 }

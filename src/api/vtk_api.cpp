@@ -17,34 +17,65 @@ struct lfem_vtk_series {
     explicit lfem_vtk_series(std::string path) : series(std::move(path)) {}
     PvdSeries series;
 };
+
+namespace {
+
+// One body's arrays in the caller's numbering (node_ordering.h), so that point and cell ids
+// match the API's node and tet indices.
+struct FrameArrays {
+    std::vector<double> positions, velocities, stresses;
+    std::vector<uint32_t> tets;
+};
+
+FrameArrays frame_arrays(const World& w, const Body& b) {
+    const Numbering& numbering = b.ref.numbering;
+    const uint32_t n = b.ref.node_count(), t = b.ref.tet_count();
+    FrameArrays out;
+    std::vector<double> internal(b.state.x.size());
+    w.synchronized_velocities(b, internal.data());
+    out.velocities.resize(internal.size());
+    numbering.nodes_to_api(internal.data(), n, out.velocities.data());
+    out.positions.resize(internal.size());
+    numbering.nodes_to_api(b.state.x.data(), n, out.positions.data());
+    std::vector<double> stress(t, 0.0);
+    if (b.is_deformable())
+        compute_von_mises(element_mesh(b.ref), material_of(b), b.state.x.data(), b.state.tet_rotation.data(),
+                          b.state.global.rotation, stress.data());
+    out.stresses.resize(t);
+    numbering.tets_to_api(stress.data(), t, out.stresses.data());
+    out.tets.resize(b.ref.tets.size());
+    numbering.tet_nodes_to_api(b.ref.tets.data(), t, out.tets.data());
+    return out;
+}
+
+void write_frame(PvdSeries& series, const World& w) {
+    std::vector<FrameArrays> arrays;  // live until the frame is written
+    std::vector<VtkPiece> pieces;
+    w.bodies().for_each([&](const Body& b, uint32_t index) {
+        if (!b.has_mesh()) return;
+        arrays.push_back(frame_arrays(w, b));
+        VtkPiece p;
+        p.node_count = b.ref.node_count();
+        p.tet_count = b.ref.tet_count();
+        p.body_index = index;
+        pieces.push_back(p);
+    });
+    // Pointers are taken only now: the vectors above no longer reallocate.
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        pieces[i].positions = arrays[i].positions.data();
+        pieces[i].tets = arrays[i].tets.data();
+        pieces[i].velocities = arrays[i].velocities.data();
+        pieces[i].von_mises = arrays[i].stresses.data();
+    }
+    write_vtu(series.next_frame_path(), pieces);
+    series.add_frame(w.counters().time);
+}
+
+}  // namespace
 #else
 struct lfem_vtk_series {};  // never created in this build
-
-extern "C" {
-
-LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_series** out) {
-    return guard(__func__, [&] {
-        require_pointer(pvd_path, "pvd_path");
-        require_pointer(out, "out");
-        require(pvd_path[0] != '\0', "pvd_path is empty");
-        unsupported("the VTK writer", "LFEM_WITH_IO");
-    });
-}
-
-LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series, const lfem_world* world) {
-    return guard(__func__, [&] {
-        require_pointer(series, "series");
-        world_of(world);
-        unsupported("the VTK writer", "LFEM_WITH_IO");
-    });
-}
-
-LFEM_API void lfem_vtk_series_destroy(lfem_vtk_series* series) { delete series; }
-
-}  // extern "C"
 #endif
 
-#if LFEM_WITH_IO
 extern "C" {
 
 LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_series** out) {
@@ -52,7 +83,11 @@ LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_serie
         require_pointer(pvd_path, "pvd_path");
         require_pointer(out, "out");
         require(pvd_path[0] != '\0', "pvd_path is empty");
+#if LFEM_WITH_IO
         *out = new lfem_vtk_series(pvd_path);
+#else
+        unsupported("the VTK writer", "LFEM_WITH_IO");
+#endif
     });
 }
 
@@ -60,46 +95,15 @@ LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series, const 
     return guard(__func__, [&] {
         require_pointer(series, "series");
         const World& w = world_of(world);
-        // Per-body arrays live here until the frame is written, in the caller's numbering
-        // (node_ordering.h), so that point and cell ids match the API's node and tet indices.
-        std::vector<std::vector<double>> positions, velocities, stresses;
-        std::vector<std::vector<uint32_t>> tets;
-        std::vector<VtkPiece> pieces;
-        w.for_each_body([&](const Body& b, uint32_t index) {
-            if (!b.has_mesh()) return;
-            const Numbering& numbering = b.ref.numbering;
-            const uint32_t n = b.ref.node_count(), t = b.ref.tet_count();
-            std::vector<double> internal(b.state.x.size());
-            w.synchronized_velocities(b, internal.data());
-            velocities.emplace_back(internal.size());
-            numbering.nodes_to_api(internal.data(), n, velocities.back().data());
-            positions.emplace_back(internal.size());
-            numbering.nodes_to_api(b.state.x.data(), n, positions.back().data());
-            std::vector<double> stress(t, 0.0);
-            if (b.is_deformable()) compute_von_mises(b, b.state, stress.data());
-            stresses.emplace_back(t);
-            numbering.tets_to_api(stress.data(), t, stresses.back().data());
-            tets.emplace_back(b.ref.tets.size());
-            numbering.tet_nodes_to_api(b.ref.tets.data(), t, tets.back().data());
-            VtkPiece p;
-            p.node_count = n;
-            p.tet_count = t;
-            p.body_index = index;
-            pieces.push_back(p);
-        });
-        // Pointers are taken only now: the vectors above no longer reallocate.
-        for (std::size_t i = 0; i < pieces.size(); ++i) {
-            pieces[i].positions = positions[i].data();
-            pieces[i].tets = tets[i].data();
-            pieces[i].velocities = velocities[i].data();
-            pieces[i].von_mises = stresses[i].data();
-        }
-        write_vtu(series->series.next_frame_path(), pieces);
-        series->series.add_frame(w.counters().time);
+#if LFEM_WITH_IO
+        write_frame(series->series, w);
+#else
+        (void)w;
+        unsupported("the VTK writer", "LFEM_WITH_IO");
+#endif
     });
 }
 
 LFEM_API void lfem_vtk_series_destroy(lfem_vtk_series* series) { delete series; }
 
 }  // extern "C"
-#endif

@@ -34,6 +34,35 @@ void check_world_def(const lfem_world_def& d) {
 
 }  // namespace lfem::api
 
+namespace {
+
+// The C record of the world's statistics.
+lfem_world_stats stats_of(const World& w) {
+    const WorldCounters& c = w.counters();
+    lfem_world_stats st{};
+    st.time = c.time;
+    st.steps = c.steps;
+    st.step_size = c.step_size;
+    st.stable_step = w.stable_step();
+    st.substeps_last_call = c.substeps_last_call;
+    st.body_count = w.bodies().live_count();
+    st.external_work = c.external_work;
+    st.dissipated_energy = c.dissipated_energy;
+    st.rotation_drift = c.rotation_drift;
+    for (const ContactRecord& r : w.contacts()) st.contact_count += r.active();
+    st.solver_iterations = c.solver_iterations;
+    st.solver_residual = c.solver_residual;
+    st.max_penetration = c.max_penetration;
+    const WorldTotals t = w.totals();
+    st.kinetic_energy = t.kinetic_energy;
+    st.strain_energy = t.strain_energy;
+    for (int k = 0; k < 3; ++k) st.linear_momentum[k] = t.linear_momentum[k], st.angular_momentum[k] = t.angular_momentum[k];
+    st.energy_error = t.energy_error;
+    return st;
+}
+
+}  // namespace
+
 extern "C" {
 
 LFEM_API lfem_world_def lfem_world_def_default(void) {
@@ -142,7 +171,7 @@ LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_st
     return guard(__func__, [&] {
         const World& w = world_of(world);
         require_pointer(out, "out");
-        *out = w.stats();
+        *out = stats_of(w);
     });
 }
 
@@ -156,36 +185,6 @@ LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profil
 
 LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world) {
     return guard(__func__, [&] { world_of(world).reset_profile(); });
-}
-
-LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
-                                               uint32_t capacity, uint32_t* count) {
-    return guard(__func__, [&] {
-        const World& w = world_of(world);
-        require_pointer(count, "count");
-        require(capacity == 0 || out != nullptr, "out is NULL with a non-zero capacity");
-        const std::vector<ContactRecord>& contacts = w.contacts();
-        std::size_t active = 0;
-        for (const ContactRecord& c : contacts) active += c.active();
-        require(active <= UINT32_MAX, "more than 2^32 - 1 active contacts");
-        *count = uint32_t(active);
-        if (active > capacity)
-            throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) +
-                                                   " is below the " + std::to_string(active) +
-                                                   " active contacts");
-        std::size_t i = 0;
-        for (const ContactRecord& c : contacts)
-            if (c.active()) out[i++] = w.contact_as_c(c);
-        // The list runs in the bodies' internal node order (node_ordering.h); the caller is
-        // promised (body_a, node) in its own numbering. A node's contacts with several bodies
-        // keep their order (body_b, then shape). No std::stable_sort: its scratch buffer comes
-        // from a nothrow new.
-        auto key = [](const lfem_contact& c) {
-            return std::make_tuple(c.body_a.index, c.node, c.body_b.index, c.shape);
-        };
-        std::sort(out, out + active,
-                  [&](const lfem_contact& p, const lfem_contact& q) { return key(p) < key(q); });
-    });
 }
 
 }  // extern "C"

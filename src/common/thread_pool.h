@@ -48,20 +48,30 @@ inline void parallel_for(ThreadPool* pool, uint32_t count, const Task& task) {
 // block and then added in block order come out the same for any thread count.
 constexpr uint32_t kNodeBlock = 2048;
 
+// K sums taken together by blocked_sum: plain numbers indexed 0..K-1 (a matrix's entries).
+template <int K>
+struct Sums {
+    double v[K] = {};
+    Sums& operator+=(const Sums& o) {
+        for (int k = 0; k < K; ++k) v[k] += o.v[k];
+        return *this;
+    }
+};
+
 // Calls term(i, partial) for every node i in [0, n), in fixed blocks of kNodeBlock nodes on the
-// pool; term adds to its block's K partial sums, which start at zero (and may write node i's
-// own outputs). The blocks' sums are then added to total[0..K) in block order, so the result is
-// bitwise the same for any thread count. total keeps what it held: the caller sets its start.
-template <int K, class Term>
-void blocked_sum(uint32_t n, ThreadPool* pool, double* total, const Term& term) {
+// pool; term adds to its block's partial sums (a Sum, value-initialised to zero; a struct of
+// named sums with a member-wise +=, or Sums<K>) and may write node i's own outputs. The blocks'
+// sums are then added to total in block order, so the result is bitwise the same for any
+// thread count. total keeps what it held: the caller sets its start.
+template <class Sum, class Term>
+void blocked_sum(uint32_t n, ThreadPool* pool, Sum& total, const Term& term) {
     const uint32_t blocks = (n + kNodeBlock - 1) / kNodeBlock;
-    std::vector<double> partial(std::size_t(blocks) * K, 0.0);
+    std::vector<Sum> partial(blocks);
     parallel_for(pool, blocks, [&](uint32_t b) {
-        double* out = &partial[std::size_t(b) * K];
+        Sum& out = partial[b];
         for (uint32_t i = b * kNodeBlock, end = std::min(n, (b + 1) * kNodeBlock); i < end; ++i) term(i, out);
     });
-    for (uint32_t b = 0; b < blocks; ++b)
-        for (int k = 0; k < K; ++k) total[k] += partial[std::size_t(b) * K + k];
+    for (uint32_t b = 0; b < blocks; ++b) total += partial[b];
 }
 
 }  // namespace lfem

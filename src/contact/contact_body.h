@@ -4,11 +4,22 @@
 
 #include <cstdint>
 
+#include "common/math.h"
 #include "contact/rigid_shape.h"
 
 namespace lfem {
 
-struct RigidResponse;  // rigid/rigid_body.h
+// What the solve needs of a rigid body in this step: its predicted centre, and how a force
+// lambda (N) at a point moves it, as for a node: dx = lambda / mhat with
+// 1/mhat = h h_mid (1/M + r x I^-1 (r x .)); and the corrections the solve accumulates, which
+// the rigid body's commit applies.
+struct RigidResponse {
+    Vec3 center = Vec3::Zero();     // c* (predicted)
+    double inv_mass = 0;            // h h_mid / M
+    Mat3 inv_inertia = Mat3::Zero();  // h h_mid I_world^-1 at x*
+    Vec3 dc = Vec3::Zero();         // correction of the centre accumulated by the solve
+    Vec3 dtheta = Vec3::Zero();     // correction of the rotation (rotation vector)
+};
 
 struct ContactBody {
     uint32_t slot = 0;                 // the body's slot in the world (for handles)
@@ -18,6 +29,9 @@ struct ContactBody {
     uint32_t node_count = 0;
     uint32_t total_nodes = 0;          // all nodes of the body (x has 3 per node)
     const double* x_start = nullptr;   // 3 per node: positions at the start of the step, x^n
+    const double* v_last = nullptr;    // 3 per node: velocity over the last step (deformable
+                                       // bodies); nullptr = (x - x_start) / h, this step's
+                                       // rigid motion (zero for a static body)
     double* x = nullptr;               // 3 per node: predicted x*, corrected in place to x^{n+1}
     const double* inv_mass = nullptr;  // per node: 1/mhat (m per N); nullptr = no node moves alone
     RigidResponse* rigid = nullptr;    // a rigid body: its nodes move together (x holds x*)

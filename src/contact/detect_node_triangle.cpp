@@ -5,33 +5,13 @@
 #include <tuple>
 
 #include "common/profile.h"
+#include "contact/detection_tolerances.h"
+#include "contact/warm_start.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
 namespace {
 
-// Tolerances, all relative to the boundary edge length l of the triangle's body:
-// - capture band: a node up to 0.05 l in front of a face at the end of the step is kept as a
-//   (possibly inactive) constraint, so resting contacts do not flicker in and out;
-// - depth allowance: a node that starts the step behind a face is that face's only as deep as
-//   the previous step left that (node, body) pair: a kept overlap or the solver's residual,
-//   times 1.25, plus 1e-3 l. Any deeper and the node is not inside the body at all:
-//   above a thin plate, it lies 'behind' the plate's far face by the plate's thickness plus
-//   its height, and pulling it through would be a disaster. Paths that cross a face in this
-//   step are found by the crossing test, not by depth;
-// - edge tolerance: barycentric weights down to -0.01 count as inside, so nodes on a shared
-//   edge do not drop out of both neighbouring faces (DESIGN.md section 6).
-constexpr double kCaptureBand = 0.05;
-constexpr double kResidualDepth = 1e-3;
-// Bodies created overlapping: a node up to 0.5 l behind a face it was never in contact with is
-// taken as inside (and let out gradually) only if nothing of the other body lies between it
-// and the face, i.e. the face really is the nearest way out.
-constexpr double kInitialDepth = 0.5;
-constexpr double kEdgeTolerance = 0.01;
-// An overlap found at the start of a step is removed over several steps, 20 % per step,
-// rather than in one violent jump.
-constexpr double kOverlapRecovery = 0.2;
-constexpr double kMaxRecovery = 1e-3;
 // Slave nodes per block of the parallel narrow phase. Fixed, not per thread, so the blocks
 // and the order they are joined in are the same for any thread count. Far fewer than the
 // node loops' kNodeBlock: a node's hash query and face tests cost much more than a predictor
@@ -145,9 +125,12 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
                        pose_start.rotation * (pose_end.rotation.conjugate() * (best.point_end - pose_end.center));
 }
 
-// The constraint of node p of `a` against the candidate face or shape of `b`.
-ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b, const Candidate& c) {
+// The constraint of node p of `a` against the candidate face or shape of `b`, warm-started
+// from the pair's last record (nullable).
+ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b, const Candidate& c,
+                          const ContactRecord* last) {
     ContactRecord r;
+    if (last) warm_start(*last, r);
     r.body_a = a.slot;
     r.node = p;
     r.body_b = b.slot;
@@ -176,7 +159,7 @@ ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b
 // `skip`? (Möller-Trumbore against the triangles whose boxes the segment's box overlaps;
 // `ids` is scratch for the hash's answer.)
 bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t bi, uint32_t skip,
-                          const ContactBody& b, const DetectionScratch& s, std::vector<uint32_t>& ids) {
+                          const ContactBody& b, const BroadPhase& s, std::vector<uint32_t>& ids) {
     Aabb box;
     for (int k = 0; k < 3; ++k) box.lo[k] = std::min(from[k], to[k]), box.hi[k] = std::max(from[k], to[k]);
     ids.clear();
@@ -201,19 +184,6 @@ bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t bi, uint32_
     return false;
 }
 
-// The last step's record of a (node, body) pair, if any (the list is in that order).
-const ContactRecord* find_previous(const std::vector<ContactRecord>& previous, uint32_t body_a,
-                                   uint32_t node, uint32_t body_b) {
-    const auto key = std::make_tuple(body_a, node, body_b);
-    const auto it = std::lower_bound(previous.begin(), previous.end(), key,
-                                     [](const ContactRecord& r, const decltype(key)& k) {
-                                         return std::make_tuple(r.body_a, r.node, r.body_b) < k;
-                                     });
-    return it != previous.end() && it->body_a == body_a && it->node == node && it->body_b == body_b
-               ? &*it
-               : nullptr;
-}
-
 // How deep the last step left the pair: a kept overlap or the solver's residual.
 double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; }
 
@@ -223,6 +193,7 @@ struct NarrowInput {
     const std::vector<ContactBody>& bodies;
     const std::vector<ContactRecord>& previous;
     const DetectionScratch& s;
+    const BroadPhase& bp;
     bool scan_overlaps;
     bool any_shapes;
 };
@@ -236,14 +207,14 @@ uint32_t prepare_slave_blocks(const std::vector<ContactBody>& bodies, DetectionS
     s.slave_begin.assign(1, 0);
     s.node_begin.assign(1, 0);
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
-        const bool tested = s.tested[ai];  // else no slave nodes, or nothing within their reach
+        const bool tested = s.broad.tested[ai];  // else no slave nodes, or nothing within their reach
         s.slave_begin.push_back(s.slave_begin.back() + (tested ? bodies[ai].node_count : 0));
         s.node_begin.push_back(s.node_begin.back() + (tested ? bodies[ai].total_nodes : 0));
     }
     s.node_normals.resize(3 * std::size_t(s.node_begin.back()));
     s.slave_normals.resize(3 * std::size_t(s.slave_begin.back()));
     for (uint32_t ai = 0; ai < bodies.size(); ++ai) {
-        if (!s.tested[ai]) continue;
+        if (!s.broad.tested[ai]) continue;
         const ContactBody& a = bodies[ai];
         double* sum = s.node_normals.data() + 3 * std::size_t(s.node_begin[ai]);
         for (uint32_t j = 0; j < a.node_count; ++j)
@@ -279,7 +250,7 @@ void for_each_slave_of_block(const std::vector<uint32_t>& slave_begin, uint32_t 
 // in body order, appended to the block's records.
 void test_node_triangles(const NarrowInput& in, uint32_t ai, uint32_t p, const Vec3& node_normal,
                          DetectionBlock& block) {
-    const DetectionScratch& s = in.s;
+    const BroadPhase& s = in.bp;
     const ContactBody& a = in.bodies[ai];
     const uint32_t* partner = s.partners.data() + s.partner_begin[ai];
     const uint32_t partner_count = s.partner_begin[ai + 1] - s.partner_begin[ai];
@@ -289,11 +260,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t ai, uint32_t p, const V
         box.hi[k] = std::max(a.x_start[3 * p + k], a.x[3 * p + k]);
     }
     bool reaches = false;  // some partner body's box: else nothing to ask the hash
-    for (uint32_t q = 0; q < partner_count && !reaches; ++q) {
-        const Aabb& other = s.body_box[partner[q]];
-        reaches = true;
-        for (int k = 0; k < 3; ++k) reaches = reaches && box.hi[k] >= other.lo[k] && other.hi[k] >= box.lo[k];
-    }
+    for (uint32_t q = 0; q < partner_count && !reaches; ++q) reaches = overlaps(box, s.body_box[partner[q]]);
     if (!reaches || s.boxes.empty()) return;
     block.candidates.clear();
     s.grid.query(box, block.candidates);
@@ -302,6 +269,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t ai, uint32_t p, const V
     block.touched.clear();
     block.best.clear();
     block.deep.clear();
+    block.last.clear();
     // The last step's record of (node, body): looked up once per body met.
     double allowance = 0.0;
     bool first_touch = false;
@@ -313,7 +281,8 @@ void test_node_triangles(const NarrowInput& in, uint32_t ai, uint32_t p, const V
             block.touched.push_back(bi);
             block.best.emplace_back();
             block.deep.emplace_back();
-            const ContactRecord* last = find_previous(in.previous, a.slot, p, b.slot);
+            const ContactRecord* last = previous_record(in.previous, a.slot, p, b.slot);
+            block.last.push_back(last);
             allowance = 1.25 * kept_offset(last) + kResidualDepth * b.edge_length;
             first_touch = in.scan_overlaps && last == nullptr;
         }
@@ -333,7 +302,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t ai, uint32_t p, const V
     }
     for (std::size_t k = 0; k < block.touched.size(); ++k) {
         if (!block.best[k].found) continue;
-        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], block.best[k]));
+        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], block.best[k], block.last[k]));
         if (in.any_shapes) block.record_gap.push_back(block.best[k].gap);
     }
 }
@@ -373,7 +342,7 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block)
         const uint32_t begin = block.record_begin[local], end = block.record_begin[local + 1];
         ++local;
         uint32_t next = begin;  // this node's records, ordered by body
-        for (uint32_t bi : s.shape_bodies) {
+        for (uint32_t bi : in.bp.shape_bodies) {
             const ContactBody& o = in.bodies[bi];
             while (next < end && found[next].body_b < o.slot) block.merged.push_back(found[next++]);
             const bool has_triangle = next < end && found[next].body_b == o.slot;
@@ -381,12 +350,12 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block)
                 Candidate c;
                 c.found = has_triangle;
                 if (has_triangle) c.gap = block.record_gap[next];
-                const double allowance =
-                    1.25 * kept_offset(find_previous(in.previous, a.slot, p, o.slot)) + kResidualDepth * a.edge_length;
+                const ContactRecord* last = previous_record(in.previous, a.slot, p, o.slot);
+                const double allowance = 1.25 * kept_offset(last) + kResidualDepth * a.edge_length;
                 for (uint32_t k = 0; k < o.shape_count; ++k)
                     test_node_shape(a, p, node_normal, o, k, allowance, c, block);
                 if (c.found && c.shape != UINT32_MAX) {
-                    block.merged.push_back(make_record(a, p, o, c));
+                    block.merged.push_back(make_record(a, p, o, c, last));
                     next += has_triangle;  // replaced by the shape
                     continue;
                 }
@@ -422,148 +391,16 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies,
     out.clear();
     double max_offset = 0.0;
     for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
-    // Broad phase. First at the level of bodies: a body's slave nodes are tested only against
-    // bodies whose triangles their paths may reach (boxes overlap, filters allow), and only the
-    // triangles near some such node enter the spatial hash. This is exact - a triangle left
-    // out has a box that overlaps no node path that could test it - and it makes the cost
-    // follow the contact region, not the whole boundary: two long bars meeting end to end hash
-    // their end faces only; a body far from everything is not looked at.
     {
         PhaseTimer timer(profile.broad_phase);
-        const uint32_t nb = uint32_t(bodies.size());
-        s.body_box.resize(nb);
-        s.slave_box.resize(nb);
-        const auto empty_box = [] {
-            Aabb box;
-            for (int k = 0; k < 3; ++k) box.lo[k] = HUGE_VAL, box.hi[k] = -HUGE_VAL;
-            return box;
-        };
-        const auto join = [](Aabb& box, const Aabb& other) {
-            for (int k = 0; k < 3; ++k)
-                box.lo[k] = std::min(box.lo[k], other.lo[k]), box.hi[k] = std::max(box.hi[k], other.hi[k]);
-        };
-        const auto overlap = [](const Aabb& a, const Aabb& b) {
-            for (int k = 0; k < 3; ++k)
-                if (!(a.hi[k] >= b.lo[k] && b.hi[k] >= a.lo[k])) return false;
-            return true;
-        };
-        // Triangle boxes over the whole step, grown by the capture band and the deepest
-        // overlap being recovered; the node paths' boxes. Body by body on the pool, each body
-        // writing its own range of triangle_box (from the prefix sums of the triangle
-        // counts) and its own entries; the extents are added up in body order after.
-        s.triangle_begin.resize(nb + 1);
-        s.triangle_begin[0] = 0;
-        for (uint32_t bi = 0; bi < nb; ++bi) s.triangle_begin[bi + 1] = s.triangle_begin[bi] + bodies[bi].triangle_count;
-        s.triangle_box.resize(s.triangle_begin[nb]);
-        s.body_extent.assign(nb, -1.0);
-        parallel_for(pool, nb, [&](uint32_t bi) {
-            const ContactBody& b = bodies[bi];
-            const double grow = std::max(kCaptureBand * b.edge_length + max_offset,
-                                         scan_overlaps ? kInitialDepth * b.edge_length : 0.0);
-            s.body_box[bi] = empty_box();
-            for (uint32_t t = 0; t < b.triangle_count; ++t) {
-                Aabb box = empty_box();
-                for (int v = 0; v < 3; ++v) {
-                    const uint32_t i = b.triangles[3 * t + v];
-                    for (int k = 0; k < 3; ++k) {
-                        const double x0 = b.x_start[3 * i + k], x1 = b.x[3 * i + k];
-                        box.lo[k] = std::min({box.lo[k], x0, x1});
-                        box.hi[k] = std::max({box.hi[k], x0, x1});
-                    }
-                }
-                for (int k = 0; k < 3; ++k) box.lo[k] -= grow, box.hi[k] += grow;
-                s.triangle_box[s.triangle_begin[bi] + t] = box;
-                join(s.body_box[bi], box);
-            }
-            s.slave_box[bi] = empty_box();
-            for (uint32_t j = 0; j < b.node_count; ++j) {
-                const uint32_t p = b.nodes[j];
-                for (int k = 0; k < 3; ++k) {
-                    const double x0 = b.x_start[3 * p + k], x1 = b.x[3 * p + k];
-                    s.slave_box[bi].lo[k] = std::min({s.slave_box[bi].lo[k], x0, x1});
-                    s.slave_box[bi].hi[k] = std::max({s.slave_box[bi].hi[k], x0, x1});
-                }
-            }
-            if (b.triangle_count > 0) {
-                const Aabb& box = s.body_box[bi];
-                const double extent = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
-                if (std::isfinite(extent)) s.body_extent[bi] = extent;
-            }
-        });
-        double extent_sum = 0.0;
-        uint32_t extent_count = 0;
-        for (uint32_t bi = 0; bi < nb; ++bi)
-            if (s.body_extent[bi] >= 0.0) extent_sum += s.body_extent[bi], ++extent_count;
-        // Pairs of bodies through a hash of the body boxes (cells of the mean body size; a
-        // floor much larger than the bodies on it is kept aside and tested directly).
-        s.body_grid.build(s.body_box, extent_count > 0 && extent_sum > 0.0 ? extent_sum / extent_count : 1.0);
-        s.partner_begin.assign(1, 0);
-        s.partners.clear();
-        s.reached_by.clear();
-        s.shape_bodies.clear();
-        s.tested.assign(nb, 0);
-        for (uint32_t bi = 0; bi < nb; ++bi)
-            if (bodies[bi].shape_count > 0) s.shape_bodies.push_back(bi);
-        for (uint32_t ai = 0; ai < nb; ++ai) {
-            const ContactBody& a = bodies[ai];
-            if (a.node_count > 0) {
-                s.candidates.clear();
-                s.body_grid.query(s.slave_box[ai], s.candidates);
-                for (uint32_t bi : s.candidates)
-                    if (bi != ai && bodies[bi].triangle_count > 0 && bodies_may_touch(a, bodies[bi])) {
-                        s.partners.push_back(bi);
-                        s.reached_by.push_back(uint64_t(bi) << 32 | ai);
-                    }
-                bool shape_partner = false;
-                for (uint32_t bi : s.shape_bodies)
-                    shape_partner = shape_partner || (bi != ai && bodies_may_touch(a, bodies[bi]));
-                s.tested[ai] = s.partners.size() > s.partner_begin.back() || shape_partner;
-            }
-            s.partner_begin.push_back(uint32_t(s.partners.size()));
-        }
-        // Which triangles enter the hash: those of a reached body whose box overlaps the path
-        // box of a body reaching it (or, when many bodies reach it, of all of them joined).
-        std::sort(s.reached_by.begin(), s.reached_by.end());  // by reached body, then reaching
-        const std::vector<uint64_t>& reached = s.reached_by;
-        const auto reaching = [&](std::size_t q) { return uint32_t(reached[q]); };
-        s.boxes.clear();
-        s.box_body.clear();
-        s.box_triangle.clear();
-        double cell = 0.0;
-        std::size_t first_triangle = 0;  // of body bi in triangle_box
-        std::size_t r = 0;
-        for (uint32_t bi = 0; bi < nb; ++bi) {
-            const ContactBody& b = bodies[bi];
-            const std::size_t r_begin = r;
-            while (r < reached.size() && uint32_t(reached[r] >> 32) == bi) ++r;
-            if (r > r_begin) {
-                constexpr std::size_t kMaxSeparateBoxes = 8;
-                Aabb joined = empty_box();
-                for (std::size_t q = r_begin; q < r; ++q) join(joined, s.slave_box[reaching(q)]);
-                for (uint32_t t = 0; t < b.triangle_count; ++t) {
-                    const Aabb& box = s.triangle_box[first_triangle + t];
-                    bool near = false;
-                    if (r - r_begin > kMaxSeparateBoxes) near = overlap(box, joined);
-                    else
-                        for (std::size_t q = r_begin; q < r && !near; ++q)
-                            near = overlap(box, s.slave_box[reaching(q)]);
-                    if (!near) continue;
-                    s.boxes.push_back(box);
-                    s.box_body.push_back(bi);
-                    s.box_triangle.push_back(t);
-                    cell = std::max(cell, b.edge_length);
-                }
-            }
-            first_triangle += b.triangle_count;
-        }
-        if (!s.boxes.empty()) s.grid.build(s.boxes, 2.0 * cell);
+        run_broad_phase(bodies, max_offset, scan_overlaps, s.broad, pool);
     }
-    bool any_shapes = !s.shape_bodies.empty();
-    if (s.boxes.empty() && !any_shapes) return;
+    const bool any_shapes = !s.broad.shape_bodies.empty();
+    if (s.broad.boxes.empty() && !any_shapes) return;
 
     // Narrow phase: every slave node of a tested body against the triangles near its path,
     // in blocks on the pool, each block writing only its own records and scratch.
-    const NarrowInput in{bodies, previous, s, scan_overlaps, any_shapes};
+    const NarrowInput in{bodies, previous, s, s.broad, scan_overlaps, any_shapes};
     uint32_t blocks = 0;
     {
         PhaseTimer timer(profile.narrow_phase);

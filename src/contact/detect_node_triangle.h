@@ -38,26 +38,13 @@ struct DetectionBlock {
     std::vector<double> record_gap;
     std::vector<uint32_t> touched;            // bodies with a candidate for the current node
     std::vector<NodeCandidate> best, deep;    // per touched body
+    std::vector<const ContactRecord*> last;   // per touched body: the pair's last record
     std::vector<uint32_t> candidates, crossing;  // hash answers: the node's path, a segment
     uint64_t shape_tests = 0, ccd_queries = 0;   // the profile's counts, added in block order
 };
 
 struct DetectionScratch {
-    // Body level, to leave out what cannot touch: per body the joined boxes of its triangles
-    // and of its slave nodes' paths, the bodies whose triangles each body's slave nodes may
-    // reach (partner_begin: where each body's list starts, +1 at the end), and per body whether
-    // its nodes are tested at all; reached_by: (reached body << 32 | reaching body).
-    std::vector<Aabb> triangle_box, body_box, slave_box;
-    std::vector<uint32_t> triangle_begin;  // per body, where its boxes start in triangle_box
-    std::vector<double> body_extent;       // per body, its box's largest extent (-1: none)
-    std::vector<uint32_t> partner_begin, partners, shape_bodies;
-    std::vector<uint64_t> reached_by;
-    std::vector<uint8_t> tested;
-    BroadPhase body_grid;
-    std::vector<uint32_t> candidates;  // bodies near one body's slave node paths
-    std::vector<Aabb> boxes;
-    std::vector<uint32_t> box_body, box_triangle;  // which body and triangle a box belongs to
-    BroadPhase grid;
+    BroadPhase broad;
     // Narrow phase: per body where its slave nodes start in the sequence of all tested bodies'
     // slave nodes and where its nodes start in node_normals (+1 at the end, both), 3 per node
     // of the tested bodies (sums of the triangle normals around it; only the boundary nodes'
@@ -72,7 +59,8 @@ struct DetectionScratch {
 // Fills `out` with one constraint per (node, other body): the boundary triangle the node
 // crossed or lies against, with its normal at x*, the barycentric weights of the contact point
 // and the target gap (a kept overlap). `previous` is the last step's list (same order: body,
-// node, other body), which says which overlaps are being recovered. With scan_overlaps (the
+// node, other body), which says which overlaps are being recovered, and whose multipliers
+// warm-start the pairs found again (the same node and body: a resting contact starts solved). With scan_overlaps (the
 // first step after bodies were added) nodes found up to half an edge inside another body are
 // taken as overlaps to be removed gradually. Time and counts of the broad phase, the
 // node-triangle tests and the rigid-shape queries are added to `profile`. The node tests run

@@ -6,7 +6,6 @@
 
 #include "common/thread_pool.h"
 #include "fem/tet_element.h"
-#include "rigid/rigid_body.h"
 
 namespace lfem {
 namespace {
@@ -94,6 +93,35 @@ Vec3 relative_motion(const Pair& q) {
     for (int v = 0; v < 3; ++v)
         if (q.N[v] != 0.0) r -= q.N[v] * (q.tri[v].position() - Vec3(q.tri[v].x0));
     return r;
+}
+
+// Velocity of point i of body b over the last step, along axis k.
+double last_velocity(const ContactBody& b, uint32_t i, int k, double h) {
+    return b.v_last ? b.v_last[3 * i + k] : (b.x[3 * i + k] - b.x_start[3 * i + k]) / h;
+}
+
+// The stopping tolerance: relative_tolerance times the largest relative motion of a pair, the
+// relative velocity at the start of the step (last step's mid-step velocities) times h; not the
+// predicted motion, which under a resting load is mostly the sag that contact undoes. At least
+// 1e-9 of the finest boundary edge, for when nothing moves.
+double stopping_tolerance(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
+                          const std::vector<ContactRecord>& records, double relative_tolerance, double h) {
+    double motion = 0.0, length = HUGE_VAL;
+    for (const ContactRecord& r : records) {
+        const ContactBody& a = bodies[body_of_slot[r.body_a]];
+        const ContactBody& b = bodies[body_of_slot[r.body_b]];
+        const double w[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
+        for (int d = 0; d < 3; ++d) {
+            double rel = last_velocity(a, r.node, d, h);
+            if (r.shape != UINT32_MAX)
+                rel -= (r.point_end[d] - r.point_start[d]) / h;  // the shape's surface moves rigidly
+            else
+                for (int v = 0; v < 3; ++v) rel -= w[v] * last_velocity(b, r.triangle[v], d, h);
+            motion = std::max(motion, std::fabs(rel) * h);
+        }
+        length = std::min({length, a.edge_length, b.edge_length});
+    }
+    return std::max(relative_tolerance * motion, 1e-9 * length);
 }
 
 // Union-find root of body i (path halving).
@@ -192,11 +220,12 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
                                              std::vector<ContactRecord>& records,
-                                             uint32_t max_iterations, double tolerance,
-                                             lfem_profile& profile, ThreadPool* pool) {
+                                             uint32_t max_iterations, double relative_tolerance,
+                                             double h, lfem_profile& profile, ThreadPool* pool) {
     // The whole solve is timed as the normal part; the friction passes' share of it is moved
     // to the friction part at the end.
     const auto solve_start = std::chrono::steady_clock::now();
+    const double tolerance = stopping_tolerance(bodies, body_of_slot, records, relative_tolerance, h);
     std::vector<Pair> pairs(records.size());
     for (std::size_t j = 0; j < records.size(); ++j) {
         ContactRecord& r = records[j];  // shape contacts lend their surface points

@@ -23,15 +23,18 @@ struct ContactSolveResult {
 
 // `body_of_slot[s]` is the index in `bodies` of the body in world slot s. Records carry warm
 // start multipliers on entry and the converged ones (newtons) on exit; `x` of the bodies is
-// moved from x* to x^{n+1}. Stops when a sweep corrects no node by more than `tolerance`
-// (m), or after max_iterations sweeps; pairs linked through no movable body form groups that
-// converge on their own, side by side on the pool (results independent of the thread count).
-// The result gives the iterations and residual of the slowest group. Adds its time to
-// profile.normal_solve and, when a pair has friction, profile.friction.
+// moved from x* to x^{n+1}. A sweep that corrects no node by more than the stopping tolerance
+// ends the solve, or max_iterations sweeps: the tolerance is relative_tolerance times the
+// largest relative motion of a pair over a step of h (the relative velocity at the start of
+// the step, times h), or 1e-9 of the finest boundary edge when nothing moves (resting
+// contact). Pairs linked through no movable body form groups that converge on their own, side
+// by side on the pool (results independent of the thread count). The result gives the
+// iterations and residual of the slowest group. Adds its time to profile.normal_solve and,
+// when a pair has friction, profile.friction.
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
                                              std::vector<ContactRecord>& records,
-                                             uint32_t max_iterations, double tolerance,
-                                             lfem_profile& profile, ThreadPool* pool);
+                                             uint32_t max_iterations, double relative_tolerance,
+                                             double h, lfem_profile& profile, ThreadPool* pool);
 
 }  // namespace lfem

@@ -263,12 +263,12 @@ LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const M
 // kTangent also gives its largest tangent estimate over the tets (a maximum: exact in any
 // order) in *tangent.
 template <bool displacement_edges, class Model>
-double element_loop(const BodyReference& ref, const double* x, double* f, uint32_t n,
-                    ThreadPool* pool, const Model& model, double* tangent = nullptr) {
-    std::fill(f, f + 3 * std::size_t(n), 0.0);
-    const ElementColouring& colouring = ref.colouring;
-    const LoopData d{x, ref.X.data(), ref.tets.data(), ref.Dm_inv.data(), ref.volume.data(),
-                     f, ref.tet_count(), colouring.block_size};
+double element_loop(const ElementMesh& mesh, const double* x, double* f, ThreadPool* pool,
+                    const Model& model, double* tangent = nullptr) {
+    std::fill(f, f + 3 * std::size_t(mesh.node_count()), 0.0);
+    const ElementColouring& colouring = *mesh.colouring;
+    const LoopData d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.volume.data(),
+                     f, mesh.tet_count(), colouring.block_size};
     std::vector<double> block_energy(colouring.block_count(), 0.0);
     std::vector<double> block_tangent(Model::kTangent ? colouring.block_count() : 0, 0.0);
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
@@ -284,96 +284,93 @@ double element_loop(const BodyReference& ref, const double* x, double* f, uint32
     return energy;
 }
 
+// The forces of one body's state: strain energy and (a model with kTangent) the stiffening of
+// its stiffest tet relative to the undeformed one, F = I.
 template <bool displacement_edges, class Model>
-void element_loop(const Body& body, BodyState& state, ThreadPool* pool, const Model& model) {
+ElasticResult elastic_forces(const ElementMesh& mesh, const ElasticState& state, ThreadPool* pool,
+                             const Model& model) {
     double tangent = 0.0;
-    state.strain_energy = element_loop<displacement_edges>(
-        body.ref, state.x.data(), state.elastic.data(), body.ref.node_count(), pool, model, &tangent);
-    state.stiffening = 1.0;
+    ElasticResult out;
+    out.strain_energy = element_loop<displacement_edges>(mesh, state.x.data(), state.force.data(), pool,
+                                                         model, &tangent);
+    out.stiffening = 1.0;
     if constexpr (Model::kTangent) {
-        // Relative to the undeformed tet, F = I.
         const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, model.mu, model.lam);
-        state.stiffening = std::max(1.0, tangent / at_rest);
+        out.stiffening = std::max(1.0, tangent / at_rest);
     }
+    return out;
 }
 
 }  // namespace
 
-void compute_elastic_forces(const Body& body, BodyState& state, ThreadPool* pool) {
-    const Lame lame = body.lame;
-    switch (body.def.model) {
+ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& material,
+                                     const ElasticState& state, ThreadPool* pool) {
+    const Lame lame = material.lame;
+    switch (material.model) {
         case LFEM_MODEL_LINEAR:
-            element_loop<true>(body, state, pool, LinearModel{lame});
-            break;
+            return elastic_forces<true>(mesh, state, pool, LinearModel{lame});
         case LFEM_MODEL_PAPER: {
             // Floating frame: strain measured in the body's rotated frame, R^T F - I; the
             // translation of the frame drops out because the gradients of N sum to zero.
-            const Eigen::Quaterniond q(state.rotation[0], state.rotation[1], state.rotation[2],
-                                       state.rotation[3]);
-            const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> Rm = q.toRotationMatrix();
+            const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> Rm = load_quaternion(state.frame).toRotationMatrix();
             PaperModel model{lame, {}};
             for (int i = 0; i < 9; ++i) model.R[i] = Rm.data()[i];
-            element_loop<false>(body, state, pool, model);
-            break;
+            return elastic_forces<false>(mesh, state, pool, model);
         }
         case LFEM_MODEL_COROTATIONAL:
             // One rotation per tet, the polar rotation of F (warm-started from the last step):
             // the stress R C:(R^T F - I) is torque-free for an isotropic material, so angular
             // momentum is kept.
-            element_loop<false>(body, state, pool, CorotationalModel{lame, state.tet_rotation.data()});
-            break;
+            return elastic_forces<false>(mesh, state, pool, CorotationalModel{lame, state.tet_rotation.data()});
         case LFEM_MODEL_NEO_HOOKEAN:
         default:
-            element_loop<false>(body, state, pool, NeoHookeanModel{lame.mu, lame.lambda + lame.mu});
-            break;
+            return elastic_forces<false>(mesh, state, pool, NeoHookeanModel{lame.mu, lame.lambda + lame.mu});
     }
 }
 
-void apply_reference_stiffness(const BodyReference& ref, const Lame& lame, const double* u,
+void apply_reference_stiffness(const ElementMesh& mesh, const Lame& lame, const double* u,
                                double* y, ThreadPool* pool) {
     // The linear kernel on the edges of u gives -K u.
-    element_loop<false>(ref, u, y, ref.node_count(), pool, LinearModel{lame});
-    for (std::size_t i = 0; i < 3 * std::size_t(ref.node_count()); ++i) y[i] = -y[i];
+    element_loop<false>(mesh, u, y, pool, LinearModel{lame});
+    for (std::size_t i = 0; i < 3 * std::size_t(mesh.node_count()); ++i) y[i] = -y[i];
 }
 
-void compute_von_mises(const Body& body, const BodyState& state, double* out) {
-    const BodyReference& ref = body.ref;
-    const double* x = state.x.data();
-    const double* X = ref.X.data();
-    const Eigen::Quaterniond q_body(state.rotation[0], state.rotation[1], state.rotation[2],
-                                    state.rotation[3]);
-    const Mat3 R_body = q_body.toRotationMatrix();
-    for (uint32_t e = 0; e < ref.tet_count(); ++e) {
-        const uint32_t* t = &ref.tets[4 * e];
-        const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
+void compute_von_mises(const ElementMesh& mesh, const Material& material, const double* x,
+                       const float* tet_rotation, const double* frame, double* out) {
+    const double* X = mesh.X.data();
+    const Mat3 R_body = material.model == LFEM_MODEL_PAPER ? Mat3(load_quaternion(frame).toRotationMatrix())
+                                                           : Mat3::Identity();
+    for (uint32_t e = 0; e < mesh.tet_count(); ++e) {
+        const uint32_t* t = &mesh.tets[4 * e];
+        const Eigen::Map<const Mat3> Dm_inv(&mesh.Dm_inv[9 * e]);
         const Mat3 F = edge_matrix(x + 3 * t[0], x + 3 * t[1], x + 3 * t[2], x + 3 * t[3]) * Dm_inv;
         Mat3 sigma;
-        switch (body.def.model) {
+        switch (material.model) {
             case LFEM_MODEL_LINEAR: {
                 double u[4][3];
                 for (int a = 0; a < 4; ++a)
                     for (int r = 0; r < 3; ++r) u[a][r] = x[3 * t[a] + r] - X[3 * t[a] + r];
-                sigma = hooke_stress(edge_matrix(u[0], u[1], u[2], u[3]) * Dm_inv, body.lame,
+                sigma = hooke_stress(edge_matrix(u[0], u[1], u[2], u[3]) * Dm_inv, material.lame,
                                      nullptr);
                 break;
             }
             case LFEM_MODEL_PAPER:
                 // Von Mises is invariant under rotation: the stress in the frame is enough.
-                sigma = hooke_stress(R_body.transpose() * F - Mat3::Identity(), body.lame, nullptr);
+                sigma = hooke_stress(R_body.transpose() * F - Mat3::Identity(), material.lame, nullptr);
                 break;
             case LFEM_MODEL_COROTATIONAL: {
-                const float* s = &state.tet_rotation[4 * e];
+                const float* s = &tet_rotation[4 * std::size_t(e)];
                 Eigen::Quaterniond q(s[0], s[1], s[2], s[3]);
                 q.normalize();
                 extract_rotation(F, q);
                 const Mat3 R = q.toRotationMatrix();
-                sigma = hooke_stress(R.transpose() * F - Mat3::Identity(), body.lame, nullptr);
+                sigma = hooke_stress(R.transpose() * F - Mat3::Identity(), material.lame, nullptr);
                 break;
             }
             default: {
                 // Cauchy stress P F^T / J; an inverted tet (J <= 0) reports its Kirchhoff
                 // stress instead of dividing by a vanishing or negative volume ratio.
-                const Mat3 P = neo_hookean_stress(F, body.lame, nullptr);
+                const Mat3 P = neo_hookean_stress(F, material.lame, nullptr);
                 const double J = F.determinant();
                 sigma = P * F.transpose() / (J > 1e-6 ? J : 1.0);
                 break;

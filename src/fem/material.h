@@ -1,13 +1,22 @@
-// Isotropic elastic constants and the wave speed that sets the explicit step.
+// Isotropic elastic constants, the material model a body uses, and the wave speed that sets
+// the explicit step.
 #pragma once
 
 #include <cmath>
+
+#include "lfem.h"
 
 namespace lfem {
 
 struct Lame {
     double mu = 0;      // shear modulus (Pa)
     double lambda = 0;  // first Lame parameter (Pa)
+};
+
+// What the element kernels need to know of a body's material.
+struct Material {
+    lfem_model model = LFEM_MODEL_PAPER;
+    Lame lame;
 };
 
 inline Lame lame_from_young_poisson(double young, double poisson) {

@@ -16,7 +16,7 @@ namespace {
 // Gershgorin: every eigenvalue of M^-1 K lies below max over rows of sum_j |K_ij| / m_i. The
 // element blocks are K_ab = V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g = grad N;
 // summing |K_e| entries per row over-counts cancellations, so the bound is safe.
-double gershgorin_bound(const BodyReference& ref, const Lame& lame) {
+double gershgorin_bound(const ElementMesh& ref, const Lame& lame) {
     std::vector<double> row_sum(3 * ref.node_count(), 0.0);
     for (uint32_t e = 0; e < ref.tet_count(); ++e) {
         const uint32_t* t = &ref.tets[4 * e];
@@ -41,7 +41,7 @@ double gershgorin_bound(const BodyReference& ref, const Lame& lame) {
 
 }  // namespace
 
-StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame, ThreadPool* pool) {
+StableStepEstimate estimate_stable_step(const ElementMesh& ref, const Lame& lame, ThreadPool* pool) {
     StableStepEstimate out;
     const double lambda_g = gershgorin_bound(ref, lame);
     out.omega_gershgorin = std::sqrt(lambda_g);

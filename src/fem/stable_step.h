@@ -4,7 +4,8 @@
 #pragma once
 
 #include "common/thread_pool.h"
-#include "world/body.h"
+#include "fem/element_mesh.h"
+#include "fem/material.h"
 
 namespace lfem {
 
@@ -18,7 +19,7 @@ struct StableStepEstimate {
 
 // Largest natural frequency of a body from its reference data (X, masses, tets, Dm_inv,
 // volumes, colouring) and elastic constants; the operator runs on the pool when one is given.
-StableStepEstimate estimate_stable_step(const BodyReference& ref, const Lame& lame,
+StableStepEstimate estimate_stable_step(const ElementMesh& mesh, const Lame& lame,
                                         ThreadPool* pool = nullptr);
 
 }  // namespace lfem

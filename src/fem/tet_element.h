@@ -7,15 +7,10 @@
 // nodes 1..3 and node 0 receives minus their sum (the element is in equilibrium by itself).
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
-
+#include "common/math.h"
 #include "fem/material.h"
 
 namespace lfem {
-
-using Mat3 = Eigen::Matrix3d;
-using Vec3 = Eigen::Vector3d;
 
 // Edge matrix [x1-x0, x2-x0, x3-x0] of four nodes given by pointers to their xyz.
 inline Mat3 edge_matrix(const double* x0, const double* x1, const double* x2, const double* x3) {

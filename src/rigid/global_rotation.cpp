@@ -4,29 +4,30 @@
 #include <cmath>
 #include <vector>
 
+#include "common/math.h"
 #include "fem/polar_rotation.h"
 
 namespace lfem {
 
 Eigen::Vector3d center_of_mass(const double* mass, const double* x, uint32_t n, ThreadPool* pool) {
-    double s[4] = {0, 0, 0, 0};
-    blocked_sum<4>(n, pool, s, [&](uint32_t i, double* out) {
-        for (int k = 0; k < 3; ++k) out[k] += mass[i] * x[3 * i + k];
-        out[3] += mass[i];
+    Sums<4> s;  // m x, m y, m z, m
+    blocked_sum(n, pool, s, [&](uint32_t i, Sums<4>& out) {
+        for (int k = 0; k < 3; ++k) out.v[k] += mass[i] * x[3 * i + k];
+        out.v[3] += mass[i];
     });
-    return Eigen::Vector3d(s[0], s[1], s[2]) / s[3];
+    return Eigen::Vector3d(s.v[0], s.v[1], s.v[2]) / s.v[3];
 }
 
 Eigen::Matrix3d inertia_tensor(const double* mass, const double* x, uint32_t n,
                                const Eigen::Vector3d& c, ThreadPool* pool) {
-    double s[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    blocked_sum<9>(n, pool, s, [&](uint32_t i, double* out) {
+    Sums<9> s;  // row-major
+    blocked_sum(n, pool, s, [&](uint32_t i, Sums<9>& out) {
         const double r[3] = {x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]};
         const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) out[3 * a + b] += mass[i] * ((a == b) * r2 - r[a] * r[b]);
+            for (int b = 0; b < 3; ++b) out.v[3 * a + b] += mass[i] * ((a == b) * r2 - r[a] * r[b]);
     });
-    return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(s);
+    return load_row_major(s.v);
 }
 
 Eigen::Vector3d angular_momentum(const double* mass, const double* x, const double* v,
@@ -52,15 +53,30 @@ Eigen::Vector3d integrate_global_rotation(const Eigen::Matrix3d& inertia, const 
 void fit_global_rotation(const double* mass, const double* x, const double* X, uint32_t n,
                          const Eigen::Vector3d& c, const Eigen::Vector3d& C,
                          Eigen::Quaterniond& q, ThreadPool* pool) {
-    double s[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    blocked_sum<9>(n, pool, s, [&](uint32_t i, double* out) {
+    Sums<9> s;  // row-major
+    blocked_sum(n, pool, s, [&](uint32_t i, Sums<9>& out) {
         const double r[3] = {x[3 * i] - c[0], x[3 * i + 1] - c[1], x[3 * i + 2] - c[2]};
         const double R0[3] = {X[3 * i] - C[0], X[3 * i + 1] - C[1], X[3 * i + 2] - C[2]};
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) out[3 * a + b] += mass[i] * r[a] * R0[b];
+            for (int b = 0; b < 3; ++b) out.v[3 * a + b] += mass[i] * r[a] * R0[b];
     });
-    const Eigen::Matrix3d A = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(s);
+    const Eigen::Matrix3d A = load_row_major(s.v);
     extract_rotation(A, q);
+}
+
+double update_global_rotation(const double* mass, const double* x_start, const double* x, const double* X,
+                              uint32_t n, const Eigen::Vector3d& com, const Eigen::Vector3d& c_start,
+                              const Eigen::Vector3d& torque, double h, GlobalMotion& motion, ThreadPool* pool) {
+    const Eigen::Matrix3d inertia = inertia_tensor(mass, x_start, n, c_start, pool);
+    Eigen::Vector3d L(motion.angular_momentum);
+    Quat q = load_quaternion(motion.rotation);
+    integrate_global_rotation(inertia, torque, h, L, q);
+    const Quat predicted = q;
+    const Eigen::Vector3d c_new = center_of_mass(mass, x, n, pool);
+    fit_global_rotation(mass, x, X, n, c_new, com, q, pool);
+    store_quaternion(q, motion.rotation);
+    for (int k = 0; k < 3; ++k) motion.angular_momentum[k] = L[k];
+    return predicted.angularDistance(q);
 }
 
 }  // namespace lfem

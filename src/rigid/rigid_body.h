@@ -3,39 +3,49 @@
 // x_i = c + R (X_i - C).
 #pragma once
 
-#include "fem/tet_element.h"
-#include "world/body.h"
+#include "common/math.h"
+#include "common/span.h"
+#include "rigid/global_rotation.h"
 
 namespace lfem {
 
-// What the contact solve needs of a rigid body in this step: its predicted centre, and how a
-// force lambda (N) at a point moves it, as for a node: dx = lambda / mhat with
-// 1/mhat = h h_mid (1/M + r x I^-1 (r x .)).
-struct RigidResponse {
-    Vec3 center = Vec3::Zero();     // c* (predicted)
-    double inv_mass = 0;            // h h_mid / M
-    Eigen::Matrix3d inv_inertia = Eigen::Matrix3d::Zero();  // h h_mid I_world^-1 at x*
-    Vec3 dc = Vec3::Zero();         // correction of the centre accumulated by the solve
-    Vec3 dtheta = Vec3::Zero();     // correction of the rotation (rotation vector)
+// What the rigid dynamics reads of a body, fixed during a step.
+struct RigidBodyView {
+    double mass = 0;                // kg
+    Vec3 com = Vec3::Zero();        // reference centre of mass (m)
+    Mat3 inertia = Mat3::Zero();    // about the centre of mass, reference frame (kg m^2)
+    Span<const double> X;           // 3 per node: reference positions (m)
+    Span<const double> node_force;  // 3 per node (N); empty when none is set
 };
 
-// Inertia of the lumped masses about the centre of mass, reference frame (row-major 3x3).
-void rigid_reference_inertia(const BodyReference& ref, double out[9]);
+// The inertia tensor in the world frame, R I R^T.
+Mat3 rigid_world_inertia(const RigidBodyView& body, const GlobalMotion& motion);
 
-// Predictor: gravity and node forces over the step (eq. 2 for L, Newton for the centre),
-// then the nodes placed rigidly at x*. Fills the contact response.
-void predict_rigid(Body& body, const double gravity[3], double h, RigidResponse& response);
+// Predictor: gravity and node forces over the step (eq. 2 for L, Newton for the centre), then
+// the nodes placed rigidly at x* (3 per node). h_last: the last step's size (0 after a reset).
+void predict_rigid(const RigidBodyView& body, const double gravity[3], double h_last, double h,
+                   GlobalMotion& motion, Span<double> x);
 
-// Commit: apply the solve's corrections (velocity and angular momentum change with them),
-// place the nodes at x^{n+1}. Returns the kinetic energy the contact corrections changed.
-double commit_rigid(Body& body, double h, const RigidResponse& response);
+// Commit: the solve's corrections of the centre (dc, m) and of the rotation (dtheta, a
+// rotation vector) change the velocity and angular momentum by them over the step h; the nodes
+// are placed at x^{n+1}. Returns the kinetic energy the corrections changed (J).
+double commit_rigid(const RigidBodyView& body, double h, const Vec3& dc, const Vec3& dtheta,
+                    GlobalMotion& motion, Span<double> x);
 
 // Velocity of the centre and angular velocity at the current time (the last step's values
 // advanced by half a step of gravity and node forces, as for nodes); returns the angular
-// momentum about the centre at that time.
-Vec3 rigid_synchronized_velocity(const Body& body, const double gravity[3], Vec3& V, Vec3& omega);
+// momentum about the centre at that time. x: the nodes (for the node forces' torque).
+Vec3 rigid_synchronized_velocity(const RigidBodyView& body, const GlobalMotion& motion,
+                                 Span<const double> x, const double gravity[3], double h_last, Vec3& V,
+                                 Vec3& omega);
+
+// A kinematic body moves rigidly: its centre by v h, its nodes (3 per node) and the
+// placements of its shapes (7 per shape: centre, quaternion w, x, y, z) turned by omega h
+// about the centre.
+void move_kinematic(const Vec3& linear, const Vec3& angular, double h, double center[3], Span<double> x,
+                    Span<double> shape_poses);
 
 // Kinetic energy 1/2 M V^2 + 1/2 L . omega (last step's values), and the angular velocity.
-double rigid_kinetic_energy(const Body& body, Vec3* omega = nullptr);
+double rigid_kinetic_energy(const RigidBodyView& body, const GlobalMotion& motion, Vec3* omega = nullptr);
 
 }  // namespace lfem

@@ -1,20 +1,25 @@
 // A body as flat arrays. Split as in MuJoCo's model/data: BodyReference is fixed once the mesh
-// is added (reference nodes, masses, element gradients), BodyState is everything a step
-// changes (and so everything a rollback restores).
+// is added (reference nodes, masses, element gradients, surface), BodyState is everything a
+// step changes (and so everything a rollback restores). The views at the end hand the kernels
+// of fem/, rigid/ and contact/ what they compute on, without those folders knowing a Body.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "contact/rigid_shape.h"
+#include "fem/central_difference.h"
 #include "fem/element_colouring.h"
+#include "fem/element_mesh.h"
+#include "fem/internal_forces.h"
 #include "fem/material.h"
-#include "mesh/node_ordering.h"
 #include "lfem.h"
+#include "mesh/node_ordering.h"
+#include "mesh/surface.h"
+#include "rigid/global_rotation.h"
+#include "rigid/rigid_body.h"
 
 namespace lfem {
-
-enum class NodeMode : uint8_t { free = 0, fixed = 1, prescribed = 2 };
 
 struct BodyReference {
     std::vector<double> X;          // 3 per node: reference positions (m)
@@ -22,10 +27,7 @@ struct BodyReference {
     std::vector<uint32_t> tets;     // 4 node indices per tet
     std::vector<double> Dm_inv;     // 9 per tet: inverse reference edge matrix (column-major)
     std::vector<double> volume;     // reference volume per tet (m^3)
-    std::vector<uint32_t> boundary; // 3 per outward boundary triangle
-    std::vector<uint32_t> boundary_nodes; // nodes of the boundary, ascending (contact slaves)
-    std::vector<uint32_t> feature_nodes;  // boundary nodes on edges and corners (15 degrees)
-    double edge_length = 0;         // mean boundary edge length (m): contact tolerances
+    Surface surface;                // boundary triangles, slave and feature nodes, edge length
     double total_mass = 0;
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
@@ -52,10 +54,8 @@ struct BodyState {
     double strain_energy = 0;      // J, at x
     double stiffening = 1;         // neo-Hookean: how much stiffer the stiffest tet is at x than
                                    // at rest (>= 1; neo_hookean_tangent.h); 1 for the others
-    double rotation[4] = {1, 0, 0, 0}; // paper model: global rotation (quaternion w,x,y,z)
-    double angular_momentum[3] = {0, 0, 0}; // paper model: L of eq. (2) about the COM
-    double center[3] = {0, 0, 0};  // kinematic bodies: current centre; rigid: centre of mass
-    double velocity[3] = {0, 0, 0}; // rigid bodies: velocity of the centre over the last step
+    GlobalMotion global;           // paper model: frame rotation and L of eq. (2); rigid: the
+                                   // whole motion; kinematic: the pivot (center)
     std::vector<double> shape_pose;  // 7 per rigid shape: its current placement
 };
 
@@ -72,9 +72,52 @@ struct Body {
 
     bool is_deformable() const { return def.type == LFEM_BODY_DEFORMABLE; }
     bool is_rigid() const { return def.type == LFEM_BODY_RIGID; }
+    bool is_kinematic() const { return def.type == LFEM_BODY_KINEMATIC; }
     bool is_dynamic() const { return is_deformable() || is_rigid(); }  // moved by forces
+    bool is_paper() const { return is_deformable() && def.model == LFEM_MODEL_PAPER; }
     bool has_mesh() const { return !ref.X.empty(); }  // tets, or a static triangle surface
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
 };
+
+// ---- views for the kernels ---------------------------------------------------------------
+
+inline ElementMesh element_mesh(const BodyReference& ref) {
+    ElementMesh m;
+    m.X = ref.X, m.tets = ref.tets, m.Dm_inv = ref.Dm_inv, m.volume = ref.volume, m.mass = ref.mass;
+    m.colouring = &ref.colouring;
+    return m;
+}
+
+inline Material material_of(const Body& b) { return Material{b.def.model, b.lame}; }
+
+// The elastic state at b.state.x, written into `elastic` (b.state.elastic for the step).
+inline ElasticState elastic_state(const BodyState& s, std::vector<double>& elastic, std::vector<float>& tet_rotation) {
+    ElasticState e;
+    e.x = s.x, e.force = elastic, e.tet_rotation = tet_rotation, e.frame = s.global.rotation;
+    return e;
+}
+
+// Forces at the body's current positions into its state: elastic forces, strain energy and
+// stiffening.
+inline void update_elastic_forces(const Body& b, BodyState& s, ThreadPool* pool) {
+    const ElasticResult r =
+        compute_elastic_forces(element_mesh(b.ref), material_of(b), elastic_state(s, s.elastic, s.tet_rotation), pool);
+    s.strain_energy = r.strain_energy;
+    s.stiffening = r.stiffening;
+}
+
+inline NodeLoads node_loads(const Body& b, const double gravity[3]) {
+    NodeLoads l;
+    l.mass = b.ref.mass, l.mode = b.node_mode, l.prescribed_velocity = b.prescribed_velocity;
+    l.node_force = b.node_force, l.elastic = b.state.elastic, l.damping = b.def.damping, l.gravity = gravity;
+    return l;
+}
+
+inline RigidBodyView rigid_view(const Body& b) {
+    RigidBodyView v;
+    v.mass = b.ref.total_mass, v.com = Vec3(b.ref.com), v.inertia = load_row_major(b.ref.inertia);
+    v.X = b.ref.X, v.node_force = b.node_force;
+    return v;
+}
 
 }  // namespace lfem

@@ -143,12 +143,13 @@ void body_fields(A& a, B& b) {
     def_field(a, b.def);
     a(b.lame.mu), a(b.lame.lambda);
     auto& r = b.ref;
-    a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.boundary), a(r.boundary_nodes);
-    a(r.feature_nodes), a(r.edge_length), a(r.total_mass), a(r.com), a(r.stable_step), a(r.inertia);
+    a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.surface.triangles), a(r.surface.nodes);
+    a(r.surface.feature_nodes), a(r.surface.edge_length), a(r.total_mass), a(r.com), a(r.stable_step), a(r.inertia);
     a(r.numbering.node_of_api), a(r.numbering.api_of_node), a(r.numbering.api_of_tet);
     auto& s = b.state;
     a(s.x), a(s.v_half), a(s.elastic), a(s.tet_rotation), a(s.contact_force), a(s.h_last);
-    a(s.strain_energy), a(s.stiffening), a(s.rotation), a(s.angular_momentum), a(s.center), a(s.velocity);
+    a(s.strain_energy), a(s.stiffening), a(s.global.rotation), a(s.global.angular_momentum), a(s.global.center);
+    a(s.global.velocity);
     a(s.shape_pose);
     a(b.node_mode), a(b.prescribed_velocity), a(b.node_force);
     uint64_t shapes = b.shapes.size();
@@ -173,12 +174,12 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(r.X.size() % 3 == 0, "bad reference positions");
     const std::size_t n = r.X.size() / 3, t = r.tets.size() / 4;
     require(r.tets.size() % 4 == 0 && r.mass.size() == n && r.Dm_inv.size() == 9 * t &&
-                r.volume.size() == t && r.boundary.size() % 3 == 0,
+                r.volume.size() == t && r.surface.triangles.size() % 3 == 0,
             "array sizes disagree");
     for (uint32_t i : r.tets) require(i < n, "tet node index out of range");
-    for (uint32_t i : r.boundary) require(i < n, "boundary node index out of range");
-    for (uint32_t i : r.boundary_nodes) require(i < n, "boundary node out of range");
-    for (uint32_t i : r.feature_nodes) require(i < n, "feature node out of range");
+    for (uint32_t i : r.surface.triangles) require(i < n, "boundary node index out of range");
+    for (uint32_t i : r.surface.nodes) require(i < n, "boundary node out of range");
+    for (uint32_t i : r.surface.feature_nodes) require(i < n, "feature node out of range");
     require(n <= UINT32_MAX && t <= UINT32_MAX &&
                 r.numbering.consistent(uint32_t(n), uint32_t(t)),
             "bad node or tet numbering");
@@ -217,7 +218,7 @@ void check_image(const WorldImage& im, const std::string& path) {
         if (im.bodies[i].generation != 0) check_body(im.bodies[i], path, i);
     for (uint32_t f : im.free_slots)
         if (f >= im.bodies.size() || im.bodies[f].generation != 0) fail(path, "bad free slot list");
-    for (const ContactRecord& c : im.contacts) {
+    for (const ContactRecord& c : im.state.contacts) {
         const bool ok = c.body_a < im.bodies.size() && c.body_b < im.bodies.size() &&
                         im.bodies[c.body_a].generation != 0 && im.bodies[c.body_b].generation != 0;
         if (!ok) fail(path, "a contact names a missing body");
@@ -248,13 +249,14 @@ const uint32_t kLayout[4] = {uint32_t(sizeof(lfem_world_def)), uint32_t(sizeof(l
 
 void save_checkpoint(const World& world, const std::string& path) {
     Writer w;
-    w(world.def_);
-    counter_fields(w, world.counters_);
-    w(uint64_t(world.slots_.size()));
-    for (const World::Slot& slot : world.slots_) body_fields(w, slot.body);
-    w(world.free_slots_);
-    w(uint64_t(world.contacts_.size()));
-    for (const ContactRecord& c : world.contacts_) contact_fields(w, c);
+    w(world.def());
+    counter_fields(w, world.state().counters);
+    const std::vector<Body>& slots = world.bodies().slots();
+    w(uint64_t(slots.size()));
+    for (const Body& b : slots) body_fields(w, b);
+    w(world.bodies().free_slots());
+    w(uint64_t(world.state().contacts.size()));
+    for (const ContactRecord& c : world.state().contacts) contact_fields(w, c);
 
     std::string file(kMagic, sizeof kMagic);
     put_u32(file, kFormatVersion);
@@ -312,7 +314,7 @@ WorldImage read_checkpoint(const std::string& path) {
     Reader r(path, payload, std::size_t(size));
     WorldImage im;
     r(im.def);
-    counter_fields(r, im.counters);
+    counter_fields(r, im.state.counters);
     uint64_t slots = 0;
     r(slots);
     if (slots > size) fail(path, "truncated (slot count)");
@@ -322,8 +324,8 @@ WorldImage read_checkpoint(const std::string& path) {
     uint64_t contacts = 0;
     r(contacts);
     if (contacts > size) fail(path, "truncated (contact count)");
-    im.contacts.resize(std::size_t(contacts));
-    for (ContactRecord& c : im.contacts) contact_fields(r, c);
+    im.state.contacts.resize(std::size_t(contacts));
+    for (ContactRecord& c : im.state.contacts) contact_fields(r, c);
     if (!r.at_end()) fail(path, "has bytes after its last record");
     check_image(im, path);
     return im;

@@ -14,8 +14,7 @@ struct WorldImage {
     lfem_world_def def{};
     std::vector<Body> bodies;        // one per slot; generation 0 = a free slot
     std::vector<uint32_t> free_slots;
-    WorldCounters counters;
-    std::vector<ContactRecord> contacts;  // also the warm start of the next contact solve
+    WorldState state;                // counters and contacts (the warm start of the next solve)
 };
 
 // Writes `world` to `path`: first to "<path>.tmp", then renamed over `path`, so an existing

@@ -1,0 +1,39 @@
+#include "contact/contact_bodies.h"
+
+namespace lfem {
+
+void ContactBodies::clear(uint32_t slot_count) {
+    bodies_.clear();
+    body_of_slot_.assign(slot_count, UINT32_MAX);
+    movable_ = 0;
+}
+
+void ContactBodies::add(const ContactBodyInput& in) {
+    const bool dynamic = in.type == LFEM_BODY_DEFORMABLE || in.type == LFEM_BODY_RIGID;
+    ContactBody cb;
+    cb.slot = in.slot;
+    cb.triangles = in.surface->triangles.data();
+    cb.triangle_count = in.surface->triangle_count();
+    const std::vector<uint32_t>& slaves = dynamic ? in.surface->nodes : in.surface->feature_nodes;
+    cb.nodes = slaves.data();
+    cb.node_count = uint32_t(slaves.size());
+    cb.total_nodes = in.node_count;
+    cb.x = in.x;
+    cb.x_start = in.type == LFEM_BODY_STATIC ? in.x : in.x_start;
+    cb.v_last = in.type == LFEM_BODY_DEFORMABLE ? in.v_last : nullptr;
+    cb.inv_mass = in.type == LFEM_BODY_DEFORMABLE ? in.inv_mass : nullptr;
+    cb.rigid = in.type == LFEM_BODY_RIGID ? in.rigid : nullptr;
+    cb.friction = in.friction;
+    cb.category = in.category;
+    cb.mask = in.mask;
+    cb.edge_length = in.surface->edge_length;
+    cb.shapes = in.shapes;
+    cb.shape_count = in.shape_count;
+    cb.shape_pose = in.shape_pose;
+    cb.shape_pose_start = in.type == LFEM_BODY_KINEMATIC ? in.shape_pose_start : in.shape_pose;
+    body_of_slot_[in.slot] = uint32_t(bodies_.size());
+    bodies_.push_back(cb);
+    movable_ += dynamic;
+}
+
+}  // namespace lfem

@@ -1,0 +1,32 @@
+// The tolerances of contact detection, all relative to the boundary edge length l of the
+// body whose face (or, for rigid shapes, whose node) is tested. Shared by the broad phase,
+// which grows its boxes by them, and the narrow phase, which applies them.
+#pragma once
+
+#include <cstdint>
+
+namespace lfem {
+
+// Capture band: a node up to 0.05 l in front of a face at the end of the step is kept as a
+// (possibly inactive) constraint, so resting contacts do not flicker in and out.
+constexpr double kCaptureBand = 0.05;
+// Depth allowance: a node that starts the step behind a face is that face's only as deep as
+// the previous step left that (node, body) pair: a kept overlap or the solver's residual, times
+// 1.25, plus 1e-3 l. Any deeper and the node is not inside the body at all: above a thin
+// plate, it lies 'behind' the plate's far face by the plate's thickness plus its height, and
+// pulling it through would be a disaster. Paths that cross a face in this step are found by
+// the crossing test, not by depth.
+constexpr double kResidualDepth = 1e-3;
+// Bodies created overlapping: a node up to 0.5 l behind a face it was never in contact with is
+// taken as inside (and let out gradually) only if nothing of the other body lies between it
+// and the face, i.e. the face really is the nearest way out.
+constexpr double kInitialDepth = 0.5;
+// Edge tolerance: barycentric weights down to -0.01 count as inside, so nodes on a shared edge
+// do not drop out of both neighbouring faces.
+constexpr double kEdgeTolerance = 0.01;
+// An overlap found at the start of a step is removed over several steps, 20 % per step, but
+// never faster than 1e-3 l per step, rather than in one violent jump.
+constexpr double kOverlapRecovery = 0.2;
+constexpr double kMaxRecovery = 1e-3;
+
+}  // namespace lfem

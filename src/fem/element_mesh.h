@@ -1,0 +1,26 @@
+// What the element kernels compute on: a body's reference mesh, fixed once the mesh is added
+// (reference nodes, tets, the inverse reference edge matrices, volumes, lumped masses and the
+// colouring of the parallel element loop), borrowed from whoever owns it. The deformed state
+// comes separately, as spans, to each kernel.
+#pragma once
+
+#include <cstdint>
+
+#include "common/span.h"
+#include "fem/element_colouring.h"
+
+namespace lfem {
+
+struct ElementMesh {
+    Span<const double> X;          // 3 per node: reference positions (m)
+    Span<const uint32_t> tets;     // 4 node indices per tet
+    Span<const double> Dm_inv;     // 9 per tet: inverse reference edge matrix (column-major)
+    Span<const double> volume;     // per tet: reference volume (m^3)
+    Span<const double> mass;       // per node: lumped mass (kg)
+    const ElementColouring* colouring = nullptr;  // blocks of tets for the parallel loop
+
+    uint32_t node_count() const { return uint32_t(X.size() / 3); }
+    uint32_t tet_count() const { return uint32_t(volume.size()); }
+};
+
+}  // namespace lfem

@@ -1,0 +1,17 @@
+// The reference data of each tet and the lumped (diagonal) mass matrix M of eq. (1): every
+// tet gives a quarter of its mass rho V to each of its nodes. With it the central difference
+// (eq. 3) needs no global matrix: M is a number per node.
+#pragma once
+
+#include <cstdint>
+
+namespace lfem {
+
+// For tets [first, end) of `tets` (4 node indices each into X, 3 per node): the inverse
+// reference edge matrix Dm^-1 (9 per tet, column-major, Dm = [X1-X0, X2-X0, X3-X0]), the
+// reference volume det(Dm)/6, and rho V / 4 added to the mass of each of the tet's nodes. The
+// output arrays are indexed by tet and node like the input.
+void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
+                        double density, double* Dm_inv, double* volume, double* mass);
+
+}  // namespace lfem

@@ -1,0 +1,48 @@
+#include "mesh/surface.h"
+
+#include <cmath>
+
+#include "common/math.h"
+
+namespace lfem {
+
+void compute_surface_data(const double* X, uint32_t node_count, Surface& s) {
+    const std::vector<uint32_t>& tri = s.triangles;
+    std::vector<uint8_t> on_boundary(node_count, 0);
+    double edges = 0.0;
+    for (std::size_t t = 0; t < tri.size(); t += 3)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t i = tri[t + v], j = tri[t + (v + 1) % 3];
+            on_boundary[i] = 1;
+            edges += (Vec3(&X[3 * i]) - Vec3(&X[3 * j])).norm();
+        }
+    s.edge_length = edges / double(tri.size());
+    s.nodes.clear();
+    for (uint32_t i = 0; i < on_boundary.size(); ++i)
+        if (on_boundary[i]) s.nodes.push_back(i);
+    // Feature nodes: where the surface bends by more than 15 degrees (edges, corners). A
+    // node inside a flat face of an immovable body adds nothing the other body's nodes do
+    // not already enforce, and as a second, redundant support it makes the load jump
+    // between the two from step to step (a soft cube resting on a floor shook at 1e-4 m/s
+    // with them, 2e-6 m/s without).
+    std::vector<double> normal(3 * std::size_t(node_count), 0.0), face(3 * (tri.size() / 3));
+    for (std::size_t t = 0; t < tri.size(); t += 3) {
+        const uint32_t* f = &tri[t];
+        const Vec3 n = (Vec3(&X[3 * f[1]]) - Vec3(&X[3 * f[0]])).cross(Vec3(&X[3 * f[2]]) - Vec3(&X[3 * f[0]]));
+        for (int k = 0; k < 3; ++k) face[t + k] = n[k];
+        for (int v = 0; v < 3; ++v)
+            for (int k = 0; k < 3; ++k) normal[3 * f[v] + k] += n[k];
+    }
+    std::vector<uint8_t> feature(on_boundary.size(), 0);
+    const double cos15 = std::cos(15.0 * 3.14159265358979323846 / 180.0);
+    for (std::size_t t = 0; t < tri.size(); t += 3)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t i = tri[t + v];
+            if (Vec3(&normal[3 * i]).normalized().dot(Vec3(&face[t]).normalized()) < cos15) feature[i] = 1;
+        }
+    s.feature_nodes.clear();
+    for (uint32_t i = 0; i < feature.size(); ++i)
+        if (feature[i]) s.feature_nodes.push_back(i);
+}
+
+}  // namespace lfem

@@ -1,0 +1,207 @@
+// Mesh ingestion: a body receives tets (or, static and kinematic bodies, a triangle surface or
+// rigid shapes). Each call builds the new reference and state beside the old ones and swaps
+// them in only at the end, so any failure (a bad mesh, out of memory) leaves the body
+// untouched.
+#include <algorithm>
+#include <string>
+
+#include "common/error.h"
+#include "fem/lumped_mass.h"
+#include "fem/stable_step.h"
+#include "mesh/boundary.h"
+#include "mesh/mesh_check.h"
+#include "rigid/global_rotation.h"
+#include "world/world.h"
+
+namespace lfem {
+namespace {
+
+// The body's reference with the new mesh appended, in the order of node_ordering.h (locality
+// of the element loop): everything from here on sees the reordered mesh, the caller its own
+// numbering. The reordered copies go as soon as they are appended (peak memory).
+BodyReference append_reference(const Body& body, const double* positions, uint32_t node_count,
+                               const uint32_t* tets, uint32_t tet_count, ThreadPool* pool) {
+    BodyReference ref = body.ref;
+    const uint32_t old_nodes = ref.node_count(), old_tets = ref.tet_count();
+    {
+        LocalityOrder order = order_for_locality(positions, node_count, tets, tet_count);
+        ref.numbering.append(order, old_nodes, old_tets);
+        ref.X.insert(ref.X.end(), order.positions.begin(), order.positions.end());
+        ref.tets.reserve(ref.tets.size() + order.tets.size());
+        for (uint32_t v : order.tets) ref.tets.push_back(v + old_nodes);
+    }
+    const uint32_t* new_tets = &ref.tets[4 * std::size_t(old_tets)];
+    ref.mass.resize(ref.X.size() / 3, 0.0);
+    std::vector<uint32_t> boundary = extract_boundary_triangles(new_tets, tet_count);
+    ref.surface.triangles.insert(ref.surface.triangles.end(), boundary.begin(), boundary.end());
+    compute_surface_data(ref.X.data(), ref.node_count(), ref.surface);
+    ref.Dm_inv.resize(9 * std::size_t(old_tets + tet_count));
+    ref.volume.resize(old_tets + tet_count);
+    add_reference_tets(ref.X.data(), ref.tets.data(), old_tets, old_tets + tet_count, body.def.density,
+                       ref.Dm_inv.data(), ref.volume.data(), ref.mass.data());
+    const uint32_t n = ref.node_count();
+    ref.total_mass = 0.0;
+    for (double m : ref.mass) ref.total_mass += m;
+    const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
+    for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
+    ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), n);
+    if (body.is_deformable()) ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame, pool).omega_max;
+    if (body.is_rigid()) {
+        // The inertia of the lumped masses about the centre of mass, in the reference frame.
+        const Mat3 I = inertia_tensor(ref.mass.data(), ref.X.data(), n, C);
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) ref.inertia[3 * r + c] = I(r, c);
+    }
+    return ref;
+}
+
+// The body's state with the new nodes appended: existing nodes continue from their
+// synchronized velocities, new ones get the def's; the kinetic energy they bring is added to
+// *added_kinetic.
+BodyState append_state(const World& world, const Body& body, const BodyReference& ref,
+                       uint32_t old_nodes, const double* new_positions, double* added_kinetic) {
+    const uint32_t n = ref.node_count();
+    BodyState state = body.state;
+    std::vector<double> v(3 * std::size_t(n), 0.0);
+    if (old_nodes) world.synchronized_velocities(body, v.data());
+    state.x.insert(state.x.end(), new_positions, new_positions + 3 * std::size_t(n - old_nodes));
+    const Vec3 c = center_of_mass(ref.mass.data(), state.x.data(), n);
+    const Vec3 lin(body.def.linear_velocity), ang(body.def.angular_velocity);
+    for (uint32_t i = old_nodes; i < n; ++i) {
+        const Vec3 r = Vec3(&state.x[3 * i]) - c;
+        const Vec3 vi = lin + ang.cross(r);
+        for (int k = 0; k < 3; ++k) v[3 * i + k] = vi[k];
+        *added_kinetic += 0.5 * ref.mass[i] * vi.squaredNorm();
+    }
+    state.v_half = std::move(v);
+    state.h_last = 0.0;
+    state.elastic.assign(3 * std::size_t(n), 0.0);
+    if (body.is_deformable() && body.def.model == LFEM_MODEL_COROTATIONAL) {
+        state.tet_rotation.resize(4 * std::size_t(ref.tet_count()), 0.0f);
+        for (uint32_t e = body.ref.tet_count(); e < ref.tet_count(); ++e) state.tet_rotation[4 * e] = 1.0f;
+    }
+    for (int k = 0; k < 3; ++k) state.global.center[k] = c[k];
+    return state;
+}
+
+// The global motion of a new mesh, and its first elastic forces.
+void start_motion(Body& candidate, BodyState& state, ThreadPool* pool) {
+    const BodyReference& ref = candidate.ref;
+    const uint32_t n = ref.node_count();
+    const Vec3 c(state.global.center), C(ref.com);
+    const Vec3 lin(candidate.def.linear_velocity), ang(candidate.def.angular_velocity);
+    if (candidate.is_paper()) {
+        // Frame: fit to the current nodes (identity for an undeformed new body); L of eq. (2)
+        // from the nodes' velocities.
+        Quat q = load_quaternion(state.global.rotation);
+        fit_global_rotation(ref.mass.data(), state.x.data(), ref.X.data(), n, c, C, q);
+        store_quaternion(q, state.global.rotation);
+        const Vec3 L = angular_momentum(ref.mass.data(), state.x.data(), state.v_half.data(), n, c);
+        for (int k = 0; k < 3; ++k) state.global.angular_momentum[k] = L[k];
+    }
+    if (candidate.is_deformable()) update_elastic_forces(candidate, state, pool);
+    if (candidate.is_rigid()) {
+        // The paper's global motion alone: centre of mass, rotation (identity: the reference
+        // is the mesh as given) and angular momentum L = I omega of the def's spin.
+        const Vec3 L = load_row_major(ref.inertia) * ang;
+        for (int k = 0; k < 3; ++k) {
+            state.global.center[k] = C[k];
+            state.global.velocity[k] = lin[k];
+            state.global.angular_momentum[k] = L[k];
+        }
+        store_quaternion(Quat::Identity(), state.global.rotation);
+    }
+}
+
+}  // namespace
+
+void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_count, const uint32_t* tets,
+                     uint32_t tet_count) {
+    Body& body = bodies_.get(handle);
+    check_tet_mesh(positions, node_count, tets, tet_count);
+    if (body.is_rigid() && body.has_mesh())
+        throw Error(LFEM_INVALID_ARGUMENT, "a rigid body takes one mesh (give it all its parts at once)");
+    const uint32_t old_nodes = body.ref.node_count();
+    const uint32_t old_tets = body.ref.tet_count();
+    if (uint64_t(old_nodes) + node_count > 0xFFFFFFF0ull || uint64_t(old_tets) + tet_count > 0xFFFFFFF0ull)
+        throw Error(LFEM_INVALID_ARGUMENT, "the body would exceed 2^32 nodes or tets");
+
+    Body candidate;
+    candidate.def = body.def;
+    candidate.lame = body.lame;
+    candidate.ref = append_reference(body, positions, node_count, tets, tet_count, pool_.get());
+    double added_kinetic = 0.0;
+    BodyState state = append_state(*this, body, candidate.ref, old_nodes,
+                                   &candidate.ref.X[3 * std::size_t(old_nodes)], &added_kinetic);
+    const uint32_t n = candidate.ref.node_count();
+    candidate.node_mode = body.node_mode;
+    candidate.node_mode.resize(n, NodeMode::free);
+    std::vector<double> prescribed = body.prescribed_velocity;
+    if (!prescribed.empty()) prescribed.resize(3 * std::size_t(n), 0.0);
+    std::vector<double> forces = body.node_force;
+    if (!forces.empty()) forces.resize(3 * std::size_t(n), 0.0);
+    start_motion(candidate, state, pool_.get());
+    // Commit: moves only from here on (no allocation, nothing can fail).
+    body.ref = std::move(candidate.ref);
+    body.state = std::move(state);
+    body.node_mode = std::move(candidate.node_mode);
+    body.prescribed_velocity = std::move(prescribed);
+    body.node_force = std::move(forces);
+    if (body.is_dynamic()) state_.counters.initial_energy += added_kinetic;
+    state_.counters.scan_overlaps = true;
+}
+
+void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_t node_count,
+                              const uint32_t* triangles, uint32_t triangle_count) {
+    Body& body = bodies_.get(handle);
+    if (body.is_dynamic()) throw Error(LFEM_INVALID_ARGUMENT, "triangle meshes belong to static or kinematic bodies");
+    if (body.has_mesh()) throw Error(LFEM_INVALID_ARGUMENT, "the body already has a mesh");
+    // Each triangle: indices in range, three different nodes, an area above 1e-12 of its
+    // longest edge squared (the same round-off argument as for tets).
+    for (uint32_t t = 0; t < triangle_count; ++t) {
+        const uint32_t* f = &triangles[3 * t];
+        for (int v = 0; v < 3; ++v)
+            if (f[v] >= node_count)
+                throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " has node index " +
+                                                   std::to_string(f[v]) + ", beyond the " +
+                                                   std::to_string(node_count) + " nodes");
+        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+            throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " repeats a node");
+        const Vec3 a(&positions[3 * f[0]]), b(&positions[3 * f[1]]), c(&positions[3 * f[2]]);
+        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        if (!((b - a).cross(c - a).norm() > 1e-12 * longest * longest))
+            throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " has no area");
+    }
+    BodyReference ref;
+    ref.X.assign(positions, positions + 3 * std::size_t(node_count));
+    ref.surface.triangles.assign(triangles, triangles + 3 * std::size_t(triangle_count));
+    compute_surface_data(ref.X.data(), ref.node_count(), ref.surface);
+    BodyState state = body.state;
+    state.x = ref.X;
+    state.v_half.assign(ref.X.size(), 0.0);
+    if (body.shapes.empty()) {  // kinematic pivot: the vertices' centroid
+        Vec3 c = Vec3::Zero();
+        for (uint32_t i = 0; i < node_count; ++i) c += Vec3(&positions[3 * i]);
+        for (int k = 0; k < 3; ++k) state.global.center[k] = c[k] / node_count;
+    }
+    std::vector<NodeMode> modes(node_count, NodeMode::free);
+    body.ref = std::move(ref);
+    body.state = std::move(state);
+    body.node_mode = std::move(modes);
+    state_.counters.scan_overlaps = true;
+}
+
+uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const double pose[7]) {
+    Body& body = bodies_.get(handle);  // a static or kinematic one (checked by the shim)
+    RigidShape copy = shape;
+    body.shapes.reserve(body.shapes.size() + 1);
+    body.state.shape_pose.reserve(body.state.shape_pose.size() + 7);
+    // Nothing below allocates: the body changes all at once.
+    if (!body.has_geometry())
+        for (int k = 0; k < 3; ++k) body.state.global.center[k] = pose[k];  // kinematic pivot
+    body.shapes.push_back(std::move(copy));
+    body.state.shape_pose.insert(body.state.shape_pose.end(), pose, pose + 7);
+    return uint32_t(body.shapes.size() - 1);
+}
+
+}  // namespace lfem

@@ -1,0 +1,80 @@
+#include "world/body_registry.h"
+
+#include <algorithm>
+#include <atomic>
+#include <string>
+
+#include "common/error.h"
+
+namespace lfem {
+namespace {
+
+// Generations come from one process-wide counter, so a handle of another world (foreign) can
+// never match a slot's generation in this one: it is detected like a stale handle.
+std::atomic<uint32_t> g_next_generation{1};
+
+uint32_t next_generation() {
+    uint32_t g = g_next_generation.fetch_add(1, std::memory_order_relaxed);
+    if (g == 0) g = g_next_generation.fetch_add(1, std::memory_order_relaxed);  // wrapped
+    return g;
+}
+
+}  // namespace
+
+lfem_body BodyRegistry::create(const lfem_body_def& def) {
+    uint32_t index;
+    if (!free_slots_.empty()) {
+        index = free_slots_.back();
+    } else {
+        slots_.emplace_back();  // may throw bad_alloc before anything changed
+        index = uint32_t(slots_.size() - 1);
+    }
+    Body body;
+    body.def = def;
+    body.lame = lame_from_young_poisson(def.young_modulus, def.poisson_ratio);
+    body.generation = next_generation();
+    if (!free_slots_.empty() && free_slots_.back() == index) free_slots_.pop_back();
+    slots_[index] = std::move(body);
+    return lfem_body{index, slots_[index].generation};
+}
+
+bool BodyRegistry::is_valid(lfem_body h) const {
+    return h.generation != 0 && h.index < slots_.size() && slots_[h.index].generation == h.generation;
+}
+
+Body& BodyRegistry::get(lfem_body h) { return const_cast<Body&>(static_cast<const BodyRegistry&>(*this).get(h)); }
+
+const Body& BodyRegistry::get(lfem_body h) const {
+    if (h.generation == 0 && h.index == 0) throw Error(LFEM_INVALID_HANDLE, "null body handle");
+    if (!is_valid(h))
+        throw Error(LFEM_INVALID_HANDLE, "body handle {" + std::to_string(h.index) + ", " +
+                                             std::to_string(h.generation) +
+                                             "} is stale or belongs to another world");
+    return slots_[h.index];
+}
+
+void BodyRegistry::destroy(lfem_body h) {
+    Body& b = get(h);
+    free_slots_.reserve(free_slots_.size() + 1);  // the only allocation: before any change
+    b = Body{};                                   // generation 0: the slot is free
+    free_slots_.push_back(h.index);
+}
+
+uint32_t BodyRegistry::live_count() const {
+    uint32_t n = 0;
+    for_each([&](const Body&, uint32_t) { ++n; });
+    return n;
+}
+
+void BodyRegistry::restore(std::vector<Body>&& slots, std::vector<uint32_t>&& free_slots) {
+    uint32_t highest = 0;
+    for (const Body& b : slots) highest = std::max(highest, b.generation);
+    slots_ = std::move(slots);
+    free_slots_ = std::move(free_slots);
+    uint32_t next = g_next_generation.load(std::memory_order_relaxed);
+    while (next <= highest &&
+           !g_next_generation.compare_exchange_weak(next, highest + 1, std::memory_order_relaxed)) {
+    }
+}
+
+}  // namespace lfem

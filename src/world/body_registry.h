@@ -1,0 +1,51 @@
+// The bodies of a world in generation-checked slots: handles {index, generation} that stay
+// answerable after their body is gone (stale) or when they come from another world (foreign),
+// as in Box2D v3. Every loop over the bodies runs in slot order, so results are deterministic.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lfem.h"
+#include "world/body.h"
+
+namespace lfem {
+
+class BodyRegistry {
+public:
+    // A new body (generation from the process-wide counter) in a free slot or a new one.
+    lfem_body create(const lfem_body_def& def);
+    // Frees the body's slot (throws Error(LFEM_INVALID_HANDLE) for a bad handle).
+    void destroy(lfem_body handle);
+    bool is_valid(lfem_body handle) const;
+    // The body of a handle; throws Error(LFEM_INVALID_HANDLE) for a stale, foreign or null one.
+    Body& get(lfem_body handle);
+    const Body& get(lfem_body handle) const;
+    uint32_t live_count() const;
+
+    // Slots by index, live or free (generation 0), in the order every loop uses.
+    uint32_t slot_count() const { return uint32_t(slots_.size()); }
+    Body& slot(uint32_t i) { return slots_[i]; }
+    const Body& slot(uint32_t i) const { return slots_[i]; }
+    bool live(uint32_t i) const { return slots_[i].generation != 0; }
+    lfem_body handle_of(uint32_t i) const { return lfem_body{i, slots_[i].generation}; }
+    // f(body, slot) for the live bodies in slot order.
+    template <class F>
+    void for_each(F&& f) const {
+        for (uint32_t i = 0; i < slots_.size(); ++i)
+            if (slots_[i].generation != 0) f(slots_[i], i);
+    }
+
+    // Checkpoints: the slots and the free list as they are, and taken over from a file (the
+    // process-wide generation counter moves beyond the loaded generations, so that no handle of
+    // a destroyed body can become valid again).
+    const std::vector<Body>& slots() const { return slots_; }
+    const std::vector<uint32_t>& free_slots() const { return free_slots_; }
+    void restore(std::vector<Body>&& slots, std::vector<uint32_t>&& free_slots);
+
+private:
+    std::vector<Body> slots_;  // generation 0 = a free slot
+    std::vector<uint32_t> free_slots_;
+};
+
+}  // namespace lfem

@@ -1,0 +1,67 @@
+// What the caller changes on a body between steps: velocities, supports (fixed and prescribed
+// nodes), node forces, a kinematic body's velocity. Each change is all or nothing: the only
+// allocation comes before anything is written.
+#include <algorithm>
+
+#include "rigid/global_rotation.h"
+#include "world/world.h"
+
+namespace lfem {
+
+void World::set_velocities(lfem_body handle, const double* v) {
+    Body& body = bodies_.get(handle);
+    const uint32_t n = body.ref.node_count();
+    double before = 0.0, after = 0.0;
+    if (body.is_deformable()) {
+        std::vector<double> old(3 * std::size_t(n));
+        synchronized_velocities(body, old.data());
+        for (uint32_t i = 0; i < n; ++i) {
+            const double m = body.ref.mass[i];
+            for (int k = 0; k < 3; ++k) {
+                before += 0.5 * m * old[3 * i + k] * old[3 * i + k];
+                after += 0.5 * m * v[3 * i + k] * v[3 * i + k];
+            }
+        }
+    }
+    std::copy(v, v + 3 * std::size_t(n), body.state.v_half.begin());
+    body.state.h_last = 0.0;  // v_half now holds synchronized velocities
+    if (body.is_paper()) {
+        const Vec3 c = center_of_mass(body.ref.mass.data(), body.state.x.data(), n);
+        const Vec3 L = angular_momentum(body.ref.mass.data(), body.state.x.data(), v, n, c);
+        for (int k = 0; k < 3; ++k) body.state.global.angular_momentum[k] = L[k];
+    }
+    state_.counters.external_work += after - before;
+}
+
+void World::set_node_mode(lfem_body handle, const uint32_t* nodes, uint32_t count, NodeMode mode,
+                          const double velocity[3]) {
+    Body& body = bodies_.get(handle);
+    if (mode == NodeMode::prescribed && body.prescribed_velocity.empty())
+        body.prescribed_velocity.assign(3 * std::size_t(body.ref.node_count()), 0.0);
+    for (uint32_t i = 0; i < count; ++i) {
+        body.node_mode[nodes[i]] = mode;
+        if (mode == NodeMode::prescribed)
+            for (int k = 0; k < 3; ++k) body.prescribed_velocity[3 * std::size_t(nodes[i]) + k] = velocity[k];
+    }
+}
+
+void World::set_node_forces(lfem_body handle, const uint32_t* nodes, uint32_t count, const double* forces) {
+    Body& body = bodies_.get(handle);
+    if (body.node_force.empty()) body.node_force.assign(3 * std::size_t(body.ref.node_count()), 0.0);
+    for (uint32_t i = 0; i < count; ++i)
+        std::copy_n(&forces[3 * std::size_t(i)], 3, &body.node_force[3 * std::size_t(nodes[i])]);
+}
+
+void World::clear_node_forces(lfem_body handle) {
+    std::vector<double>().swap(bodies_.get(handle).node_force);  // unused features hold no memory
+}
+
+void World::set_kinematic_velocity(lfem_body handle, const double linear[3], const double angular[3]) {
+    Body& body = bodies_.get(handle);
+    for (int k = 0; k < 3; ++k) {
+        body.def.linear_velocity[k] = linear[k];
+        body.def.angular_velocity[k] = angular[k];
+    }
+}
+
+}  // namespace lfem

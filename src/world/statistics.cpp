@@ -1,0 +1,122 @@
+// What a world reports between steps: the stable limit, the bodies' synchronized velocities,
+// momenta and energies (the run-time error indicators of the energy balance).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "world/world.h"
+
+namespace lfem {
+
+double World::stable_step() const {
+    double h = std::numeric_limits<double>::infinity();
+    bodies_.for_each([&](const Body& b, uint32_t) {
+        if (!b.is_deformable() || !b.has_mesh()) return;
+        // Neo-Hookean stiffness grows with deformation (a crushed tet is stiffer): the limit
+        // at the current nodes. The reference limit already carries the 2 % margin on
+        // omega^2 of its Lanczos estimate; only stiffening beyond it shortens the step. The
+        // other models' stiffness does not depend on the state.
+        // The estimate comes with the elastic forces at x (internal_forces.cpp).
+        const double stiffening = b.state.stiffening / 1.02;
+        h = std::min(h, b.ref.stable_step / std::sqrt(std::max(stiffening, 1.0)));
+    });
+    return h;
+}
+
+void World::synchronized_velocities(const Body& body, double* out) const {
+    const BodyState& s = body.state;
+    const uint32_t n = body.ref.node_count();
+    if (body.is_rigid()) {
+        Vec3 V, omega;
+        rigid_synchronized_velocity(rigid_view(body), s.global, s.x, def_.gravity, s.h_last, V, omega);
+        for (uint32_t i = 0; i < n; ++i) {
+            const Vec3 v = V + omega.cross(Vec3(&s.x[3 * i]) - Vec3(s.global.center));
+            for (int k = 0; k < 3; ++k) out[3 * i + k] = v[k];
+        }
+        return;
+    }
+    if (!body.is_deformable()) {
+        // Static: at rest. Kinematic: rigid motion about the moving centre.
+        const Vec3 lin(body.def.linear_velocity), ang(body.def.angular_velocity);
+        for (uint32_t i = 0; i < n; ++i) {
+            Vec3 v = Vec3::Zero();
+            if (body.is_kinematic()) v = lin + ang.cross(Vec3(&s.x[3 * i]) - Vec3(s.global.center));
+            for (int k = 0; k < 3; ++k) out[3 * i + k] = v[k];
+        }
+        return;
+    }
+    const double h = s.h_last;
+    const double* g = def_.gravity;
+    const auto in_contact = [&](uint32_t i) {
+        return !s.contact_force.empty() && (s.contact_force[3 * i] != 0.0 || s.contact_force[3 * i + 1] != 0.0 ||
+                                            s.contact_force[3 * i + 2] != 0.0);
+    };
+    for (uint32_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            double v = s.v_half[3 * i + k];
+            switch (body.node_mode[i]) {
+                case NodeMode::fixed: v = 0.0; break;
+                case NodeMode::prescribed: v = body.prescribed_velocity[3 * i + k]; break;
+                case NodeMode::free:
+                    // A node pressed by a contact reports its last step's velocity: the
+                    // half-step extrapolation would divide the step-to-step variation of the
+                    // contact force (solver tolerance) by h and show jitter that is not there.
+                    if (h > 0.0 && !(in_contact(i))) {
+                        // v^n = v^{n-1/2} + h/2 a^n with m a^n = R^n - c v^n (central difference)
+                        const double m = body.ref.mass[i];
+                        double R = m * g[k] + s.elastic[3 * i + k];
+                        if (!body.node_force.empty()) R += body.node_force[3 * i + k];
+                        v = (2.0 * m / h * v + R) / (2.0 * m / h + body.def.damping * m);
+                    }
+                    break;
+            }
+            out[3 * i + k] = v;
+        }
+    }
+}
+
+void World::body_momentum(const Body& b, Vec3& P, Vec3& L) const {
+    P = Vec3::Zero(), L = Vec3::Zero();
+    if (b.is_rigid() && b.has_mesh()) {
+        Vec3 V, omega;
+        const Vec3 L_centre =
+            rigid_synchronized_velocity(rigid_view(b), b.state.global, b.state.x, def_.gravity, b.state.h_last, V, omega);
+        P = b.ref.total_mass * V;
+        L = Vec3(b.state.global.center).cross(P) + L_centre;
+    } else if (b.is_deformable() && b.has_mesh()) {
+        std::vector<double> v(b.state.v_half.size());
+        synchronized_velocities(b, v.data());
+        for (uint32_t i = 0; i < b.ref.node_count(); ++i) {
+            const Vec3 vi(&v[3 * i]);
+            P += b.ref.mass[i] * vi;
+            L += b.ref.mass[i] * Vec3(&b.state.x[3 * i]).cross(vi);
+        }
+    }
+}
+
+WorldTotals World::totals() const {
+    WorldTotals t;
+    std::vector<double> v;
+    bodies_.for_each([&](const Body& b, uint32_t) {
+        if (!b.is_dynamic() || !b.has_mesh()) return;
+        Vec3 P, L;
+        if (b.is_rigid()) {
+            t.kinetic_energy += rigid_kinetic_energy(rigid_view(b), b.state.global);
+            body_momentum(b, P, L);
+            t.linear_momentum += P, t.angular_momentum += L;
+            return;
+        }
+        v.resize(b.state.v_half.size());
+        synchronized_velocities(b, v.data());
+        for (uint32_t i = 0; i < b.ref.node_count(); ++i)
+            t.kinetic_energy += 0.5 * b.ref.mass[i] * Vec3(&v[3 * i]).squaredNorm();
+        body_momentum(b, P, L);
+        t.linear_momentum += P, t.angular_momentum += L;
+        t.strain_energy += b.state.strain_energy;
+    });
+    const WorldCounters& c = state_.counters;
+    t.energy_error = t.kinetic_energy + t.strain_energy + c.dissipated_energy - c.external_work - c.initial_energy;
+    return t;
+}
+
+}  // namespace lfem

@@ -1,0 +1,258 @@
+// One sub-step, as the pipeline of DESIGN.md section 1:
+//   predict          central difference (eqs. 1, 3) for the deformable bodies, Newton and
+//                    eq. (2) for the rigid ones: x* from the forces at x^n
+//   move kinematic   kinematic bodies to where their velocity takes them
+//   detect           node-triangle pairs between x^n and x* (eqs. 5, 6), rigid shapes
+//   solve            the forward increment multipliers, friction by eq. (7): x* -> x^{n+1}
+//   commit           velocities, contact forces, energy bookkeeping
+//   rotation update  eq. (2) and the re-fit of the "paper" model's floating frame
+//   element forces   elastic forces at x^{n+1}, element by element (they need the frame)
+//   energy           the sub-step's tallies added up in slot order
+// Each stage is a function over the list of the bodies it concerns, built once per sub-step.
+#include <algorithm>
+
+#include "common/profile.h"
+#include "contact/solve_contact_multipliers.h"
+#include "rigid/global_rotation.h"
+#include "world/world.h"
+
+namespace lfem {
+
+// A body that is big, or that holds more than one thread's share of the tets of all the
+// deformable bodies, runs its node and element loops on the pool, one such body after another.
+// The others run side by side, one body per task, each on one thread: a 6000-tet body has only
+// about 3 element blocks per colour and one node block, too little work per round of the pool
+// to be worth handing out, while sixteen of them keep two threads busy. A lone small body also
+// runs on the pool (there is nothing to put beside it). Either way every loop has the same
+// fixed blocks, so the split changes the speed only, never a bit of the result.
+void World::plan_stages() {
+    StageLists& s = stages_;
+    for (std::vector<uint32_t>* list : {&s.deformable, &s.rigid, &s.kinematic, &s.paper, &s.with_geometry,
+                                        &s.on_pool, &s.side_by_side})
+        list->clear();
+    scratch_.resize(bodies_.slot_count());
+    uint64_t total = 0;
+    for (uint32_t i = 0; i < bodies_.slot_count(); ++i) {
+        scratch_[i].tally = SubstepTally{};
+        scratch_[i].touched = false;
+        const Body& b = bodies_.slot(i);
+        if (!bodies_.live(i) || !b.has_geometry()) continue;
+        s.with_geometry.push_back(i);
+        if (b.is_kinematic()) s.kinematic.push_back(i);
+        if (!b.has_mesh()) continue;
+        if (b.is_rigid()) s.rigid.push_back(i);
+        if (!b.is_deformable()) continue;
+        s.deformable.push_back(i);
+        if (b.is_paper()) s.paper.push_back(i);
+        total += b.ref.tet_count();
+    }
+    const uint64_t threads = pool_ ? pool_->size() : 1;
+    for (uint32_t i : s.deformable) {
+        const uint64_t tets = bodies_.slot(i).ref.tet_count();
+        (tets >= 32 * 1024 || tets * threads > total ? s.on_pool : s.side_by_side).push_back(i);
+    }
+    if (s.side_by_side.size() == 1) {  // nothing to put beside it
+        s.on_pool.push_back(s.side_by_side[0]);
+        s.side_by_side.clear();
+    }
+}
+
+// Calls work(slot, pool) for every deformable body with a mesh: the on_pool bodies one after
+// another with the pool for their own loops, the side_by_side ones side by side on the pool with
+// none. Each call may write only that body's state and scratch.
+template <class Work>
+void World::for_each_deformable(const Work& work) {
+    for (uint32_t i : stages_.on_pool) work(i, pool_.get());
+    parallel_for(pool_.get(), uint32_t(stages_.side_by_side.size()),
+                 [&](uint32_t k) { work(stages_.side_by_side[k], nullptr); });
+}
+
+void World::predict(double h) {
+    PhaseTimer timer(profile_.predictor, stages_.deformable.size() + stages_.rigid.size());
+    for (uint32_t i : stages_.rigid) {
+        Body& b = bodies_.slot(i);
+        StepScratch& sc = scratch_[i];
+        sc.x_start.assign(b.state.x.begin(), b.state.x.end());
+        sc.center_start = Vec3(b.state.global.center);
+        const RigidBodyView view = rigid_view(b);
+        const double h_mid = mid_step(b.state.h_last, h);
+        predict_rigid(view, def_.gravity, b.state.h_last, h, b.state.global, b.state.x);
+        sc.rigid = RigidResponse{};
+        sc.rigid.center = Vec3(b.state.global.center);
+        sc.rigid.inv_mass = h * h_mid / view.mass;
+        sc.rigid.inv_inertia = h * h_mid * rigid_world_inertia(view, b.state.global).inverse();
+    }
+    for_each_deformable([&](uint32_t i, ThreadPool* pool) {
+        Body& b = bodies_.slot(i);
+        StepScratch& sc = scratch_[i];
+        // "paper": the centre at the start of the step, about which eq. (2) takes its torque;
+        // the commit and the rotation update use it too.
+        sc.center_start = b.is_paper() ? center_of_mass(b.ref.mass.data(), b.state.x.data(), b.ref.node_count(), pool)
+                                       : Vec3::Zero();
+        predict_positions(node_loads(b, def_.gravity), b.state.h_last, h, b.is_paper() ? sc.center_start.data() : nullptr,
+                          b.state.x, b.state.v_half, sc.start, pool);
+    });
+}
+
+void World::move_kinematic_bodies(double h) {
+    if (stages_.kinematic.empty()) return;
+    PhaseTimer timer(profile_.kinematic_motion, stages_.kinematic.size());
+    for (uint32_t i : stages_.kinematic) {
+        Body& b = bodies_.slot(i);
+        scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
+        scratch_[i].shape_pose_start.assign(b.state.shape_pose.begin(), b.state.shape_pose.end());
+        move_kinematic(Vec3(b.def.linear_velocity), Vec3(b.def.angular_velocity), h, b.state.global.center, b.state.x,
+                       b.state.shape_pose);
+    }
+}
+
+// Detection between x^n and x*: every body with geometry takes part (contact decides what it
+// makes of each); pairs found again are warm-started from the last sub-step's list.
+void World::detect() {
+    contact_bodies_.clear(bodies_.slot_count());
+    for (uint32_t i : stages_.with_geometry) {
+        Body& b = bodies_.slot(i);
+        StepScratch& sc = scratch_[i];
+        ContactBodyInput in;
+        in.slot = i;
+        in.type = b.def.type;
+        in.surface = &b.ref.surface;
+        in.node_count = b.ref.node_count();
+        in.x = b.state.x.data();
+        in.x_start = b.is_deformable() ? sc.start.x.data() : sc.x_start.data();
+        in.v_last = sc.start.v.data();
+        in.inv_mass = sc.start.inv_mass.data();
+        in.rigid = &sc.rigid;
+        in.friction = b.def.friction;
+        in.category = b.def.category_bits;
+        in.mask = b.def.mask_bits;
+        in.shapes = b.shapes.data();
+        in.shape_count = uint32_t(b.shapes.size());
+        in.shape_pose = b.state.shape_pose.data();
+        in.shape_pose_start = sc.shape_pose_start.data();
+        contact_bodies_.add(in);
+    }
+    detected_.clear();
+    WorldCounters& c = state_.counters;
+    c.solver_iterations = 0;
+    c.solver_residual = 0.0;
+    c.max_penetration = 0.0;
+    if (!contact_bodies_.may_touch()) return;
+    detect_node_triangle(contact_bodies_.bodies(), state_.contacts, c.scan_overlaps, detection_, detected_, profile_,
+                         pool_.get());
+    c.scan_overlaps = false;
+}
+
+// The multipliers move the predicted positions to x^{n+1}. Every detected pair is kept, also
+// those at zero force: the next step warm-starts from all of them, so redundant pairs (a node of
+// each body pressing the other's face) keep the same split of the load from step to step
+// instead of trading it back and forth. Only pairs that carry force are contacts.
+void World::solve(double h) {
+    if (!detected_.empty()) {
+        const ContactSolveResult res =
+            solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_,
+                                      def_.contact_iterations, def_.contact_tolerance, h, profile_, pool_.get());
+        state_.counters.solver_iterations = res.iterations;
+        state_.counters.solver_residual = res.residual;
+        state_.counters.max_penetration = res.max_penetration;
+    }
+    state_.contacts.swap(detected_);
+    for (const ContactRecord& r : state_.contacts)
+        if (r.active()) scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
+}
+
+void World::commit(double h) {
+    PhaseTimer timer(profile_.commit, stages_.deformable.size() + stages_.rigid.size());
+    for (uint32_t i : stages_.rigid) {
+        Body& b = bodies_.slot(i);
+        StepScratch& sc = scratch_[i];
+        const RigidBodyView view = rigid_view(b);
+        sc.tally.contact_work += commit_rigid(view, h, sc.rigid.dc, sc.rigid.dtheta, b.state.global, b.state.x);
+        b.state.h_last = h;
+        // Work of gravity and node forces on the moving centre (node forces' torques act
+        // through eq. 2; their work is booked with the translation only).
+        const Vec3 dc = Vec3(b.state.global.center) - sc.center_start;
+        Vec3 force = b.ref.total_mass * Vec3(def_.gravity);
+        for (std::size_t k = 0; k < b.node_force.size(); k += 3) force += Vec3(&b.node_force[k]);
+        sc.tally.work += force.dot(dc);
+        sc.tally.kinetic += rigid_kinetic_energy(view, b.state.global);
+        for (std::size_t k = 0; k < b.state.x.size(); ++k) b.state.v_half[k] = (b.state.x[k] - sc.x_start[k]) / h;
+    }
+    for_each_deformable([&](uint32_t i, ThreadPool* pool) {
+        Body& b = bodies_.slot(i);
+        StepScratch& sc = scratch_[i];
+        if (sc.touched) b.state.contact_force.resize(3 * std::size_t(b.ref.node_count()));
+        else std::vector<double>().swap(b.state.contact_force);  // nothing held while not touching
+        const CommitSums sums =
+            commit_positions(node_loads(b, def_.gravity), h, sc.start, b.is_paper() ? sc.center_start.data() : nullptr,
+                             b.state.x, b.state.v_half, b.state.contact_force, pool);
+        sc.tally.kinetic += sums.kinetic;
+        sc.tally.work += sums.work;
+        sc.tally.contact_work += sums.contact_work;
+        sc.tally.damping += sums.damping;
+        sc.torque = sums.torque;
+        b.state.h_last = h;
+    });
+}
+
+void World::update_global_rotations(double h) {
+    if (stages_.paper.empty()) return;
+    PhaseTimer timer(profile_.global_rotation, stages_.paper.size());
+    for_each_deformable([&](uint32_t i, ThreadPool* pool) {
+        Body& b = bodies_.slot(i);
+        if (!b.is_paper()) return;
+        StepScratch& sc = scratch_[i];
+        const double drift = update_global_rotation(b.ref.mass.data(), sc.start.x.data(), b.state.x.data(), b.ref.X.data(),
+                                                    b.ref.node_count(), Vec3(b.ref.com), sc.center_start, sc.torque, h,
+                                                    b.state.global, pool);
+        sc.tally.drift = std::max(sc.tally.drift, drift);
+    });
+}
+
+void World::compute_element_forces() {
+    PhaseTimer timer(profile_.internal_forces, stages_.deformable.size());
+    for_each_deformable([&](uint32_t i, ThreadPool* pool) {
+        Body& b = bodies_.slot(i);
+        update_elastic_forces(b, b.state, pool);
+    });
+}
+
+// kinetic, strain: of the new state; work: what gravity, forces, supports and contacts did
+// over the step (added to `work`). The tallies are added up in slot order (the bodies may have
+// run side by side).
+void World::add_up_energy(double h, double& kinetic, double& strain, double& work) {
+    SubstepTally tally;
+    for (const StepScratch& sc : scratch_) {
+        const SubstepTally& t = sc.tally;
+        tally.kinetic += t.kinetic;
+        tally.work += t.work;
+        tally.contact_work += t.contact_work;
+        tally.damping += t.damping;
+        tally.drift = std::max(tally.drift, t.drift);
+    }
+    for (uint32_t i : stages_.deformable) strain += bodies_.slot(i).state.strain_energy;
+    kinetic = tally.kinetic;
+    work += tally.work + tally.contact_work;
+    WorldCounters& c = state_.counters;
+    c.external_work += tally.work;
+    c.dissipated_energy += tally.damping - tally.contact_work;
+    c.rotation_drift = tally.drift;
+    c.time += h;
+    c.steps += 1;
+    c.step_size = h;
+}
+
+void World::substep(double h, double& kinetic, double& strain, double& work) {
+    plan_stages();
+    profile_.substeps += 1;
+    predict(h);
+    move_kinematic_bodies(h);
+    detect();
+    solve(h);
+    commit(h);
+    update_global_rotations(h);
+    compute_element_forces();
+    add_up_energy(h, kinetic, strain, work);
+}
+
+}  // namespace lfem
