@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "fem/tet_element.h"
+#include "common/math.h"
 #include "lfem.h"
 
 namespace lfem {
@@ -21,12 +21,8 @@ struct RigidShape {
 // A shape's placement: world = center + R(rotation) local. 7 doubles: x, y, z, qw, qx, qy, qz.
 struct ShapePose {
     Vec3 center;
-    Eigen::Quaterniond rotation;
-    static ShapePose load(const double* p) { return {Vec3(p[0], p[1], p[2]), Eigen::Quaterniond(p[3], p[4], p[5], p[6])}; }
-    void store(double* p) const {
-        for (int k = 0; k < 3; ++k) p[k] = center[k];
-        p[3] = rotation.w(), p[4] = rotation.x(), p[5] = rotation.y(), p[6] = rotation.z();
-    }
+    Quat rotation;
+    static ShapePose load(const double* p) { return {Vec3(p[0], p[1], p[2]), load_quaternion(p + 3)}; }
 };
 
 // Signed distance (m, negative inside) from x to the posed shape and the outward unit normal of

@@ -215,17 +215,9 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - group_start).count();
 }
 
-}  // namespace
-
-ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
-                                             const std::vector<uint32_t>& body_of_slot,
-                                             std::vector<ContactRecord>& records,
-                                             uint32_t max_iterations, double relative_tolerance,
-                                             double h, lfem_profile& profile, ThreadPool* pool) {
-    // The whole solve is timed as the normal part; the friction passes' share of it is moved
-    // to the friction part at the end.
-    const auto solve_start = std::chrono::steady_clock::now();
-    const double tolerance = stopping_tolerance(bodies, body_of_slot, records, relative_tolerance, h);
+// The pieces of every record's constraint: its points, weights, H and friction.
+std::vector<Pair> make_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
+                             std::vector<ContactRecord>& records) {
     std::vector<Pair> pairs(records.size());
     for (std::size_t j = 0; j < records.size(); ++j) {
         ContactRecord& r = records[j];  // shape contacts lend their surface points
@@ -261,13 +253,18 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         }
         q.mu = pair_friction(a.friction, b.friction);
     }
+    return pairs;
+}
 
-    // Groups: pairs that share no movable point cannot affect each other, so each group of
-    // pairs linked through movable bodies is solved on its own, to its own convergence, and
-    // the groups side by side on the pool. Static and kinematic bodies do not link (their
-    // points never move): sixteen cubes on one static floor are sixteen groups. A group's
-    // result does not depend on the others or on the thread count: on one thread the groups
-    // simply run one after another.
+// Groups: pairs that share no movable point cannot affect each other, so each group of pairs
+// linked through movable bodies is solved on its own, to its own convergence, and the groups
+// side by side on the pool. Static and kinematic bodies do not link (their points never move):
+// sixteen cubes on one static floor are sixteen groups. A group's result does not depend on the
+// others or on the thread count: on one thread the groups simply run one after another. The
+// pairs of group g are order[begin[g] .. begin[g+1]), in list order; returns the group count.
+uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
+                     const std::vector<ContactRecord>& records, std::vector<uint32_t>& begin,
+                     std::vector<uint32_t>& order) {
     const uint32_t nb = uint32_t(bodies.size());
     std::vector<uint32_t> parent(nb);
     for (uint32_t i = 0; i < nb; ++i) parent[i] = i;
@@ -286,13 +283,29 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         group_of_pair[j] = group_of_root[root];
     }
     // The pairs of each group, in list order (a counting sort).
-    std::vector<uint32_t> begin(groups + 1, 0), order(records.size());
+    begin.assign(groups + 1, 0);
+    order.resize(records.size());
     for (uint32_t g : group_of_pair) ++begin[g + 1];
     for (uint32_t g = 0; g < groups; ++g) begin[g + 1] += begin[g];
-    {
-        std::vector<uint32_t> next(begin.begin(), begin.end() - 1);
-        for (std::size_t j = 0; j < records.size(); ++j) order[next[group_of_pair[j]]++] = uint32_t(j);
-    }
+    std::vector<uint32_t> next(begin.begin(), begin.end() - 1);
+    for (std::size_t j = 0; j < records.size(); ++j) order[next[group_of_pair[j]]++] = uint32_t(j);
+    return groups;
+}
+
+}  // namespace
+
+ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
+                                             const std::vector<uint32_t>& body_of_slot,
+                                             std::vector<ContactRecord>& records,
+                                             uint32_t max_iterations, double relative_tolerance,
+                                             double h, lfem_profile& profile, ThreadPool* pool) {
+    // The whole solve is timed as the normal part; the friction passes' share of it is moved
+    // to the friction part at the end.
+    const auto solve_start = std::chrono::steady_clock::now();
+    const double tolerance = stopping_tolerance(bodies, body_of_slot, records, relative_tolerance, h);
+    std::vector<Pair> pairs = make_pairs(bodies, body_of_slot, records);
+    std::vector<uint32_t> begin, order;
+    const uint32_t groups = group_pairs(bodies, body_of_slot, records, begin, order);
     std::vector<GroupResult> results(groups);
     parallel_for(pool, groups, [&](uint32_t g) {
         solve_group(records, pairs, order.data() + begin[g], begin[g + 1] - begin[g], max_iterations,

@@ -1,0 +1,30 @@
+# Checks that a folder of src/ sees only the folders it links (CMakeLists.txt, lfem_layer): a
+# probe that includes a header of the folder itself must compile, and a probe that includes a
+# header of a folder it does not link must not.
+#   cmake -DCXX=... -DLAYER=fem -DINCLUDES="a|b" -DOWN=fem/internal_forces.h
+#         -DFORBIDDEN="mesh/surface.h|world/world.h" -DWORK=dir -P check_layering.cmake
+string(REPLACE "|" ";" INCLUDES "${INCLUDES}")
+string(REPLACE "|" ";" FORBIDDEN "${FORBIDDEN}")
+set(flags -std=c++17 -fsyntax-only)
+foreach(dir ${INCLUDES})
+  list(APPEND flags -I${dir})
+endforeach()
+file(MAKE_DIRECTORY ${WORK})
+function(probe header expect_ok)
+  string(MAKE_C_IDENTIFIER ${header} name)
+  set(source ${WORK}/${LAYER}_${name}.cpp)
+  file(WRITE ${source} "#include \"${header}\"\n")
+  execute_process(COMMAND ${CXX} ${flags} ${source} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+  if(expect_ok AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "layer ${LAYER}: its own header ${header} does not compile:\n${err}")
+  elseif(NOT expect_ok AND rc EQUAL 0)
+    message(FATAL_ERROR "layer ${LAYER} can include ${header}: a wrong arrow between the folders of src/")
+  elseif(NOT expect_ok AND NOT err MATCHES "No such file")
+    message(FATAL_ERROR "layer ${LAYER}: ${header} failed for another reason than not being found:\n${err}")
+  endif()
+endfunction()
+probe(${OWN} TRUE)
+foreach(header ${FORBIDDEN})
+  probe(${header} FALSE)
+endforeach()
+message(STATUS "layer ${LAYER}: sees ${OWN}, not ${FORBIDDEN}")
