@@ -59,6 +59,27 @@ void check_node_list(const Body& b, const uint32_t* nodes, uint32_t count) {
     }
 }
 
+// A query of one value of a body: the handle, then the output pointer, then the value.
+template <class T, class Read>
+lfem_status read_body(const char* function, const lfem_world* world, lfem_body body, T* out, const Read& read) {
+    return guard(function, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        *out = read(b);
+    });
+}
+
+// The arrays of a mesh as the caller gives them: positions (3 finite doubles per node, at least
+// min_nodes nodes) and elements (at least one); the mesh itself is checked by the world.
+void check_mesh_arrays(const double* positions, uint32_t node_count, uint32_t min_nodes, const uint32_t* elements,
+                       const char* elements_name, uint32_t element_count, const char* count_name) {
+    require_pointer(positions, "positions");
+    require_pointer(elements, elements_name);
+    require(node_count >= min_nodes, "node_count must be >= " + std::to_string(min_nodes));
+    require(element_count >= 1, std::string(count_name) + " must be >= 1");
+    require_finite(positions, 3 * std::size_t(node_count), "positions");
+}
+
 void require_deformable(const Body& b, const char* what) {
     require(b.is_deformable(), std::string(what) + " needs a deformable body");
 }
@@ -69,6 +90,22 @@ std::vector<uint32_t> internal_nodes(const Body& b, const uint32_t* nodes, uint3
     std::vector<uint32_t> internal(count);
     for (uint32_t i = 0; i < count; ++i) internal[i] = b.ref.numbering.node(nodes[i]);
     return internal;
+}
+
+// Fixing, prescribing (at `velocity`) or releasing nodes of a deformable body.
+lfem_status set_node_mode(const char* function, lfem_world* world, lfem_body body, const uint32_t* nodes,
+                          uint32_t count, NodeMode mode, const char* what, const double* velocity = nullptr) {
+    return guard(function, [&] {
+        World& w = world_of(world);
+        const Body& b = w.body(body);
+        require_deformable(b, what);
+        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
+        if (mode == NodeMode::prescribed) {
+            require_pointer(velocity, "velocity");
+            require_finite(velocity, 3, "velocity");
+        }
+        w.set_node_mode(body, internal.data(), count, mode, velocity);
+    });
 }
 
 }  // namespace
@@ -114,11 +151,7 @@ LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body, const
     return guard(__func__, [&] {
         World& w = world_of(world);
         w.body(body);  // the handle first
-        require_pointer(positions, "positions");
-        require_pointer(tets, "tets");
-        require(node_count >= 4, "node_count must be >= 4");
-        require(tet_count >= 1, "tet_count must be >= 1");
-        require_finite(positions, 3 * std::size_t(node_count), "positions");
+        check_mesh_arrays(positions, node_count, 4, tets, "tets", tet_count, "tet_count");
         w.add_mesh(body, positions, node_count, tets, tet_count);
     });
 }
@@ -129,45 +162,25 @@ LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body bo
     return guard(__func__, [&] {
         World& w = world_of(world);
         w.body(body);  // the handle first
-        require_pointer(positions, "positions");
-        require_pointer(triangles, "triangles");
-        require(node_count >= 3, "node_count must be >= 3");
-        require(triangle_count >= 1, "triangle_count must be >= 1");
-        require_finite(positions, 3 * std::size_t(node_count), "positions");
+        check_mesh_arrays(positions, node_count, 3, triangles, "triangles", triangle_count, "triangle_count");
         w.add_triangle_mesh(body, positions, node_count, triangles, triangle_count);
     });
 }
 
 LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body body, uint32_t* out) {
-    return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
-        require_pointer(out, "out");
-        *out = b.ref.node_count();
-    });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.node_count(); });
 }
 
 LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body, uint32_t* out) {
-    return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
-        require_pointer(out, "out");
-        *out = b.ref.tet_count();
-    });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.tet_count(); });
 }
 
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body, void** out) {
-    return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
-        require_pointer(out, "out");
-        *out = b.def.user_data;
-    });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.def.user_data; });
 }
 
 LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body, double* out) {
-    return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
-        require_pointer(out, "out");
-        *out = b.ref.total_mass;
-    });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.total_mass; });
 }
 
 LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body, double linear[3],
@@ -225,11 +238,7 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
 
 LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* world, lfem_body body,
                                                            uint32_t* out) {
-    return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
-        require_pointer(out, "out");
-        *out = b.ref.surface.triangle_count();
-    });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.surface.triangle_count(); });
 }
 
 LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, lfem_body body,
@@ -305,38 +314,19 @@ LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_b
 
 LFEM_API lfem_status lfem_body_fix_nodes(lfem_world* world, lfem_body body, const uint32_t* nodes,
                                          uint32_t count) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        const Body& b = w.body(body);
-        require_deformable(b, "fixing nodes");
-        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
-        w.set_node_mode(body, internal.data(), count, NodeMode::fixed);
-    });
+    return set_node_mode(__func__, world, body, nodes, count, NodeMode::fixed, "fixing nodes");
 }
 
 LFEM_API lfem_status lfem_body_prescribe_node_velocity(lfem_world* world, lfem_body body,
                                                        const uint32_t* nodes, uint32_t count,
                                                        const double velocity[3]) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        const Body& b = w.body(body);
-        require_deformable(b, "prescribing node velocities");
-        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
-        require_pointer(velocity, "velocity");
-        require_finite(velocity, 3, "velocity");
-        w.set_node_mode(body, internal.data(), count, NodeMode::prescribed, velocity);
-    });
+    return set_node_mode(__func__, world, body, nodes, count, NodeMode::prescribed, "prescribing node velocities",
+                         velocity);
 }
 
 LFEM_API lfem_status lfem_body_release_nodes(lfem_world* world, lfem_body body, const uint32_t* nodes,
                                              uint32_t count) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        const Body& b = w.body(body);
-        require_deformable(b, "releasing nodes");
-        const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
-        w.set_node_mode(body, internal.data(), count, NodeMode::free);
-    });
+    return set_node_mode(__func__, world, body, nodes, count, NodeMode::free, "releasing nodes");
 }
 
 LFEM_API lfem_status lfem_body_set_node_forces(lfem_world* world, lfem_body body, const uint32_t* nodes,

@@ -18,6 +18,7 @@
 #include <numeric>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "common/error.h"
@@ -76,37 +77,25 @@ public:
         if (tokens_.size() != 1) fail("unexpected text '" + excerpt(1) + "' after " + excerpt(0));
     }
 
-    uint64_t unsigned_at(std::size_t i, const char* what) const {
-        const std::string_view t = tokens_[i];
-        uint64_t value = 0;
-        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-        if (ec == std::errc::result_out_of_range)
-            fail(std::string(what) + " '" + excerpt(i) + "' is out of range");
-        if (ec != std::errc() || end != t.data() + t.size())
-            fail(std::string(what) + " '" + excerpt(i) + "' is not a non-negative integer");
-        return value;
-    }
-
-    int64_t integer_at(std::size_t i, const char* what) const {
-        const std::string_view t = tokens_[i];
-        int64_t value = 0;
-        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-        if (ec == std::errc::result_out_of_range)
-            fail(std::string(what) + " '" + excerpt(i) + "' is out of range");
-        if (ec != std::errc() || end != t.data() + t.size())
-            fail(std::string(what) + " '" + excerpt(i) + "' is not an integer");
-        return value;
-    }
-
-    double real_at(std::size_t i, const char* what) const {
+    // Field i as a number of type T (from_chars: no locale, no leading '+' for integers);
+    // `kind` says what it must be ("a non-negative integer", ...).
+    template <class T>
+    T number_at(std::size_t i, const char* what, const char* kind) const {
         std::string_view t = tokens_[i];
-        if (t.size() > 1 && t[0] == '+') t.remove_prefix(1);  // from_chars refuses a '+'
-        double value = 0.0;
+        if (std::is_floating_point<T>::value && t.size() > 1 && t[0] == '+') t.remove_prefix(1);  // a real may have one
+        T value = 0;
         const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-        if (ec == std::errc::result_out_of_range)
-            fail(std::string(what) + " '" + excerpt(i) + "' is out of range");
+        if (ec == std::errc::result_out_of_range) fail(std::string(what) + " '" + excerpt(i) + "' is out of range");
         if (ec != std::errc() || end != t.data() + t.size())
-            fail(std::string(what) + " '" + excerpt(i) + "' is not a number");
+            fail(std::string(what) + " '" + excerpt(i) + "' is not " + kind);
+        return value;
+    }
+    uint64_t unsigned_at(std::size_t i, const char* what) const {
+        return number_at<uint64_t>(i, what, "a non-negative integer");
+    }
+    int64_t integer_at(std::size_t i, const char* what) const { return number_at<int64_t>(i, what, "an integer"); }
+    double real_at(std::size_t i, const char* what) const {
+        const double value = number_at<double>(i, what, "a number");
         if (!std::isfinite(value)) fail(std::string(what) + " '" + excerpt(i) + "' is not finite");
         return value;
     }
@@ -170,40 +159,43 @@ void add_tet(RawMesh& raw, const LineReader& r, std::size_t first_node) {
 
 // ---- format 2.2 ----------------------------------------------------------------------------
 
+// A section of format 2.2: the count, then `record` called on each of the count lines, then
+// the end marker.
+template <class Record>
+void read_counted_section(LineReader& r, const char* section, const char* end_marker, const std::string& items,
+                          const Record& record) {
+    r.next_in(section);
+    r.expect_token_count(1, ("the " + items + " count").c_str());
+    const uint64_t count = r.unsigned_at(0, (items + " count").c_str());
+    for (uint64_t i = 0; i < count; ++i) {
+        r.next_in(section);
+        require_data_line(r, section, count, i, (items + "s").c_str());
+        record();
+    }
+    r.next_in(section);
+    r.expect_marker(end_marker);
+}
+
 // count, then "tag x y z" per node
 void read_nodes_v2(LineReader& r, RawMesh& raw) {
-    r.next_in("$Nodes");
-    r.expect_token_count(1, "the node count");
-    const uint64_t count = r.unsigned_at(0, "node count");
-    for (uint64_t n = 0; n < count; ++n) {
-        r.next_in("$Nodes");
-        require_data_line(r, "$Nodes", count, n, "nodes");
+    read_counted_section(r, "$Nodes", "$EndNodes", "node", [&] {
         r.expect_token_count(4, "a node (tag x y z)");
         add_node(raw, r, r.unsigned_at(0, "node tag"), 1);
-    }
-    r.next_in("$Nodes");
-    r.expect_marker("$EndNodes");
+    });
 }
 
 // count, then "tag type tag_count tags... nodes..." per element
 void read_elements_v2(LineReader& r, RawMesh& raw) {
-    r.next_in("$Elements");
-    r.expect_token_count(1, "the element count");
-    const uint64_t count = r.unsigned_at(0, "element count");
-    for (uint64_t e = 0; e < count; ++e) {
-        r.next_in("$Elements");
-        require_data_line(r, "$Elements", count, e, "elements");
+    read_counted_section(r, "$Elements", "$EndElements", "element", [&] {
         const std::size_t fields = r.tokens().size();
         if (fields < 3) r.expect_token_count(3, "an element header (tag type tag_count)");
         r.unsigned_at(0, "element tag");
-        if (r.integer_at(1, "element type") != kGmshTet) continue;  // not a tet: skipped
+        if (r.integer_at(1, "element type") != kGmshTet) return;  // not a tet: skipped
         const uint64_t tag_count = r.unsigned_at(2, "tag count");
         if (tag_count > fields) r.fail("tag count " + r.excerpt(2) + " exceeds the line");
         r.expect_token_count(3 + std::size_t(tag_count) + 4, "a tetrahedron");
         add_tet(raw, r, 3 + std::size_t(tag_count));
-    }
-    r.next_in("$Elements");
-    r.expect_marker("$EndElements");
+    });
 }
 
 // ---- format 4.1 ----------------------------------------------------------------------------
@@ -211,24 +203,44 @@ void read_elements_v2(LineReader& r, RawMesh& raw) {
 // "blocks nodes min_tag max_tag", then per block "dim entity parametric count", the count
 // tags one per line, then the count coordinate lines (x y z, plus dim parametric
 // coordinates when parametric is 1).
-void read_nodes_v4(LineReader& r, RawMesh& raw) {
-    r.next_in("$Nodes");
-    r.expect_token_count(4, "the $Nodes header (blocks nodes min_tag max_tag)");
+// The section header of format 4.1, "blocks items min_tag max_tag" (items: "node" or
+// "element"): the block count and the total.
+std::pair<uint64_t, uint64_t> read_section_header(LineReader& r, const char* section, const std::string& items) {
+    r.next_in(section);
+    const std::string header = "the " + std::string(section) + " header (blocks " + items + "s min_tag max_tag)";
+    r.expect_token_count(4, header.c_str());
     const uint64_t blocks = r.unsigned_at(0, "block count");
-    const uint64_t total = r.unsigned_at(1, "node count");
-    r.unsigned_at(2, "minimum node tag");
-    r.unsigned_at(3, "maximum node tag");
+    const uint64_t total = r.unsigned_at(1, (items + " count").c_str());
+    r.unsigned_at(2, ("minimum " + items + " tag").c_str());
+    r.unsigned_at(3, ("maximum " + items + " tag").c_str());
+    return {blocks, total};
+}
+
+// A block header of format 4.1, "dim entity <third> count" (third: the parametric flag of a
+// node block, the element type of an element block), block b of `blocks`: returns the count,
+// the checked dimension in dim.
+uint64_t read_block_header(LineReader& r, const char* section, uint64_t blocks, uint64_t b, const std::string& items,
+                           const char* third, uint64_t& dim) {
+    r.next_in(section);
+    require_data_line(r, section, blocks, b, (items + " blocks").c_str());
+    const std::string header =
+        (items == "element" ? "an " : "a ") + items + " block header (dim entity " + third + " count)";
+    r.expect_token_count(4, header.c_str());
+    dim = r.unsigned_at(0, "entity dimension");
+    r.unsigned_at(1, "entity tag");
+    const uint64_t count = r.unsigned_at(3, (items + " count").c_str());
+    if (dim > 3) r.fail("entity dimension " + r.excerpt(0) + " is not 0, 1, 2 or 3");
+    return count;
+}
+
+void read_nodes_v4(LineReader& r, RawMesh& raw) {
+    const auto [blocks, total] = read_section_header(r, "$Nodes", "node");
     uint64_t read = 0;
     std::vector<uint64_t> block_tags;
     for (uint64_t b = 0; b < blocks; ++b) {
-        r.next_in("$Nodes");
-        require_data_line(r, "$Nodes", blocks, b, "node blocks");
-        r.expect_token_count(4, "a node block header (dim entity parametric count)");
-        const uint64_t dim = r.unsigned_at(0, "entity dimension");
-        r.unsigned_at(1, "entity tag");
+        uint64_t dim = 0;
+        const uint64_t count = read_block_header(r, "$Nodes", blocks, b, "node", "parametric", dim);
         const uint64_t parametric = r.unsigned_at(2, "parametric flag");
-        const uint64_t count = r.unsigned_at(3, "node count");
-        if (dim > 3) r.fail("entity dimension " + r.excerpt(0) + " is not 0, 1, 2 or 3");
         if (parametric > 1) r.fail("parametric flag " + r.excerpt(2) + " is not 0 or 1");
         block_tags.clear();
         for (uint64_t n = 0; n < count; ++n) {
@@ -257,22 +269,12 @@ void read_nodes_v4(LineReader& r, RawMesh& raw) {
 // "blocks elements min_tag max_tag", then per block "dim entity type count" and count lines
 // "tag node_tags...".
 void read_elements_v4(LineReader& r, RawMesh& raw) {
-    r.next_in("$Elements");
-    r.expect_token_count(4, "the $Elements header (blocks elements min_tag max_tag)");
-    const uint64_t blocks = r.unsigned_at(0, "block count");
-    const uint64_t total = r.unsigned_at(1, "element count");
-    r.unsigned_at(2, "minimum element tag");
-    r.unsigned_at(3, "maximum element tag");
+    const auto [blocks, total] = read_section_header(r, "$Elements", "element");
     uint64_t read = 0;
     for (uint64_t b = 0; b < blocks; ++b) {
-        r.next_in("$Elements");
-        require_data_line(r, "$Elements", blocks, b, "element blocks");
-        r.expect_token_count(4, "an element block header (dim entity type count)");
-        const uint64_t dim = r.unsigned_at(0, "entity dimension");
-        r.unsigned_at(1, "entity tag");
+        uint64_t dim = 0;
+        const uint64_t count = read_block_header(r, "$Elements", blocks, b, "element", "type", dim);
         const bool tets = r.integer_at(2, "element type") == kGmshTet;
-        const uint64_t count = r.unsigned_at(3, "element count");
-        if (dim > 3) r.fail("entity dimension " + r.excerpt(0) + " is not 0, 1, 2 or 3");
         for (uint64_t e = 0; e < count; ++e) {
             r.next_in("$Elements");
             require_data_line(r, "$Elements", count, e, "elements in the block");
