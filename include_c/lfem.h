@@ -436,7 +436,7 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body,
 /* Contacts                                                                                   */
 /* ---------------------------------------------------------------------------------------- */
 
-/* One active node-to-triangle contact of the last step (DESIGN.md section 3). The contact point
+/* One active node-to-triangle contact of the last step (src/DESIGN.md section 3). The contact point
  * on body_b's triangle (a, b, c) is (1 - t1 - t2) a + t2 b + t1 c with (t1, t2) = barycentric. */
 typedef struct lfem_contact {
     lfem_body body_a;        /* the body that owns the node */

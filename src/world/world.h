@@ -133,7 +133,7 @@ private:
     // step.cpp: a call of lfem_world_step.
     uint32_t substeps_for(double dt, double limit) const;
     double blow_up_energy_scale(double& start_energy);
-    // substep.cpp: the pipeline of DESIGN.md section 1.
+    // substep.cpp: the pipeline of src/DESIGN.md section 1.
     void substep(double h, double& kinetic, double& strain, double& work);
     void plan_stages();
     template <class Work>

@@ -1,4 +1,4 @@
-/* Error against run time (issue 4): runs the validation problems of DESIGN.md section 4 over
+/* Error against run time (issue 4): runs the validation problems of src/DESIGN.md section 4 over
  * mesh resolutions, step safety factors and material models, and records for each run the
  * errors against the closed forms and the wall time; then the same two-bar impact with the
  * penalty-contact baseline (penalty_baseline.h) at three stiffnesses, with the stable step each

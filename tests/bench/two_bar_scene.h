@@ -1,6 +1,6 @@
 /* The paper's two-bar impact (Fig. 3) as a benchmark run: build the bars, step them with a
  * fixed step, and measure the contact force history against the 1-D wave solution
- * (DESIGN.md section 4). Contact is either lfem's Lagrange multipliers or the penalty baseline
+ * (src/DESIGN.md section 4). Contact is either lfem's Lagrange multipliers or the penalty baseline
  * of penalty_baseline.h. */
 #ifndef LFEM_BENCH_TWO_BAR_SCENE_H
 #define LFEM_BENCH_TWO_BAR_SCENE_H
