@@ -63,10 +63,13 @@ public static class DropCube
             Console.WriteLine("weight m g: " + F6(weight) + " N, ratio " + F6(mean.Z / weight));
 
             List<string> failures = new List<string>();
-            // Newton's second law over the window: without damping the tets' elastic forces sum to
-            // zero and the central-difference update conserves momentum exactly, so the contact
-            // impulses equal the change of momentum plus the weight's impulse, up to rounding
-            // (about 1e-15 of m g per step).
+            // Newton's second law over the window: the momentum lfem reports changes in each sub-
+            // step by H times the total force on the cube, the weight plus the contact forces (no
+            // damping; the tets' elastic forces sum to zero), as long as the cube keeps touching
+            // the plane (a sub-step in which it lands or lifts off entirely is off by m g H / 2,
+            // the half step of the synchronized velocities). So the contact impulses equal the
+            // change of momentum plus the weight's impulse, up to rounding (about 1e-15 of m g per
+            // step), and this fails if the cube bounces.
             double balance = mean.Z - weight - (p1.Z - p0.Z) / span;
             if (Math.Abs(balance) > 1e-9 * weight)
                 failures.Add("contact impulses " + balance.ToString("E3", CultureInfo.InvariantCulture) + " N off the momentum balance");

@@ -43,9 +43,12 @@ print("mean summed contact force z: %.6f N (x, y below 1e-6 m g)" % mean[2])
 print("weight m g: %.6f N, ratio %.6f" % (weight, mean[2] / weight))
 
 failures = []
-# Newton's second law over the window: without damping the tets' elastic forces sum to zero and
-# the central-difference update conserves momentum exactly, so the contact impulses equal the
-# change of momentum plus the weight's impulse, up to rounding (about 1e-15 of m g per step).
+# Newton's second law over the window: the momentum lfem reports changes in each sub-step by H times
+# the total force on the cube, the weight plus the contact forces (no damping; the tets' elastic
+# forces sum to zero), as long as the cube keeps touching the plane (a sub-step in which it lands or
+# lifts off entirely is off by m g H / 2, the half step of the synchronized velocities). So the
+# contact impulses equal the change of momentum plus the weight's impulse, up to rounding (about
+# 1e-15 of m g per step), and this fails if the cube bounces.
 balance = mean[2] - weight - (p1[2] - p0[2]) / span
 if abs(balance) > 1e-9 * weight:
     failures.append("contact impulses %.3e N off the momentum balance" % balance)

@@ -71,10 +71,12 @@ fn drop_cube() -> Result<Resting, lfem::Error> {
 /// What is wrong with the run (nothing when empty).
 fn failures(r: &Resting) -> Vec<String> {
     let mut failed = Vec::new();
-    // Newton's second law over the window: without damping the tets' elastic forces sum to zero
-    // and the central-difference update conserves momentum exactly, so the contact impulses
-    // equal the change of momentum plus the weight's impulse, up to rounding (about 1e-15 of
-    // m g per step).
+    // Newton's second law over the window: the momentum lfem reports changes in each sub-step by H
+    // times the total force on the cube, the weight plus the contact forces (no damping; the tets'
+    // elastic forces sum to zero), as long as the cube keeps touching the plane (a sub-step in
+    // which it lands or lifts off entirely is off by m g H / 2, the half step of the synchronized
+    // velocities). So the contact impulses equal the change of momentum plus the weight's impulse,
+    // up to rounding (about 1e-15 of m g per step), and this fails if the cube bounces.
     if r.balance.abs() > 1e-9 * r.weight {
         failed.push(format!("contact impulses {:.3e} N off the momentum balance", r.balance));
     }
