@@ -23,8 +23,9 @@ Deformable bodies simulated by an explicit local finite element method. SI units
   when garbage collected. Body is a value handle; a destroyed body's handle raises
   LfemError(Status.INVALID_HANDLE).
 
-Where the library is loaded from: see lfem._library (LFEM_LIBRARY, then the install prefix of
-this package, pkg-config's libdir for lfem, the dynamic loader); library_path tells which.
+Where the library is loaded from: see lfem._library (LFEM_LIBRARY, else the checkout's build/
+when run from the source tree, the install prefix of this package, pkg-config's libdir for lfem,
+then liblfem.so.0 through the dynamic loader); library_path tells which.
 """
 
 from __future__ import annotations
