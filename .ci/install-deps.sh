@@ -24,13 +24,17 @@ PACKAGES=(
   libgtest-dev
   # language bindings (bindings/): Rust (cargo test --offline, no crate downloaded), C# (mcs,
   # run under mono; these two pull the mono class libraries the bindings use), Python (the
-  # system python3 with numpy and pytest)
+  # system python3 with numpy and pytest; venv, setuptools and wheel for the out-of-tree test's
+  # pip install --no-index --no-build-isolation into a venv)
   rustc
   cargo
   mono-mcs
   mono-runtime
   python3-numpy
   python3-pytest
+  python3-venv
+  python3-setuptools
+  python3-wheel
   # fuzzing (tests/fuzz/run.sh): clang with libFuzzer and the sanitizer runtimes
   clang-14
   libclang-rt-14-dev

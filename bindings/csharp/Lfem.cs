@@ -4,8 +4,10 @@
 //
 // - Structs are blittable and laid out as in C (flags are byte, never bool; arrays of 3 doubles
 //   are Vec3). Their sizes are checked by tests/LfemTests.cs against the C sizes.
-// - Every failing call throws LfemException carrying the Status and lfem_last_error's message.
-//   A failed call changes nothing.
+// - Every failing call of the library throws LfemException carrying the Status and
+//   lfem_last_error's message; a failed call changes nothing. Arguments refused by the binding
+//   itself (null, arrays of the wrong length) throw the ArgumentException family, as .NET code
+//   expects.
 // - World, Mesh and VtkSeries own their native object through a SafeHandle: Dispose() (or the
 //   finalizer) frees it. Body is a plain value handle; a destroyed body's handle is refused with
 //   Status.InvalidHandle.
@@ -46,7 +48,8 @@ namespace Lfem
         Linear = 3,       // small-strain linear elasticity, no rotation at all
     }
 
-    /// <summary>Three doubles, laid out as C's double[3].</summary>
+    /// <summary>Three doubles, laid out as C's double[3]: a position (m), a velocity (m/s), a
+    /// force (N). The usual vector arithmetic; == compares exactly.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct Vec3 : IEquatable<Vec3>
     {
@@ -54,10 +57,35 @@ namespace Lfem
 
         public Vec3(double x, double y, double z) { X = x; Y = y; Z = z; }
 
+        public static readonly Vec3 Zero = new Vec3(0, 0, 0);
+
+        public static Vec3 operator +(Vec3 a, Vec3 b) { return new Vec3(a.X + b.X, a.Y + b.Y, a.Z + b.Z); }
+        public static Vec3 operator -(Vec3 a, Vec3 b) { return new Vec3(a.X - b.X, a.Y - b.Y, a.Z - b.Z); }
+        public static Vec3 operator -(Vec3 a) { return new Vec3(-a.X, -a.Y, -a.Z); }
+        public static Vec3 operator *(Vec3 a, double s) { return new Vec3(a.X * s, a.Y * s, a.Z * s); }
+        public static Vec3 operator *(double s, Vec3 a) { return a * s; }
+        public static Vec3 operator /(Vec3 a, double s) { return new Vec3(a.X / s, a.Y / s, a.Z / s); }
+        public static bool operator ==(Vec3 a, Vec3 b) { return a.Equals(b); }
+        public static bool operator !=(Vec3 a, Vec3 b) { return !a.Equals(b); }
+
+        public static double Dot(Vec3 a, Vec3 b) { return a.X * b.X + a.Y * b.Y + a.Z * b.Z; }
+        public static Vec3 Cross(Vec3 a, Vec3 b)
+        {
+            return new Vec3(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
+        }
+        public double LengthSquared { get { return Dot(this, this); } }
+        public double Length { get { return Math.Sqrt(LengthSquared); } }
+
         public bool Equals(Vec3 o) { return X == o.X && Y == o.Y && Z == o.Z; }
         public override bool Equals(object o) { return o is Vec3 && Equals((Vec3)o); }
         public override int GetHashCode() { return X.GetHashCode() ^ (Y.GetHashCode() * 397) ^ (Z.GetHashCode() * 7919); }
-        public override string ToString() { return "(" + X + ", " + Y + ", " + Z + ")"; }
+
+        /// <summary>"(x, y, z)" with '.' decimals whatever the culture, round-trip precision.</summary>
+        public override string ToString()
+        {
+            System.Globalization.CultureInfo c = System.Globalization.CultureInfo.InvariantCulture;
+            return "(" + X.ToString("R", c) + ", " + Y.ToString("R", c) + ", " + Z.ToString("R", c) + ")";
+        }
     }
 
     /// <summary>lfem_world_def. Start from WorldDef.Default and edit.</summary>
@@ -246,6 +274,23 @@ namespace Lfem
         {
             if (status != Status.Ok) throw FromLastError(status);
         }
+
+        /// <summary>The same error naming the call the user made (outer, e.g.
+        /// lfem_body_get_positions) in place of the helper call that failed first inside it
+        /// (inner, a count).</summary>
+        internal LfemException Renamed(string inner, string outer)
+        {
+            if (!Message.StartsWith(inner + ":", StringComparison.Ordinal)) return this;
+            return new LfemException(Status, outer + Message.Substring(inner.Length));
+        }
+
+        /// <summary>The type, the status and the message (Exception.ToString() would leave the
+        /// status out), then the stack trace.</summary>
+        public override string ToString()
+        {
+            string s = GetType().FullName + " (" + Status + "): " + Message;
+            return StackTrace == null ? s : s + Environment.NewLine + StackTrace;
+        }
     }
 
     /// <summary>Version and status names of the loaded library.</summary>
@@ -394,7 +439,7 @@ namespace Lfem
             if (positions == null) throw new ArgumentNullException("positions");
             if (tets == null) throw new ArgumentNullException("tets");
             if (tets.Length % 4 != 0)
-                throw new LfemException(Status.InvalidArgument, "Lfem (C#): tets.Length " + tets.Length + " is not a multiple of 4");
+                throw new ArgumentException("Lfem: tets.Length " + tets.Length + " is not a multiple of 4", "tets");
             LfemException.Check(Native.lfem_body_add_mesh(handle, body, positions, (uint)positions.Length, tets, (uint)(tets.Length / 4)));
         }
 
@@ -439,6 +484,17 @@ namespace Lfem
             LfemException.Check(Native.lfem_body_get_momentum(handle, body, out linear, out angular));
         }
 
+        private delegate Status CountFunction(WorldHandle world, Body body, out uint count);
+
+        /// <summary>A count asked before the call the user made; an error names that call.</summary>
+        private int CountFor(CountFunction count, string countName, Body body, string call)
+        {
+            uint n;
+            Status s = count(handle, body, out n);
+            if (s != Status.Ok) throw LfemException.FromLastError(s).Renamed(countName, call);
+            return checked((int)n);
+        }
+
         public int NodeCount(Body body)
         {
             uint n; LfemException.Check(Native.lfem_body_get_node_count(handle, body, out n)); return (int)n;
@@ -464,7 +520,7 @@ namespace Lfem
 
         public Vec3[] GetPositions(Body body)
         {
-            Vec3[] x = new Vec3[NodeCount(body)];
+            Vec3[] x = new Vec3[CountFor(Native.lfem_body_get_node_count, "lfem_body_get_node_count", body, "lfem_body_get_positions")];
             GetPositions(body, x);
             return x;
         }
@@ -478,7 +534,7 @@ namespace Lfem
 
         public Vec3[] GetVelocities(Body body)
         {
-            Vec3[] v = new Vec3[NodeCount(body)];
+            Vec3[] v = new Vec3[CountFor(Native.lfem_body_get_node_count, "lfem_body_get_node_count", body, "lfem_body_get_velocities")];
             GetVelocities(body, v);
             return v;
         }
@@ -492,17 +548,17 @@ namespace Lfem
         /// <summary>Boundary triangles, 3 node indices each (flat), counter-clockwise from outside.</summary>
         public uint[] GetBoundaryTriangles(Body body)
         {
-            uint n;
-            LfemException.Check(Native.lfem_body_get_boundary_triangle_count(handle, body, out n));
+            int n = CountFor(Native.lfem_body_get_boundary_triangle_count, "lfem_body_get_boundary_triangle_count", body,
+                             "lfem_body_get_boundary_triangles");
             uint[] t = new uint[3 * n];
-            LfemException.Check(Native.lfem_body_get_boundary_triangles(handle, body, t, n));
+            LfemException.Check(Native.lfem_body_get_boundary_triangles(handle, body, t, (uint)n));
             return t;
         }
 
         /// <summary>Von Mises stress (Pa), one per tet.</summary>
         public double[] GetVonMisesStress(Body body)
         {
-            double[] s = new double[TetCount(body)];
+            double[] s = new double[CountFor(Native.lfem_body_get_tet_count, "lfem_body_get_tet_count", body, "lfem_body_get_von_mises_stress")];
             LfemException.Check(Native.lfem_body_get_von_mises_stress(handle, body, s, (uint)s.Length));
             return s;
         }
@@ -553,7 +609,7 @@ namespace Lfem
             if (nodes == null) throw new ArgumentNullException("nodes");
             if (forces == null) throw new ArgumentNullException("forces");
             if (nodes.Length != forces.Length)
-                throw new LfemException(Status.InvalidArgument, "Lfem (C#): " + nodes.Length + " nodes but " + forces.Length + " forces");
+                throw new ArgumentException("Lfem: " + nodes.Length + " nodes but " + forces.Length + " forces", "forces");
             LfemException.Check(Native.lfem_body_set_node_forces(handle, body, nodes, (uint)nodes.Length, forces));
         }
 

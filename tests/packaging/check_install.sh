@@ -24,10 +24,7 @@ mkdir -p "$work"
 work=$(cd "$work" && pwd)
 prefix="$work/prefix"
 
-step "cmake --install $build --prefix $prefix"
-"$cmake" --install "$build" --prefix "$prefix" > "$work/install.log" 2>&1 ||
-  { cat "$work/install.log"; die "cmake --install failed"; }
-sed 's/^/   /' "$work/install.log"
+bash "$here/install_prefix.sh" "$cmake" "$build" "$prefix"
 
 # ---- the installed header tree: lfem.h, nothing else, and no Eigen or libccd in it -----------
 step "installed headers under $includedir/"

@@ -316,6 +316,48 @@ public static class LfemTests
         Equal(Status.InvalidArgument, e4.Status, "zero cells status");
     }
 
+    public static void TestBindingArgumentChecksThrowArgumentExceptions()
+    {
+        using (World world = new World())
+        {
+            Body body = AddBlock(world, Model.Paper);
+            ArgumentException a = ThrowsArgument(() => world.AddMesh(body, new Vec3[4], new uint[] { 0, 1, 2 }), "tets of 3");
+            Equal("tets", a.ParamName, "tets param");
+            a = ThrowsArgument(() => world.SetNodeForces(body, new uint[] { 0, 1 }, new Vec3[1]), "2 nodes, 1 force");
+            Equal("forces", a.ParamName, "forces param");
+            Check(ThrowsArgument(() => world.GetPositions(body, null), "null buffer") is ArgumentNullException, "null buffer");
+        }
+        // ToString shows the status (Exception.ToString alone would not).
+        LfemException e = Throws(() => Mesh.Box(Size, 0, 2, 1), "zero cells");
+        Check(e.ToString().StartsWith("Lfem.LfemException (InvalidArgument): lfem_mesh_create_box"), "ToString: " + e);
+    }
+
+    static ArgumentException ThrowsArgument(Action call, string what)
+    {
+        try { call(); }
+        catch (ArgumentException e) { return e; }
+        throw new Failure(what + ": no ArgumentException");
+    }
+
+    public static void TestVec3Arithmetic()
+    {
+        Vec3 a = new Vec3(1, 2, 3), b = new Vec3(-4, 5, 0.5);
+        Equal(new Vec3(-3, 7, 3.5), a + b, "a + b");
+        Equal(new Vec3(5, -3, 2.5), a - b, "a - b");
+        Equal(new Vec3(-1, -2, -3), -a, "-a");
+        Equal(new Vec3(2, 4, 6), a * 2, "a * 2");
+        Equal(a * 2, 2 * a, "2 * a");
+        Equal(new Vec3(0.5, 1, 1.5), a / 2, "a / 2");
+        Equal(-4 + 10 + 1.5, Vec3.Dot(a, b), "dot");
+        Vec3 c = Vec3.Cross(a, b);
+        Equal(new Vec3(2 * 0.5 - 3 * 5, 3 * -4 - 1 * 0.5, 1 * 5 - 2 * -4), c, "cross");
+        Equal(0.0, Vec3.Dot(c, a), "cross is orthogonal to a");
+        Equal(0.0, Vec3.Dot(c, b), "cross is orthogonal to b");
+        Equal(5.0, new Vec3(3, 4, 0).Length, "length");
+        Check(a == new Vec3(1, 2, 3) && a != b && Vec3.Zero == new Vec3(), "== and !=");
+        Equal("(1, 2.5, -0.1)", new Vec3(1, 2.5, -0.1).ToString(), "ToString");
+    }
+
     public static void TestNullPointersAreRefused()
     {
         // Straight through the raw P/Invoke declarations: NULL is answered, never a crash.
@@ -336,9 +378,14 @@ public static class LfemTests
             Check(world.IsValid(block), "valid before destroy");
             world.DestroyBody(block);
             Check(!world.IsValid(copy), "stale after destroy");
+            // Each error names the call made, not the count asked inside it first.
             LfemException e = Throws(() => world.GetPositions(copy), "positions of a destroyed body");
             Equal(Status.InvalidHandle, e.Status, "stale status");
-            Check(e.Message.StartsWith("lfem_body_get_"), "message: " + e.Message);
+            Check(e.Message.StartsWith("lfem_body_get_positions:"), "message: " + e.Message);
+            Check(Throws(() => world.GetVelocities(copy), "velocities").Message.StartsWith("lfem_body_get_velocities:"), "velocities");
+            Check(Throws(() => world.GetVonMisesStress(copy), "stress").Message.StartsWith("lfem_body_get_von_mises_stress:"), "stress");
+            Check(Throws(() => world.GetBoundaryTriangles(copy), "triangles").Message.StartsWith("lfem_body_get_boundary_triangles:"),
+                  "triangles");
             Equal(Status.InvalidHandle, Throws(() => world.DestroyBody(copy), "destroy twice").Status, "destroy twice");
             Equal(0u, world.Stats.BodyCount, "no body left");
 

@@ -50,7 +50,7 @@ class Layout(unittest.TestCase):
             "gravity": 0, "time_step": 24, "step_safety": 32, "contact_iterations": 40,
             "thread_count": 44,
             "contact_tolerance": 48, "max_substeps": 56, "allow_unstable_step": 60,
-            "internal_value": 64})
+            "_internal_value": 64})
         self.check(lfem.WorldStats, 160, {
             "steps": 8, "step_size": 16, "stable_step": 24, "substeps_last_call": 32,
             "body_count": 36, "kinetic_energy": 40, "energy_error": 72, "linear_momentum": 80,
@@ -63,15 +63,15 @@ class Layout(unittest.TestCase):
             "ccd_queries": 112, "normal_solve": 120, "friction": 136, "global_rotation": 152,
             "commit": 168})
         self.check(lfem.BodyDef, 120, {
-            "type": 0, "model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
+            "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
-            "category_bits": 96, "mask_bits": 100, "user_data": 104, "internal_value": 112})
+            "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112})
         self.check(lfem.Contact, 128, {
             "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
             "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124})
         self.check(lfem.ShapeDef, 120, {
-            "type": 0, "point_count": 4, "center": 8, "rotation": 32, "half_extents": 64,
-            "radius": 88, "half_length": 96, "points": 104, "internal_value": 112})
+            "_type": 0, "_point_count": 4, "center": 8, "rotation": 32, "half_extents": 64,
+            "radius": 88, "half_length": 96, "_points": 104, "_internal_value": 112})
 
     def test_contact_dtype_matches_c(self):
         dt = lfem.CONTACT_DTYPE
@@ -110,12 +110,56 @@ class Defaults(unittest.TestCase):
         self.assertEqual(list(s.rotation), [1.0, 0.0, 0.0, 0.0])
         self.assertEqual(list(s.half_extents), [0.5, 0.5, 0.5])
         self.assertEqual((s.radius, s.half_length), (0.5, 0.5))
-        self.assertFalse(s.points)
+        self.assertFalse(s._points)
+
+    def test_definitions_start_from_the_defaults_and_check_their_fields(self):
+        # BodyDef() is lfem_body_def_default(), not zero-filled (which lfem refuses).
+        self.assertEqual(bytes(lfem.BodyDef()), bytes(lfem.BodyDef.default()))
+        self.assertEqual(bytes(lfem.WorldDef()), bytes(lfem.native.lfem_world_def_default()))
+        self.assertEqual(bytes(lfem.ShapeDef()), bytes(lfem.native.lfem_shape_def_default()))
+        d = lfem.BodyDef(type=lfem.BodyType.STATIC, density=400, model=2)
+        self.assertIs(d.type, lfem.BodyType.STATIC)
+        self.assertIs(d.model, lfem.Model.NEO_HOOKEAN)  # an int comes back as the enum
+        self.assertEqual((d.density, d.young_modulus), (400.0, 1e6))
+        self.assertIs(lfem.ShapeDef(type=1).type, lfem.ShapeType.BOX)
+        self.assertEqual(list(lfem.WorldDef(gravity=(0, -1, 0)).gravity), [0.0, -1.0, 0.0])
+        with lfem.World() as world:
+            self.assertTrue(world.is_valid(world.create_body(lfem.BodyDef(friction=0.1))))
+
+        s = lfem.ShapeDef()
+        for bad in [(1, 1), (1, 1, 1, 1), 1.0]:
+            with self.assertRaises(lfem.InvalidArgumentError) as cm:
+                s.half_extents = bad  # a short vector is refused, not padded with zeros
+            self.assertIn("half_extents", str(cm.exception))
+            self.assertIsInstance(cm.exception, ValueError)
+        self.assertEqual(list(s.half_extents), [0.5, 0.5, 0.5])
+        with self.assertRaises(lfem.InvalidArgumentError):
+            lfem.ShapeDef(rotation=(1, 0, 0))
+        for field, bad in [("density", "400"), ("density", None), ("model", "NEO_HOOKEAN"),
+                           ("model", lfem.ShapeType.BOX), ("category_bits", 1.5),
+                           ("gravity", ("a", "b", "c")), ("allow_unstable_step", 2),
+                           ("user_data", "x")]:
+            kind = lfem.WorldDef if field in ("gravity", "allow_unstable_step") else lfem.BodyDef
+            with self.assertRaises(TypeError, msg=field) as cm:
+                kind(**{field: bad})
+            self.assertIn(field, str(cm.exception))
+        with self.assertRaises(lfem.InvalidArgumentError):
+            lfem.BodyDef(model=7)
+        with self.assertRaises(lfem.InvalidArgumentError):
+            lfem.BodyDef(mask_bits=-1)
+        with self.assertRaises(TypeError) as cm:
+            lfem.BodyDef(youngs_modulus=1e5)
+        self.assertIn("youngs_modulus", str(cm.exception))
+        with self.assertRaises(AttributeError):
+            d.youngs_modulus = 1e5  # a typo is not silently a new attribute
+        self.assertIn("young_modulus=1000000.0", repr(lfem.BodyDef()))
 
     def test_version(self):
         self.assertEqual(lfem.version(),
                          (lfem.VERSION_MAJOR, lfem.VERSION_MINOR, lfem.VERSION_PATCH))
         self.assertEqual(lfem.version_string(), "%d.%d.%d" % lfem.version())
+        self.assertEqual(lfem.__version__, lfem.version_string())
+        self.assertTrue(os.path.isabs(lfem.library_path), lfem.library_path)
         self.assertTrue(lfem.status_string(lfem.Status.INVALID_MESH).startswith("LFEM_INVALID_MESH"))
 
 
@@ -265,6 +309,34 @@ class Errors(unittest.TestCase):
             lfem.Mesh.box(SIZE, (0, 2, 1))
         self.assertEqual(cm.exception.status, lfem.Status.INVALID_ARGUMENT)
 
+    def test_wrong_types_raise_type_error_naming_the_argument(self):
+        # Checked before the call: no ctypes.ArgumentError, no numpy conversion of "0.1".
+        with lfem.World() as world:
+            block = add_block(world, lfem.Model.PAPER)
+            cases = [
+                (lambda: world.step("0.1"), "dt"),
+                (lambda: world.step(None), "dt"),
+                (lambda: world.set_time_step([1e-3]), "time_step"),
+                (lambda: world.set_gravity(("0", "0", "-9.81")), "gravity"),
+                (lambda: world.positions((block.index, block.generation)), "body"),
+                (lambda: world.create_body(lfem.WorldDef()), "definition"),
+                (lambda: world.add_mesh(block, "mesh"), "mesh"),
+                (lambda: world.fix_nodes(block, [0.5]), "nodes"),
+                (lambda: world.positions(block, out=[[0.0] * 3]), "out"),
+                (lambda: lfem.Mesh.box((1, 1, 1), (2, 2, "2")), "cells"),
+                (lambda: lfem.Mesh.cylinder(0.1, 0.2, 8.0, 2, 2), "segments"),
+                (lambda: lfem.Mesh.load_gmsh(3.5), "path"),
+            ]
+            for call, name in cases:
+                with self.assertRaises(TypeError, msg=name) as cm:
+                    call()
+                self.assertIn(name, str(cm.exception))
+            with self.assertRaises(lfem.InvalidArgumentError) as cm:
+                world.set_gravity((0, -9.81))
+            self.assertIn("gravity", str(cm.exception))
+            with self.assertRaises(ValueError):  # InvalidArgumentError is a ValueError too
+                world.step(-1.0)
+
     def test_null_pointers_are_refused(self):
         # Straight through the raw declarations: NULL is answered, never a crash.
         with self.assertRaises(lfem.LfemError) as cm:
@@ -282,10 +354,16 @@ class Errors(unittest.TestCase):
             self.assertTrue(world.is_valid(block))
             world.destroy_body(block)
             self.assertFalse(world.is_valid(copy))
-            with self.assertRaises(lfem.LfemError) as cm:
-                world.positions(copy)
-            self.assertEqual(cm.exception.status, lfem.Status.INVALID_HANDLE)
-            self.assertTrue(cm.exception.message.startswith("lfem_body_get_"))
+            # Each error names the call made, not the count asked inside it first.
+            for call, name in [(world.positions, "lfem_body_get_positions"),
+                               (world.velocities, "lfem_body_get_velocities"),
+                               (world.von_mises_stress, "lfem_body_get_von_mises_stress"),
+                               (world.boundary_triangles, "lfem_body_get_boundary_triangles")]:
+                with self.assertRaises(lfem.LfemError) as cm:
+                    call(copy)
+                self.assertEqual(cm.exception.status, lfem.Status.INVALID_HANDLE)
+                self.assertTrue(cm.exception.message.startswith(name + ":"),
+                                cm.exception.message)
             with self.assertRaises(lfem.LfemError) as cm:
                 world.destroy_body(copy)
             self.assertEqual(cm.exception.status, lfem.Status.INVALID_HANDLE)
@@ -321,7 +399,9 @@ class Errors(unittest.TestCase):
             self.assertEqual(cm.exception.status, lfem.Status.BUFFER_TOO_SMALL)
             self.assertTrue(np.all(short == 7.0))
             long = np.full((n + 2, 3), 7.0)
-            self.assertIs(world.positions(block, out=long), long)
+            filled = world.positions(block, out=long)
+            self.assertEqual(filled.shape, (n, 3))  # the rows written, not the whole buffer
+            self.assertTrue(np.shares_memory(filled, long))
             self.assertTrue(np.all(long[n:] == 7.0))
             np.testing.assert_array_equal(long[:n], world.positions(block))
             with self.assertRaises(lfem.LfemError) as cm:

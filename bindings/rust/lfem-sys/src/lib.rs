@@ -87,26 +87,46 @@ pub struct lfem_world_def {
     pub internal_value: u32,
 }
 
+/// Statistics of a world (lfem_world_stats): time, energies and momenta of the moving
+/// (deformable) bodies, solver figures.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct lfem_world_stats {
+    /// s, simulated time.
     pub time: c_double,
+    /// Sub-steps taken since creation.
     pub steps: u64,
+    /// s, size of the last sub-step (0 before the first).
     pub step_size: c_double,
+    /// s, the stable limit (see `lfem_world_get_stable_step`).
     pub stable_step: c_double,
+    /// Sub-steps taken by the last `lfem_world_step`.
     pub substeps_last_call: u32,
+    /// Live bodies of every type.
     pub body_count: u32,
+    /// J, of the moving (deformable) bodies, from the synchronized velocities.
     pub kinetic_energy: c_double,
+    /// J, of the deformable bodies.
     pub strain_energy: c_double,
+    /// J, work done since creation by gravity, node forces and prescribed node velocities.
     pub external_work: c_double,
+    /// J, removed since creation by damping (and contact).
     pub dissipated_energy: c_double,
+    /// J, kinetic + strain + dissipated - external_work - initial energy: a run-time error indicator, ideally 0.
     pub energy_error: c_double,
+    /// kg m/s, of the moving bodies.
     pub linear_momentum: [c_double; 3],
+    /// kg m^2/s, about the world origin.
     pub angular_momentum: [c_double; 3],
+    /// Active contacts after the last step.
     pub contact_count: u32,
+    /// Contact solver sweeps in the last sub-step.
     pub solver_iterations: u32,
+    /// m, largest remaining constraint violation, last sub-step.
     pub solver_residual: c_double,
+    /// m, largest penetration after the last sub-step.
     pub max_penetration: c_double,
+    /// rad, largest angle between the global rotation integrated by eq. (2) and the one re-fitted to the nodes, last sub-step ("paper" model only, else 0).
     pub rotation_drift: c_double,
 }
 
@@ -114,7 +134,9 @@ pub struct lfem_world_stats {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct lfem_phase_time {
+    /// s, wall time spent in the phase.
     pub seconds: c_double,
+    /// How often it ran (the unit is given per phase in `lfem_profile`).
     pub calls: u64,
 }
 
@@ -122,18 +144,31 @@ pub struct lfem_phase_time {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct lfem_profile {
+    /// Sub-steps profiled.
     pub substeps: u64,
+    /// Elastic forces element by element; calls: deformable bodies x sub-steps.
     pub internal_forces: lfem_phase_time,
+    /// Central-difference predictor (eqs. 1, 3) and the rigid bodies' free motion; calls: deformable and rigid bodies x sub-steps.
     pub predictor: lfem_phase_time,
+    /// Rigid motion of kinematic bodies; calls: kinematic bodies x sub-steps.
     pub kinematic_motion: lfem_phase_time,
+    /// Swept boxes of the boundary triangles and the spatial hash; calls: sub-steps that ran detection.
     pub broad_phase: lfem_phase_time,
+    /// Per slave node: hash query and node-triangle tests (eqs. 5, 6); calls: sub-steps that ran detection.
     pub narrow_phase: lfem_phase_time,
+    /// Nodes against rigid shapes; calls: sub-steps in which some body had shapes to test against.
     pub shape_queries: lfem_phase_time,
+    /// Point queries of shapes: closed form and libccd.
     pub shape_tests: u64,
+    /// Of those, libccd MPR queries (convex hulls).
     pub ccd_queries: u64,
+    /// Multiplier solve: set-up, warm start, normal (tension release) updates; calls: sub-steps with pairs to solve.
     pub normal_solve: lfem_phase_time,
+    /// Multiplier solve: tangential updates and the return onto the Coulomb cone (eq. 7); calls: sub-steps with a pair of non-zero friction.
     pub friction: lfem_phase_time,
+    /// Eq. (2) and the re-fit of the floating frame; calls: "paper"-model bodies x sub-steps.
     pub global_rotation: lfem_phase_time,
+    /// Velocities, contact forces, energy bookkeeping; calls: sub-steps.
     pub commit: lfem_phase_time,
 }
 

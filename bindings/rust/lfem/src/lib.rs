@@ -20,6 +20,8 @@
 //! when dropped. [`Body`] is a plain value handle: a handle of a destroyed body (or of another
 //! world) is answered with [`Status::InvalidHandle`], never undefined behaviour.
 
+#![deny(missing_docs)]
+
 use std::ffi::{CStr, CString};
 use std::fmt;
 use std::mem::{align_of, size_of};
@@ -46,6 +48,7 @@ pub enum Status {
     Unstable,
     /// A file could not be read or written, or is malformed.
     IoError,
+    /// An allocation failed; nothing was changed.
     OutOfMemory,
     /// A bug in lfem: please report it with the message.
     InternalError,
@@ -123,6 +126,16 @@ impl Error {
         Error { status, message }
     }
 
+    /// The same error naming the call the user made (`outer`, e.g. lfem_body_get_positions)
+    /// instead of the helper call that failed first inside it (`inner`, a count).
+    fn renamed(self, inner: &str, outer: &str) -> Error {
+        match self.message.strip_prefix(inner) {
+            Some(rest) if rest.starts_with(':') => Error { status: self.status, message: format!("{}{}", outer, rest) },
+            _ => self,
+        }
+    }
+
+    /// Why the call failed.
     pub fn status(&self) -> Status {
         self.status
     }
@@ -141,6 +154,7 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// The result of every fallible call of this crate.
 pub type Result<T> = std::result::Result<T, Error>;
 
 fn check(raw: sys::lfem_status) -> Result<()> {
@@ -433,11 +447,14 @@ impl Default for ShapeDef {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Body {
+    /// The slot of the body in its world.
     pub index: u32,
+    /// Counts the bodies that held the slot: a stale handle has an old one.
     pub generation: u32,
 }
 
 impl Body {
+    /// The null handle, never valid.
     pub const NULL: Body = Body { index: 0, generation: 0 };
 
     fn raw(self) -> sys::lfem_body {
@@ -493,6 +510,7 @@ impl Default for Contact {
 }
 
 impl Contact {
+    /// Whether friction is on the Coulomb cone (the node slides).
     pub fn is_sliding(&self) -> bool {
         self.sliding != 0
     }
@@ -597,6 +615,7 @@ impl World {
         check(unsafe { sys::lfem_world_step(self.ptr_mut(), dt) })
     }
 
+    /// Gravity (m/s^2) from now on.
     pub fn set_gravity(&mut self, gravity: [f64; 3]) -> Result<()> {
         // SAFETY: live world, 3 doubles.
         check(unsafe { sys::lfem_world_set_gravity(self.ptr_mut(), gravity.as_ptr()) })
@@ -616,6 +635,7 @@ impl World {
         Ok(out)
     }
 
+    /// Time, energies, momenta and solver figures.
     pub fn stats(&self) -> Result<WorldStats> {
         let mut out = WorldStats::default();
         // SAFETY: live world, valid output.
@@ -728,6 +748,7 @@ impl World {
         Ok((linear, angular))
     }
 
+    /// The number of nodes of a body.
     pub fn node_count(&self, body: Body) -> Result<usize> {
         let mut out = 0u32;
         // SAFETY: live world, valid output.
@@ -735,6 +756,7 @@ impl World {
         Ok(out as usize)
     }
 
+    /// The number of tets of a body.
     pub fn tet_count(&self, body: Body) -> Result<usize> {
         let mut out = 0u32;
         // SAFETY: live world, valid output.
@@ -754,7 +776,8 @@ impl World {
 
     /// Node positions (m), one `[x, y, z]` per node.
     pub fn positions(&self, body: Body) -> Result<Vec<[f64; 3]>> {
-        let mut out = vec![[0.0; 3]; self.node_count(body)?];
+        let n = self.node_count(body).map_err(|e| e.renamed("lfem_body_get_node_count", "lfem_body_get_positions"))?;
+        let mut out = vec![[0.0; 3]; n];
         self.positions_into(body, &mut out)?;
         Ok(out)
     }
@@ -770,7 +793,8 @@ impl World {
 
     /// Node velocities (m/s) at the current time, one `[vx, vy, vz]` per node.
     pub fn velocities(&self, body: Body) -> Result<Vec<[f64; 3]>> {
-        let mut out = vec![[0.0; 3]; self.node_count(body)?];
+        let n = self.node_count(body).map_err(|e| e.renamed("lfem_body_get_node_count", "lfem_body_get_velocities"))?;
+        let mut out = vec![[0.0; 3]; n];
         self.velocities_into(body, &mut out)?;
         Ok(out)
     }
@@ -786,7 +810,8 @@ impl World {
     pub fn boundary_triangles(&self, body: Body) -> Result<Vec<[u32; 3]>> {
         let mut n = 0u32;
         // SAFETY: live world, valid output.
-        check(unsafe { sys::lfem_body_get_boundary_triangle_count(self.ptr(), body.raw(), &mut n) })?;
+        check(unsafe { sys::lfem_body_get_boundary_triangle_count(self.ptr(), body.raw(), &mut n) })
+            .map_err(|e| e.renamed("lfem_body_get_boundary_triangle_count", "lfem_body_get_boundary_triangles"))?;
         let mut out = vec![[0u32; 3]; n as usize];
         // SAFETY: out holds 3*n indices.
         check(unsafe {
@@ -797,7 +822,8 @@ impl World {
 
     /// Von Mises stress (Pa), one per tet.
     pub fn von_mises_stress(&self, body: Body) -> Result<Vec<f64>> {
-        let mut out = vec![0.0; self.tet_count(body)?];
+        let n = self.tet_count(body).map_err(|e| e.renamed("lfem_body_get_tet_count", "lfem_body_get_von_mises_stress"))?;
+        let mut out = vec![0.0; n];
         let capacity = to_u32(out.len(), "tet count")?;
         // SAFETY: out holds capacity doubles.
         check(unsafe { sys::lfem_body_get_von_mises_stress(self.ptr(), body.raw(), out.as_mut_ptr(), capacity) })?;
@@ -964,7 +990,8 @@ fn mesh_from(status: sys::lfem_status, out: *mut sys::lfem_mesh) -> Result<Mesh>
 }
 
 impl Mesh {
-    /// A box [0, size] (m) of cells[0] x cells[1] x cells[2] hexahedra of 6 tets each.
+    /// A box from the origin to `size` (m) of `cells[0] x cells[1] x cells[2]` hexahedra of 6
+    /// tets each.
     pub fn new_box(size: [f64; 3], cells: [u32; 3]) -> Result<Mesh> {
         let mut out = ptr::null_mut();
         // SAFETY: 3 doubles, 3 integers, valid output.
@@ -1014,11 +1041,13 @@ impl Mesh {
         mesh_from(status, out)
     }
 
+    /// The number of nodes.
     pub fn node_count(&self) -> usize {
         // SAFETY: live mesh.
         unsafe { sys::lfem_mesh_get_node_count(self.raw.as_ptr()) as usize }
     }
 
+    /// The number of tets.
     pub fn tet_count(&self) -> usize {
         // SAFETY: live mesh.
         unsafe { sys::lfem_mesh_get_tet_count(self.raw.as_ptr()) as usize }

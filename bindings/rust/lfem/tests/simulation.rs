@@ -159,9 +159,18 @@ fn destroyed_and_foreign_handles_are_refused() {
     assert!(world.is_valid(block));
     world.destroy_body(block).unwrap();
     assert!(!world.is_valid(copy));
-    let err = world.positions(copy).unwrap_err();
-    assert_eq!(err.status(), Status::InvalidHandle);
-    assert!(err.message().starts_with("lfem_body_get_"), "message: {}", err.message());
+    // Each error names the call made, not the count asked inside it first.
+    let calls: [(&str, lfem::Result<usize>); 4] = [
+        ("lfem_body_get_positions", world.positions(copy).map(|v| v.len())),
+        ("lfem_body_get_velocities", world.velocities(copy).map(|v| v.len())),
+        ("lfem_body_get_von_mises_stress", world.von_mises_stress(copy).map(|v| v.len())),
+        ("lfem_body_get_boundary_triangles", world.boundary_triangles(copy).map(|v| v.len())),
+    ];
+    for (name, result) in calls {
+        let err = result.unwrap_err();
+        assert_eq!(err.status(), Status::InvalidHandle);
+        assert!(err.message().starts_with(&format!("{}:", name)), "message: {}", err.message());
+    }
     assert_eq!(world.destroy_body(copy).unwrap_err().status(), Status::InvalidHandle);
     assert_eq!(world.stats().unwrap().body_count, 0);
 
@@ -242,6 +251,8 @@ fn version_of_the_loaded_library() {
     let (major, minor, patch) = lfem::version();
     assert_eq!((major, minor, patch), (lfem::sys::LFEM_VERSION_MAJOR, lfem::sys::LFEM_VERSION_MINOR, lfem::sys::LFEM_VERSION_PATCH));
     assert_eq!(lfem::version_string(), format!("{}.{}.{}", major, minor, patch));
+    // The crate's version is the library's it was written for.
+    assert_eq!(lfem::version_string(), env!("CARGO_PKG_VERSION"));
     assert!(Status::InvalidMesh.to_string().starts_with("LFEM_INVALID_MESH"));
 }
 

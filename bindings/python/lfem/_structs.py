@@ -1,0 +1,303 @@
+"""The C structs of lfem.h as ctypes structures (same layout; checked by the tests against the
+sizes bindings/abi_layout.c asserts in C), and the enums.
+
+The definitions (WorldDef, BodyDef, ShapeDef) start from the library's defaults, take their
+fields as keywords (BodyDef(density=400)) and check every field that is set: a value of the wrong
+type raises TypeError, a vector of the wrong length InvalidArgumentError, an unknown name
+AttributeError. Enum fields read back as their enum."""
+
+from __future__ import annotations
+
+import ctypes
+import enum
+import numbers
+from typing import Any, Callable, ClassVar, Dict, Tuple, Type
+
+import numpy as np
+
+from . import _convert
+from ._errors import InvalidArgumentError
+
+
+class BodyType(enum.IntEnum):
+    """lfem_body_type."""
+
+    DEFORMABLE = 0  # finite elements, moves and deforms
+    STATIC = 1      # never moves (a floor, a wall)
+    KINEMATIC = 2   # moves rigidly with a prescribed velocity, unaffected by forces
+    RIGID = 3       # the global translation and rotation alone, moved by forces and contacts
+
+
+class Model(enum.IntEnum):
+    """lfem_model: the material model of a deformable body."""
+
+    PAPER = 0         # floating frame: one global rotation per body (the paper's eq. 2)
+    COROTATIONAL = 1  # one rotation per tet: large local rotations (bending)
+    NEO_HOOKEAN = 2   # stable neo-Hookean hyperelasticity: large strains
+    LINEAR = 3        # small-strain linear elasticity, no rotation at all
+
+
+class ShapeType(enum.IntEnum):
+    """lfem_shape_type: the kind of a rigid shape."""
+
+    PLANE = 0        # the half-space below the plane through center with normal local +z
+    BOX = 1          # half_extents along the local axes
+    SPHERE = 2       # radius
+    CAPSULE = 3      # segment -half_length..+half_length along local z, swept by radius
+    CONVEX_HULL = 4  # convex hull of points (local coordinates), see World.add_shape
+
+
+_d3 = ctypes.c_double * 3
+_enum = ctypes.c_int  # C enums are 32-bit
+
+# Set by _native once the library is loaded: a definition's class -> its lfem_*_def_default.
+DEFAULTS: Dict[type, Callable[[], Any]] = {}
+
+
+def _enum_property(raw: str, kind: Type[enum.IntEnum]) -> property:
+    """A public enum field over the raw C int field `raw` (an unknown value reads as int)."""
+
+    def get(self: Any) -> Any:
+        value = getattr(self, raw)
+        try:
+            return kind(value)
+        except ValueError:
+            return value
+
+    def put(self: Any, value: Any) -> None:
+        public = raw.lstrip("_")
+        if not isinstance(value, kind) and (isinstance(value, (bool, enum.Enum))
+                                            or not isinstance(value, numbers.Integral)):
+            raise TypeError("lfem: %s must be a %s, not %r" % (public, kind.__name__, value))
+        try:
+            member = kind(int(value))
+        except ValueError:
+            raise InvalidArgumentError("lfem: %s = %d is no %s" % (public, value,
+                                                                   kind.__name__)) from None
+        ctypes.Structure.__setattr__(self, raw, int(member))
+
+    return property(get, put, doc="%s (the C field %s)" % (kind.__name__, raw.lstrip("_")))
+
+
+class _Definition(ctypes.Structure):
+    """Base of WorldDef, BodyDef and ShapeDef (see the module docstring)."""
+
+    _enums: ClassVar[Tuple[str, ...]] = ()  # public names of the enum properties
+
+    def __init__(self, **fields: Any) -> None:
+        super().__init__()
+        defaults = DEFAULTS[type(self)]()  # kept alive until copied
+        ctypes.memmove(ctypes.addressof(self), ctypes.addressof(defaults), ctypes.sizeof(self))
+        for name, value in fields.items():
+            if name not in self._public():
+                raise TypeError("lfem: %s() got an unexpected keyword argument %r"
+                                % (type(self).__name__, name))
+            setattr(self, name, value)
+
+    @classmethod
+    def default(cls) -> Any:
+        """The library's defaults (the same as cls())."""
+        return cls()
+
+    @classmethod
+    def _public(cls) -> Tuple[str, ...]:
+        names = tuple(f[0] for f in cls._fields_ if not f[0].startswith("_"))
+        return names + cls._enums
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name in self._enums or name.startswith("_"):
+            return super().__setattr__(name, value)
+        ctype = dict((f[0], f[1]) for f in self._fields_).get(name)
+        if ctype is None:
+            raise AttributeError("lfem: %s has no field %r (fields: %s)"
+                                 % (type(self).__name__, name, ", ".join(self._public())))
+        if issubclass(ctype, ctypes.Array):
+            value = tuple(_convert.vector(value, name, ctype._length_))
+        elif ctype is ctypes.c_double:
+            value = _convert.real(value, name)
+        elif ctype is ctypes.c_uint32:
+            value = _convert.count(value, name)
+        elif ctype is ctypes.c_uint8:
+            value = _convert.flag(value, name)
+        elif ctype is ctypes.c_void_p:
+            if value is not None and not isinstance(value, int):
+                raise TypeError("lfem: %s must be an int address or None, not %s"
+                                % (name, type(value).__name__))
+        super().__setattr__(name, value)
+
+    def __repr__(self) -> str:
+        def show(value: Any) -> str:
+            if isinstance(value, ctypes.Array):
+                return repr(tuple(value))
+            return repr(value)
+        return "%s(%s)" % (type(self).__name__, ", ".join(
+            "%s=%s" % (name, show(getattr(self, name))) for name in self._enums
+            + tuple(f[0] for f in self._fields_ if not f[0].startswith("_"))))
+
+
+class WorldDef(_Definition):
+    """lfem_world_def: how a world is set up. WorldDef(time_step=1e-3) is the defaults with
+    the fields given changed."""
+
+    _fields_ = [
+        ("gravity", _d3),                     # m/s^2, default (0, 0, -9.81)
+        ("time_step", ctypes.c_double),       # s, 0 = automatic (default), > 0 fixed sub-step
+        ("step_safety", ctypes.c_double),     # in (0, 1), default 0.9
+        ("contact_iterations", ctypes.c_uint32),
+        ("thread_count", ctypes.c_uint32),    # 1..64, default 1; results independent of it
+        ("contact_tolerance", ctypes.c_double),
+        ("max_substeps", ctypes.c_uint32),
+        ("allow_unstable_step", ctypes.c_uint8),
+        ("_padding", ctypes.c_uint8 * 3),
+        ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
+    ]
+
+
+class BodyDef(_Definition):
+    """lfem_body_def: how a body is set up. BodyDef(density=400, model=Model.NEO_HOOKEAN) is
+    the defaults with the fields given changed."""
+
+    _fields_ = [
+        ("_type", _enum),                     # BodyType, default DEFORMABLE
+        ("_model", _enum),                    # Model, default PAPER
+        ("young_modulus", ctypes.c_double),   # Pa, default 1e6
+        ("poisson_ratio", ctypes.c_double),   # (-1, 0.5), default 0.3
+        ("density", ctypes.c_double),         # kg/m^3, default 1000
+        ("damping", ctypes.c_double),         # 1/s, default 0
+        ("friction", ctypes.c_double),        # default 0.5
+        ("linear_velocity", _d3),             # m/s
+        ("angular_velocity", _d3),            # rad/s
+        ("category_bits", ctypes.c_uint32),   # default 1
+        ("mask_bits", ctypes.c_uint32),       # default all bits
+        ("user_data", ctypes.c_void_p),
+        ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
+        ("_padding", ctypes.c_uint32),
+    ]
+    _enums = ("type", "model")
+    type = _enum_property("_type", BodyType)
+    model = _enum_property("_model", Model)
+
+
+class ShapeDef(_Definition):
+    """lfem_shape_def: a rigid shape of a static or kinematic body. ShapeDef(type=ShapeType.BOX,
+    half_extents=(1, 1, 0.1)) is the defaults with the fields given changed; convex hull points
+    are passed to World.add_shape."""
+
+    _fields_ = [
+        ("_type", _enum),                     # ShapeType, default PLANE
+        ("_point_count", ctypes.c_uint32),    # set by World.add_shape
+        ("center", _d3),                      # m, default 0
+        ("rotation", ctypes.c_double * 4),    # unit quaternion (w, x, y, z), default identity
+        ("half_extents", _d3),                # m, box, default 0.5
+        ("radius", ctypes.c_double),          # m, sphere and capsule, default 0.5
+        ("half_length", ctypes.c_double),     # m, capsule, default 0.5
+        ("_points", ctypes.POINTER(ctypes.c_double)),  # set by World.add_shape
+        ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
+        ("_padding", ctypes.c_uint32),
+    ]
+    _enums = ("type",)
+    type = _enum_property("_type", ShapeType)
+
+
+class WorldStats(ctypes.Structure):
+    """lfem_world_stats: time, energies (J), momenta, solver figures."""
+
+    _fields_ = [
+        ("time", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
+        ("step_size", ctypes.c_double),
+        ("stable_step", ctypes.c_double),
+        ("substeps_last_call", ctypes.c_uint32),
+        ("body_count", ctypes.c_uint32),
+        ("kinetic_energy", ctypes.c_double),
+        ("strain_energy", ctypes.c_double),
+        ("external_work", ctypes.c_double),
+        ("dissipated_energy", ctypes.c_double),
+        ("energy_error", ctypes.c_double),
+        ("linear_momentum", _d3),
+        ("angular_momentum", _d3),
+        ("contact_count", ctypes.c_uint32),
+        ("solver_iterations", ctypes.c_uint32),
+        ("solver_residual", ctypes.c_double),
+        ("max_penetration", ctypes.c_double),
+        ("rotation_drift", ctypes.c_double),
+    ]
+
+
+class PhaseTime(ctypes.Structure):
+    """lfem_phase_time: wall time (s) and run count of one phase of the step."""
+
+    _fields_ = [("seconds", ctypes.c_double), ("calls", ctypes.c_uint64)]
+
+
+class Profile(ctypes.Structure):
+    """lfem_profile: per-phase time and counts of the step, accumulated."""
+
+    _fields_ = [
+        ("substeps", ctypes.c_uint64),
+        ("internal_forces", PhaseTime),
+        ("predictor", PhaseTime),
+        ("kinematic_motion", PhaseTime),
+        ("broad_phase", PhaseTime),
+        ("narrow_phase", PhaseTime),
+        ("shape_queries", PhaseTime),
+        ("shape_tests", ctypes.c_uint64),
+        ("ccd_queries", ctypes.c_uint64),
+        ("normal_solve", PhaseTime),
+        ("friction", PhaseTime),
+        ("global_rotation", PhaseTime),
+        ("commit", PhaseTime),
+    ]
+
+
+class Body(ctypes.Structure):
+    """A body handle (lfem_body), a value; Body() is the null handle."""
+
+    _fields_ = [("index", ctypes.c_uint32), ("generation", ctypes.c_uint32)]
+
+    def __eq__(self, other: object) -> bool:
+        return (isinstance(other, Body) and self.index == other.index
+                and self.generation == other.generation)
+
+    def __hash__(self) -> int:
+        return hash((self.index, self.generation))
+
+    def __repr__(self) -> str:
+        return "Body(index=%d, generation=%d)" % (self.index, self.generation)
+
+
+class Contact(ctypes.Structure):
+    """lfem_contact: one active contact of the last step (World.contacts gives them as a numpy
+    array of CONTACT_DTYPE, the same layout)."""
+
+    _fields_ = [
+        ("body_a", Body),
+        ("body_b", Body),
+        ("node", ctypes.c_uint32),
+        ("triangle", ctypes.c_uint32 * 3),
+        ("barycentric", ctypes.c_double * 2),
+        ("position", _d3),
+        ("normal", _d3),
+        ("force", _d3),
+        ("sliding", ctypes.c_uint8),
+        ("_padding", ctypes.c_uint8 * 3),
+        ("shape", ctypes.c_uint32),  # index of body_b's shape, or NO_SHAPE for a triangle
+    ]
+
+
+#: Contact.shape of a contact with a triangle (not a rigid shape).
+NO_SHAPE = 0xFFFFFFFF
+
+_BODY_DTYPE = np.dtype([("index", "<u4"), ("generation", "<u4")])
+
+_CONTACT_FIELDS = ["body_a", "body_b", "node", "triangle", "barycentric", "position", "normal",
+                   "force", "sliding", "shape"]
+
+#: The numpy dtype of lfem_contact (same offsets and size as Contact).
+CONTACT_DTYPE = np.dtype({
+    "names": _CONTACT_FIELDS,
+    "formats": [_BODY_DTYPE, _BODY_DTYPE, np.uint32, (np.uint32, 3), (np.float64, 2),
+                (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8, np.uint32],
+    "offsets": [getattr(Contact, name).offset for name in _CONTACT_FIELDS],
+    "itemsize": ctypes.sizeof(Contact),
+})
