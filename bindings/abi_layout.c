@@ -37,7 +37,7 @@ CHECK_SIZE(lfem_phase_time, 16);
 CHECK_OFFSET(lfem_phase_time, seconds, 0);
 CHECK_OFFSET(lfem_phase_time, calls, 8);
 
-CHECK_SIZE(lfem_profile, 184);
+CHECK_SIZE(lfem_profile, 192);
 CHECK_OFFSET(lfem_profile, substeps, 0);
 CHECK_OFFSET(lfem_profile, internal_forces, 8);
 CHECK_OFFSET(lfem_profile, predictor, 24);
@@ -51,6 +51,7 @@ CHECK_OFFSET(lfem_profile, normal_solve, 120);
 CHECK_OFFSET(lfem_profile, friction, 136);
 CHECK_OFFSET(lfem_profile, global_rotation, 152);
 CHECK_OFFSET(lfem_profile, commit, 168);
+CHECK_OFFSET(lfem_profile, candidate_searches, 184);
 
 CHECK_SIZE(lfem_world_stats, 160);
 CHECK_OFFSET(lfem_world_stats, time, 0);

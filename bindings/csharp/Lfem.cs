@@ -158,6 +158,7 @@ namespace Lfem
         public PhaseTime Friction;
         public PhaseTime GlobalRotation;
         public PhaseTime Commit;
+        public ulong CandidateSearches; // contact's searches for candidate faces anew
     }
 
     /// <summary>A body handle (lfem_body): a value. Body.Null is {0, 0}.</summary>

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/contact_body.h"
+#include "contact/triangle_bvh.h"
 #include "lfem.h"
 #include "mesh/surface.h"
 
@@ -15,6 +16,8 @@ namespace lfem {
 // One body as the world has it during a sub-step, after the predictor.
 struct ContactBodyInput {
     uint32_t slot = 0;                   // the body's slot in the world
+    uint64_t identity = 0;               // changes whenever the body's geometry does
+    const TriangleBvh* static_bvh = nullptr;  // static bodies: the tree of their triangles
     lfem_body_type type = LFEM_BODY_STATIC;
     const Surface* surface = nullptr;    // its boundary (triangles, slave candidates)
     uint32_t node_count = 0;

@@ -44,7 +44,7 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
     for (double m : ref.mass) ref.total_mass += m;
     const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
     for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
-    ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), n);
+    derive_reference_data(body, ref);
     if (body.is_deformable()) ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame, pool).omega_max;
     if (body.is_rigid()) {
         // The inertia of the lumped masses about the centre of mass, in the reference frame.
@@ -115,6 +115,14 @@ void start_motion(Body& candidate, BodyState& state, ThreadPool* pool) {
 
 }  // namespace
 
+void derive_reference_data(const Body& body, BodyReference& ref) {
+    ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count());
+    compute_node_triangles(ref.node_count(), ref.surface);
+    ref.bvh = TriangleBvh{};
+    if (body.def.type == LFEM_BODY_STATIC)  // never moves: its tree is built once, here
+        ref.bvh.build(ref.X.data(), ref.surface.triangles.data(), ref.surface.triangle_count());
+}
+
 void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_count, const uint32_t* tets,
                      uint32_t tet_count) {
     Body& body = bodies_.get(handle);
@@ -149,6 +157,7 @@ void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_co
     body.node_force = std::move(forces);
     if (body.is_dynamic()) state_.counters.initial_energy += added_kinetic;
     state_.counters.scan_overlaps = true;
+    body.geometry_revision += 1;
 }
 
 void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_t node_count,
@@ -176,6 +185,7 @@ void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_
     ref.X.assign(positions, positions + 3 * std::size_t(node_count));
     ref.surface.triangles.assign(triangles, triangles + 3 * std::size_t(triangle_count));
     compute_surface_data(ref.X.data(), ref.node_count(), ref.surface);
+    derive_reference_data(body, ref);
     BodyState state = body.state;
     state.x = ref.X;
     state.v_half.assign(ref.X.size(), 0.0);
@@ -189,6 +199,7 @@ void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_
     body.state = std::move(state);
     body.node_mode = std::move(modes);
     state_.counters.scan_overlaps = true;
+    body.geometry_revision += 1;
 }
 
 uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const double pose[7]) {
@@ -201,6 +212,7 @@ uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const doubl
         for (int k = 0; k < 3; ++k) body.state.global.center[k] = pose[k];  // kinematic pivot
     body.shapes.push_back(std::move(copy));
     body.state.shape_pose.insert(body.state.shape_pose.end(), pose, pose + 7);
+    body.geometry_revision += 1;
     return uint32_t(body.shapes.size() - 1);
 }
 

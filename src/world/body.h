@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/rigid_shape.h"
+#include "contact/triangle_bvh.h"
 #include "fem/central_difference.h"
 #include "fem/element_colouring.h"
 #include "fem/element_mesh.h"
@@ -35,6 +36,8 @@ struct BodyReference {
     Numbering numbering;            // internal (locality) order <-> the caller's numbering
     ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
                                     // from tets: rebuilt, not saved, by checkpoints)
+    TriangleBvh bvh;                // static bodies: the tree of the boundary triangles, built
+                                    // when the mesh is added (derived, like the colouring)
 
     uint32_t node_count() const { return uint32_t(X.size() / 3); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }
@@ -61,6 +64,8 @@ struct BodyState {
 
 struct Body {
     uint32_t generation = 0;
+    uint32_t geometry_revision = 0;           // counts the meshes and shapes added (contact's
+                                              // cached candidates hold while it does not change)
     lfem_body_def def{};
     Lame lame;
     BodyReference ref;
@@ -77,7 +82,13 @@ struct Body {
     bool is_paper() const { return is_deformable() && def.model == LFEM_MODEL_PAPER; }
     bool has_mesh() const { return !ref.X.empty(); }  // tets, or a static triangle surface
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
+    // Changes whenever the geometry does: a new generation, a mesh or a shape added.
+    uint64_t geometry_identity() const { return uint64_t(generation) << 32 | geometry_revision; }
 };
+
+// The data derived from a body's reference (not saved in checkpoints): the element colouring,
+// the surface's node-triangle lists and, for a static body, the tree of its triangles.
+void derive_reference_data(const Body& body, BodyReference& ref);
 
 // ---- views for the kernels ---------------------------------------------------------------
 

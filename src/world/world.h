@@ -14,6 +14,7 @@
 #include "common/thread_pool.h"
 #include "contact/contact_bodies.h"
 #include "contact/detect_node_triangle.h"
+#include "contact/solve_contact_multipliers.h"
 #include "lfem.h"
 #include "world/body.h"
 #include "world/body_registry.h"
@@ -157,6 +158,7 @@ private:
     ContactBodies contact_bodies_;
     std::vector<ContactRecord> detected_;
     DetectionScratch detection_;
+    ContactSolveScratch solve_scratch_;
     std::unique_ptr<ThreadPool> pool_;  // the step's parallel loops
 };
 

@@ -95,9 +95,10 @@ public static class LfemTests
                            "ContactCount", 128, "SolverIterations", 132, "SolverResidual", 136, "MaxPenetration", 144,
                            "RotationDrift", 152);
         Layout<PhaseTime>(16, "Seconds", 0, "Calls", 8);
-        Layout<Profile>(184, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
+        Layout<Profile>(192, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
                         "BroadPhase", 56, "NarrowPhase", 72, "ShapeQueries", 88, "ShapeTests", 104, "CcdQueries", 112,
-                        "NormalSolve", 120, "Friction", 136, "GlobalRotation", 152, "Commit", 168);
+                        "NormalSolve", 120, "Friction", 136, "GlobalRotation", 152, "Commit", 168,
+                        "CandidateSearches", 184);
         Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
                         "UserData", 104, "internalValue", 112);

@@ -247,6 +247,7 @@ class Profile(ctypes.Structure):
         ("friction", PhaseTime),
         ("global_rotation", PhaseTime),
         ("commit", PhaseTime),
+        ("candidate_searches", ctypes.c_uint64),  # contact's searches for candidate faces anew
     ]
 
 

@@ -57,11 +57,11 @@ class Layout(unittest.TestCase):
             "angular_momentum": 104, "contact_count": 128, "solver_iterations": 132,
             "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152})
         self.check(lfem.PhaseTime, 16, {"seconds": 0, "calls": 8})
-        self.check(lfem.Profile, 184, {
+        self.check(lfem.Profile, 192, {
             "substeps": 0, "internal_forces": 8, "predictor": 24, "kinematic_motion": 40,
             "broad_phase": 56, "narrow_phase": 72, "shape_queries": 88, "shape_tests": 104,
             "ccd_queries": 112, "normal_solve": 120, "friction": 136, "global_rotation": 152,
-            "commit": 168})
+            "commit": 168, "candidate_searches": 184})
         self.check(lfem.BodyDef, 120, {
             "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,

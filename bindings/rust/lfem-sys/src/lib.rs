@@ -170,6 +170,9 @@ pub struct lfem_profile {
     pub global_rotation: lfem_phase_time,
     /// Velocities, contact forces, energy bookkeeping; calls: sub-steps.
     pub commit: lfem_phase_time,
+    /// How often contact searched for candidate faces anew (only when a body moved beyond the
+    /// margin of the last search, or the bodies changed).
+    pub candidate_searches: u64,
 }
 
 /// A body handle: a value, `{0, 0}` is the null handle.
@@ -241,7 +244,7 @@ const _: () = assert!(size_of::<lfem_world_def>() == 72);
 const _: () = assert!(size_of::<lfem_world_stats>() == 160);
 const _: () = assert!(size_of::<lfem_contact>() == 128);
 const _: () = assert!(size_of::<lfem_phase_time>() == 16);
-const _: () = assert!(size_of::<lfem_profile>() == 184);
+const _: () = assert!(size_of::<lfem_profile>() == 192);
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(size_of::<lfem_body_def>() == 120);
 #[cfg(target_pointer_width = "64")]

@@ -23,7 +23,7 @@ fn sizes_match_c() {
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
     assert_eq!(size_of::<lfem_phase_time>(), 16);
-    assert_eq!(size_of::<lfem_profile>(), 184);
+    assert_eq!(size_of::<lfem_profile>(), 192);
     assert_eq!(align_of::<lfem_world_def>(), 8);
     assert_eq!(align_of::<lfem_body>(), 4);
 }
@@ -66,6 +66,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_profile, friction), 136);
     assert_eq!(offset!(lfem_profile, global_rotation), 152);
     assert_eq!(offset!(lfem_profile, commit), 168);
+    assert_eq!(offset!(lfem_profile, candidate_searches), 184);
 
     assert_eq!(offset!(lfem_body_def, model), 4);
     assert_eq!(offset!(lfem_body_def, young_modulus), 8);
