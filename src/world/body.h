@@ -29,7 +29,8 @@ struct BodyReference {
     std::vector<double> Dm_inv;     // 9 per tet: inverse reference edge matrix (column-major)
     std::vector<double> volume;     // reference volume per tet (m^3)
     Surface surface;                // boundary triangles, slave and feature nodes, edge length
-    double total_mass = 0;
+    double total_mass = 0;          // the sum of `mass`, added mass included
+    double added_mass = 0;          // kg, added by mass scaling (lfem_world_def.mass_scaling_step)
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
     double inertia[9] = {0};        // rigid bodies: inertia about the COM, reference frame

@@ -31,6 +31,7 @@ struct WorldTotals {
     Vec3 linear_momentum = Vec3::Zero();   // kg m/s
     Vec3 angular_momentum = Vec3::Zero();  // kg m^2/s, about the origin
     double energy_error = 0;    // J: kinetic + strain + dissipated - external work - initial
+    double added_mass = 0;      // kg, by mass scaling
 };
 
 class World {

@@ -46,16 +46,17 @@ class Layout(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(ctypes.c_void_p), 8)
         self.assertEqual(ctypes.sizeof(ctypes.c_int), 4)  # enums
         self.check(lfem.Body, 8, {"index": 0, "generation": 4})
-        self.check(lfem.WorldDef, 72, {
+        self.check(lfem.WorldDef, 80, {
             "gravity": 0, "time_step": 24, "step_safety": 32, "contact_iterations": 40,
             "thread_count": 44,
             "contact_tolerance": 48, "max_substeps": 56, "allow_unstable_step": 60,
-            "_internal_value": 64})
-        self.check(lfem.WorldStats, 160, {
+            "_internal_value": 64, "mass_scaling_step": 72})
+        self.check(lfem.WorldStats, 168, {
             "steps": 8, "step_size": 16, "stable_step": 24, "substeps_last_call": 32,
             "body_count": 36, "kinetic_energy": 40, "energy_error": 72, "linear_momentum": 80,
             "angular_momentum": 104, "contact_count": 128, "solver_iterations": 132,
-            "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152})
+            "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152,
+            "added_mass": 160})
         self.check(lfem.PhaseTime, 16, {"seconds": 0, "calls": 8})
         self.check(lfem.Profile, 192, {
             "substeps": 0, "internal_forces": 8, "predictor": 24, "kinematic_motion": 40,

@@ -17,8 +17,8 @@ macro_rules! offset {
 #[test]
 fn sizes_match_c() {
     assert_eq!(size_of::<lfem_body>(), 8);
-    assert_eq!(size_of::<lfem_world_def>(), 72);
-    assert_eq!(size_of::<lfem_world_stats>(), 160);
+    assert_eq!(size_of::<lfem_world_def>(), 80);
+    assert_eq!(size_of::<lfem_world_stats>(), 168);
     assert_eq!(size_of::<lfem_body_def>(), 120);
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
@@ -40,6 +40,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_world_def, max_substeps), 56);
     assert_eq!(offset!(lfem_world_def, allow_unstable_step), 60);
     assert_eq!(offset!(lfem_world_def, internal_value), 64);
+    assert_eq!(offset!(lfem_world_def, mass_scaling_step), 72);
 
     assert_eq!(offset!(lfem_world_stats, steps), 8);
     assert_eq!(offset!(lfem_world_stats, substeps_last_call), 32);
@@ -52,6 +53,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_world_stats, solver_iterations), 132);
     assert_eq!(offset!(lfem_world_stats, solver_residual), 136);
     assert_eq!(offset!(lfem_world_stats, rotation_drift), 152);
+    assert_eq!(offset!(lfem_world_stats, added_mass), 160);
 
     assert_eq!(offset!(lfem_phase_time, calls), 8);
     assert_eq!(offset!(lfem_profile, internal_forces), 8);
