@@ -21,7 +21,9 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.static_bvh = in.type == LFEM_BODY_STATIC ? in.static_bvh : nullptr;
     cb.triangles = in.surface->triangles.data();
     cb.triangle_count = in.surface->triangle_count();
-    const std::vector<uint32_t>& slaves = dynamic ? in.surface->nodes : in.surface->feature_nodes;
+    const std::vector<uint32_t>& slaves = in.type == LFEM_BODY_DEFORMABLE ? *in.every_node
+                                          : dynamic                      ? in.surface->nodes
+                                                                         : in.surface->feature_nodes;
     cb.nodes = slaves.data();
     cb.node_count = uint32_t(slaves.size());
     cb.total_nodes = in.node_count;

@@ -58,6 +58,13 @@ struct ContactBody {
 // Static and kinematic bodies follow their own motion whatever the contacts do.
 inline bool is_movable(const ContactBody& b) { return b.inv_mass != nullptr || b.rigid != nullptr; }
 
+// Whether nodes found deep inside body b count (pushed out) at every step, not only when new
+// bodies are checked for initial overlaps: static, kinematic and rigid bodies are solid
+// volumes that nothing may pass through.
+inline bool catches_deep_nodes(const ContactBody& b, bool scan_overlaps) {
+    return scan_overlaps || b.inv_mass == nullptr;
+}
+
 // Two bodies are checked against each other only if each one's category is in the other's
 // mask, and at least one of them can move.
 inline bool bodies_may_touch(const ContactBody& a, const ContactBody& b) {

@@ -97,7 +97,7 @@ void prepare_bodies(const std::vector<ContactBody>& bodies, double max_offset, b
             }
         slaves = grown(slaves, c.budget[bi]);
         // Grown for the coarsest partner (contact lengths are at most the body's own).
-        const double grow = triangle_growth(b.edge_length, c.offset_allowed, c.scanned);
+        const double grow = triangle_growth(b.edge_length, c.offset_allowed, catches_deep_nodes(b, c.scanned));
         c.body_box[bi] = b.triangle_count > 0 ? grown(c.tree_of(bodies, bi).bounds(), c.budget[bi] + grow)
                                               : empty_box();
     });
@@ -171,7 +171,8 @@ void search_block(const std::vector<ContactBody>& bodies, const std::vector<uint
         for (uint32_t q = c.partner_begin[ai]; q < c.partner_begin[ai + 1]; ++q) {
             const uint32_t bi = c.partners[q];
             const std::size_t from = triangles.size();
-            const double grow = triangle_growth(contact_length(a, bodies[bi]), c.offset_allowed, c.scanned);
+            const double grow =
+                triangle_growth(contact_length(a, bodies[bi]), c.offset_allowed, catches_deep_nodes(bodies[bi], c.scanned));
             const ContactBody& b = bodies[bi];
             c.tree_of(bodies, bi).query(point_box(x, c.budget[ai] + c.budget[bi] + grow), b.x, b.triangles, 0.0,
                                         [&](uint32_t t) { triangles.push_back(uint64_t(bi) << 32 | t); });

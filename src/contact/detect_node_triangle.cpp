@@ -81,7 +81,9 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
         const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
         const ContactBody& b = in.bodies[bi];
-        if (bi != grow_body) grow = triangle_growth(contact_length(a, b), in.max_offset, in.scan_overlaps), grow_body = bi;
+        if (bi != grow_body)
+            grow = triangle_growth(contact_length(a, b), in.max_offset, catches_deep_nodes(b, in.scan_overlaps)),
+            grow_body = bi;
         // A static triangle's box is the one the search kept; a moving one's is made anew.
         Aabb reach = b.moves ? triangle_step_box(b, t, grow) : c.static_box[k];
         if (!b.moves)
@@ -95,7 +97,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             const ContactRecord* last = previous.find(a.slot, p, b.slot);
             block.last.push_back(last);
             allowance = 1.25 * kept_offset(last) + kResidualDepth * contact_length(a, b);
-            first_touch = in.scan_overlaps && last == nullptr;
+            first_touch = catches_deep_nodes(b, in.scan_overlaps) && last == nullptr;
         }
         test_node_triangle(a, p, normal_of(in, g, slave_normals, ready), b, t, allowance, block.best.back(),
                            first_touch ? &block.deep.back() : nullptr);
@@ -109,8 +111,10 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         const uint32_t bi = block.touched[k];
         const Vec3 x = position(a.x_start, p);
         if (!segment_crosses_body(x, x - d.start_gap * d.normal, d.triangle, in.bodies[bi],
-                                  c.tree_of(in.bodies, bi), c.budget[bi]))
+                                  c.tree_of(in.bodies, bi), c.budget[bi])) {
             block.best[k] = d;
+            block.best[k].fallen = !in.scan_overlaps;
+        }
     }
     for (std::size_t k = 0; k < block.touched.size(); ++k) {
         if (!block.best[k].found) continue;
@@ -170,6 +174,7 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block,
             const double allowance = 1.25 * kept_offset(last) + kResidualDepth * a.edge_length;
             for (; k < c.shape_begin[g + 1] && uint32_t(c.shapes[k] >> 32) == oi; ++k)
                 test_node_shape(a, p, normal, o, uint32_t(c.shapes[k]), allowance, best, block.counts);
+            if (in.scan_overlaps) best.fallen = false;  // an overlap of new bodies: let out gently
             if (best.found && best.shape != UINT32_MAX) {
                 block.merged.push_back(make_record(a, p, o, best, last));
                 next += has_triangle;  // replaced by the shape

@@ -31,6 +31,9 @@ constexpr double kEdgeTolerance = 0.01;
 // never faster than 1e-3 l per step, rather than in one violent jump.
 constexpr double kOverlapRecovery = 0.2;
 constexpr double kMaxRecovery = 1e-3;
+// A node found inside another body during the run (it fell in: a fold, a solve cut short) is
+// pushed out faster, at most 1e-2 l per step.
+constexpr double kFallenRecovery = 1e-2;
 
 // How much a triangle's box grows over a step for a node at contact length l: the capture band
 // plus the deepest overlap being recovered, or half an edge when new bodies are checked for

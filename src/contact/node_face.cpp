@@ -42,12 +42,15 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     // node's own surface normal is the far side of an edge the node sits on (a cube's corner
     // node resting on another cube's top face also lies in the plane of its side face): taking
     // it would push the node sideways off the edge. Convex edges thus keep the one right face.
-    if (n.dot(node_normal) >= 0.0) return;
+    // That choice is for a node at the face: one deeper than the residual depth behind it has
+    // passed it, whichever way its surface turns (a soft body's bulging side sinking into a
+    // floor), and an interior node (no surface around it: normal zero) faces every way.
     const Vec3 x_end = position(a.x, p), x_start = position(a.x_start, p);
     const double gap = n.dot(x_end - pa);
-    const double start_gap = (n_start / area2_start).dot(x_start - qa);
     const double l = contact_length(a, b);
     if (gap > kCaptureBand * l) return;
+    if (gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return;
+    const double start_gap = (n_start / area2_start).dot(x_start - qa);
     NodeCandidate* slot = &best;
     if (start_gap < -depth_allowance) {
         // Deeper than the pair was left: only a possible initial overlap (checked later).
@@ -101,12 +104,14 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
     // At the start the node may be anywhere along its path: ask with the whole path as reach.
     const double path = (x_end - x_start).norm() + band;
     counts.shape_tests += 1, counts.ccd_queries += by_ccd;
-    if (shape_signed_distance(shape, pose_start, x_start, path, start_gap, n_start) &&
-        start_gap < -depth_allowance)
-        return;
-    if (n.dot(node_normal) >= 0.0) return;
+    // A node that starts deeper than the pair was left is inside the solid shape all the same
+    // (a shape is convex and solid: no thin part to be beyond): it is pushed out, not forgotten.
+    const bool fallen = shape_signed_distance(shape, pose_start, x_start, path, start_gap, n_start) &&
+                        start_gap < -depth_allowance;
+    if (gap > -kResidualDepth * a.edge_length && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return;
     if (best.found && gap <= best.gap) return;
     best.found = true;
+    best.fallen = fallen;
     best.shape = j;
     best.gap = gap;
     best.start_gap = std::min(0.0, start_gap);
@@ -138,11 +143,14 @@ ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b
     r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
     // A node that starts the step inside is let out gradually (target gap < 0): by 20 % of
     // the overlap per step, but never faster than 1e-3 of an edge per step, so bodies created
-    // deeply overlapping separate slowly instead of jumping apart.
-    if (c.start_gap < 0.0) {
+    // deeply overlapping separate slowly instead of jumping apart; one found inside during the
+    // run (fallen in), never faster than 1e-2 of an edge. A pair in contact at the last step
+    // (and not letting out an overlap) has only the solve's residual to make up: at once.
+    const bool held = last && last->offset <= 0.0;
+    if (c.start_gap < 0.0 && !held) {
         const double overlap = -c.start_gap;
         const double l = c.shape == UINT32_MAX ? contact_length(a, b) : a.edge_length;
-        r.offset = overlap - std::min(kOverlapRecovery * overlap, kMaxRecovery * l);
+        r.offset = overlap - std::min(kOverlapRecovery * overlap, (c.fallen ? kFallenRecovery : kMaxRecovery) * l);
     }
     return r;
 }

@@ -25,6 +25,7 @@ struct NodeCandidate {
     double start_gap = 0;  // g^n
     double w[3] = {0, 0, 0};
     Vec3 normal = Vec3::Zero();
+    bool fallen = false;   // found inside during the run, not among new bodies' overlaps
 };
 
 // The profile's counts of rigid-shape queries.

@@ -210,7 +210,8 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
     for (uint32_t k = 0; k < count; ++k) {
         ContactRecord& r = records[order[k]];
         r.gap_after = Vec3(r.normal).dot(relative_position(pairs[order[k]]));
-        result.max_penetration = std::max(result.max_penetration, -(r.gap_after + r.offset));
+        // The true depth, kept overlaps included (they are let out over several steps).
+        result.max_penetration = std::max(result.max_penetration, -r.gap_after);
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - group_start).count();
 }

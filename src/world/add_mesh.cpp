@@ -136,6 +136,9 @@ void start_motion(Body& candidate, BodyState& state, ThreadPool* pool) {
 void derive_reference_data(const Body& body, BodyReference& ref) {
     ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count());
     compute_node_triangles(ref.node_count(), ref.surface);
+    ref.every_node.clear();
+    if (body.is_deformable())
+        for (uint32_t i = 0; i < ref.node_count(); ++i) ref.every_node.push_back(i);
     ref.bvh = TriangleBvh{};
     if (body.def.type == LFEM_BODY_STATIC)  // never moves: its tree is built once, here
         ref.bvh.build(ref.X.data(), ref.surface.triangles.data(), ref.surface.triangle_count());

@@ -37,6 +37,7 @@ struct BodyReference {
     Numbering numbering;            // internal (locality) order <-> the caller's numbering
     ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
                                     // from tets: rebuilt, not saved, by checkpoints)
+    std::vector<uint32_t> every_node;  // deformable bodies: 0 .. node_count - 1, the contact slaves
     TriangleBvh bvh;                // static bodies: the tree of the boundary triangles, built
                                     // when the mesh is added (derived, like the colouring)
 

@@ -119,6 +119,7 @@ void World::detect() {
         in.static_bvh = &b.ref.bvh;
         in.type = b.def.type;
         in.surface = &b.ref.surface;
+        in.every_node = &b.ref.every_node;
         in.node_count = b.ref.node_count();
         in.x = b.state.x.data();
         in.x_start = b.is_deformable() ? sc.start.x.data() : sc.x_start.data();
