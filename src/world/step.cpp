@@ -184,6 +184,7 @@ void World::step(double dt) {
         substeps = uint32_t(wanted);
     }
     state_.counters.substeps_last_call = substeps;
+    moved(pool_.get());
 }
 
 }  // namespace lfem

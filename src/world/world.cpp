@@ -21,6 +21,7 @@ void World::destroy_body(lfem_body h) {
     contacts.erase(std::remove_if(contacts.begin(), contacts.end(),
                                   [&](const ContactRecord& r) { return r.body_a == h.index || r.body_b == h.index; }),
                    contacts.end());
+    moved();
 }
 
 void World::restore(WorldImage&& image) {
@@ -28,6 +29,7 @@ void World::restore(WorldImage&& image) {
     def_ = image.def;
     bodies_.restore(std::move(image.bodies), std::move(image.free_slots));
     state_ = std::move(image.state);
+    moved();
 }
 
 }  // namespace lfem
