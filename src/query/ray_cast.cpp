@@ -37,7 +37,12 @@ void QueryScene::for_bodies_on_ray(const QueryRay& ray, const Visit& visit) {
     double t_max = ray.max_distance;
     for (uint32_t slot : unbounded_) t_max = visit(slot, t_max);
     const double d[3] = {ray.dir[0], ray.dir[1], ray.dir[2]}, o[3] = {ray.origin[0], ray.origin[1], ray.origin[2]};
-    tree_.cast(RaySlabs(o, d), t_max, [&](uint32_t item, double bound) { return visit(bounded_[item], bound); });
+    const RaySlabs slabs(o, d);
+    tree_.cast(slabs, t_max, [&](uint32_t item, double bound) {
+        double enter, exit;  // a leaf holds a few bodies: each one's own box first
+        const uint32_t slot = bounded_[item];
+        return ray_interval(slots_[slot].box, slabs, 0.0, bound, enter, exit) ? visit(slot, bound) : bound;
+    });
 }
 
 template <class Add>

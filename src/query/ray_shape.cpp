@@ -156,7 +156,7 @@ bool shape_overlaps_box(const RigidShape& s, const ShapePose& pose, const Aabb& 
     Vec3 corners[8];
     box_corners(box, corners);
     const double size = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
-    const double touch = 1e-12 * (size + shape_bounding_radius(s) * (s.type != LFEM_SHAPE_PLANE));
+    const double touch = 1e-12 * (size + (s.type == LFEM_SHAPE_PLANE ? 0.0 : shape_bounding_radius(s)));
     const ConvexPoints query{corners, 8};
     switch (s.type) {
         case LFEM_SHAPE_PLANE: {  // a corner on or below the plane
