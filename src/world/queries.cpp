@@ -42,8 +42,10 @@ void World::moved(ThreadPool* pool) {
     try {
         queries_.prepare(BodiesForQueries(bodies_), revision_, pool);
     } catch (...) {
-        // Out of memory: the step itself went well, so it must not fail now. The cache is left
-        // stale, and the next query prepares it.
+        // Out of memory: the step rolls back, so the boxes made of its positions must not
+        // count for any revision: the next query prepares everything again.
+        revision_ += 1;
+        throw;
     }
 }
 

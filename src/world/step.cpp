@@ -184,7 +184,12 @@ void World::step(double dt) {
         substeps = uint32_t(wanted);
     }
     state_.counters.substeps_last_call = substeps;
-    moved(pool_.get());
+    try {  // the queries' boxes of the new positions (once queries are in use)
+        moved(pool_.get());
+    } catch (...) {
+        roll_back();
+        throw;
+    }
 }
 
 }  // namespace lfem

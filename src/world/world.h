@@ -181,7 +181,8 @@ private:
     void count_warnings(double h);
     // Positions or geometry may have changed: the queries' cache is stale. After a step (with
     // the pool), once queries are in use, it is made current at once, so that a query pays
-    // only for what it meets.
+    // only for what it meets; if that runs out of memory it throws (the step rolls back) and
+    // leaves the cache stale for every revision.
     void moved(ThreadPool* pool = nullptr);
 
     lfem_world_def def_;
