@@ -38,6 +38,8 @@ struct BodyReference {
     ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
                                     // from tets: rebuilt, not saved, by checkpoints)
     std::vector<uint32_t> every_node;  // deformable bodies: 0 .. node_count - 1, the contact slaves
+    std::vector<double> face_normals; // static bodies: each boundary triangle's unit outward
+                                      // normal (3 each; zero for a collapsed one), derived
     TriangleBvh bvh;                // static bodies: the tree of the boundary triangles, built
                                     // when the mesh is added (derived, like the colouring)
 

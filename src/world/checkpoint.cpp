@@ -33,7 +33,7 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 568,  // colouring, node-triangle lists, tree: derived
+static_assert(sizeof(BodyReference) == 592,  // colouring, node-triangle lists, tree: derived
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
 static_assert(sizeof(Attachment) == 240, "Attachment changed: update the checkpoint");

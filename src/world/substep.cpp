@@ -121,6 +121,7 @@ void World::detect() {
         // those of a static body: the identity says so).
         in.identity = b.geometry_identity() ^ (b.state.asleep ? uint64_t(1) << 31 : 0);
         in.static_bvh = b.is_static() ? &b.ref.bvh : nullptr;
+        in.face_normals = b.is_static() && !b.ref.face_normals.empty() ? b.ref.face_normals.data() : nullptr;
         in.type = b.state.asleep ? LFEM_BODY_STATIC : b.def.type;
         in.surface = &b.ref.surface;
         in.every_node = &b.ref.every_node;
