@@ -89,7 +89,7 @@ uint32_t World::substeps_for(double dt, double limit) const {
 // a blow-up: m c_d^2 * 1e-12, the energy of a uniform strain of 1e-6.
 double World::blow_up_energy_scale(double& start_energy) {
     std::vector<double> body_energy(bodies_.slot_count(), 0.0);
-    parallel_for(pool_.get(), bodies_.slot_count(), [&](uint32_t j) {
+    parallel_for(stages_.pool, bodies_.slot_count(), [&](uint32_t j) {  // (the last sub-step's choice)
         const Body& b = bodies_.slot(j);
         if (b.generation == 0 || !b.is_dynamic() || !b.has_mesh()) return;
         double e = 0.0;
@@ -121,7 +121,7 @@ void World::step(double dt) {
     // sub-step a call, as much memory traffic as a fifth of the step).
     Snapshot saved;
     saved.bodies.resize(bodies_.slot_count());
-    parallel_for(pool_.get(), bodies_.slot_count(), [&](uint32_t i) { saved.bodies[i] = bodies_.slot(i).state; });
+    parallel_for(stages_.pool, bodies_.slot_count(), [&](uint32_t i) { saved.bodies[i] = bodies_.slot(i).state; });
     saved.state = state_;
     saved.profile = profile_;
     auto roll_back = [&] {

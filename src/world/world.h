@@ -26,6 +26,9 @@ namespace lfem {
 
 struct WorldImage;
 
+// The deformable tets below which a sub-step runs on the calling thread alone.
+constexpr uint64_t kPoolWork = 2048;
+
 // One event of a call (lfem_event), with the world's handles.
 struct StepEvent {
     lfem_event_type type = LFEM_EVENT_CONTACT_BEGIN;
@@ -174,6 +177,7 @@ private:
         // The deformable bodies again, by how their loops run: one after another with the pool
         // for their own loops, or side by side on the pool, one body per task.
         std::vector<uint32_t> on_pool, side_by_side;
+        ThreadPool* pool = nullptr;  // the sub-step's pool: none for a world too small to share
     };
     struct Snapshot;
 
