@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "common/cpu_dispatch.h"
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
 #include "fem/tet_element.h"
@@ -18,17 +19,6 @@ namespace {
 // turns into SIMD instructions. The gather of node positions and the scatter of forces stay
 // in tet order, so every node sums its contributions in the same order as a plain loop would.
 constexpr int kLanes = 8;
-
-// Not under the sanitizers: the clones' load-time resolvers (ifuncs) run before a sanitizer's
-// runtime is set up, and ThreadSanitizer crashes there.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__) && \
-    !defined(__SANITIZE_THREAD__)
-#define LFEM_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#define LFEM_INLINE __attribute__((always_inline)) inline
-#else
-#define LFEM_SIMD_CLONES
-#define LFEM_INLINE inline
-#endif
 
 struct Batch {
     int n;                    // live lanes (the rest are padding with zero volume)
@@ -184,13 +174,13 @@ struct LoopData {
 };
 
 // One block of tets: gather, kernel, scatter; returns the block's strain energy (and, for a
-// model with kTangent, its largest tangent estimate in *tangent). Compiled for
-// AVX-512, AVX2 and baseline x86-64, chosen at load time by the CPU (GCC function clones). The
-// results are bitwise the same on each: this file is built with -ffp-contract=off (no a*b+c
-// fused into one rounding), so every clone rounds every operation alike.
+// model with kTangent, its largest tangent estimate in *tangent). The loop calls it through
+// cpu_variant (common/cpu_dispatch.h): compiled for AVX-512, AVX2 and the baseline, chosen by
+// the CPU. The results are bitwise the same on each: this file is built with
+// -ffp-contract=off (no a*b+c fused into one rounding), so every variant rounds alike.
 template <bool displacement_edges, class Model>
-LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const Model& model,
-                                      double* tangent) {
+LFEM_INLINE double element_block(const LoopData& d, uint32_t block, const Model& model,
+                                 double* tangent) {
     Batch b;
     double energy = 0.0, worst = 0.0;
     const uint32_t e_end = std::min(d.tet_count, (block + 1) * d.block_size);
@@ -271,11 +261,12 @@ double element_loop(const ElementMesh& mesh, const double* x, double* f, ThreadP
                      f, mesh.tet_count(), colouring.block_size};
     std::vector<double> block_energy(colouring.block_count(), 0.0);
     std::vector<double> block_tangent(Model::kTangent ? colouring.block_count() : 0, 0.0);
+    const auto block_forces = cpu_variant<&element_block<displacement_edges, Model>>(cpu_level());
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
         const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
         parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c], [&](uint32_t i) {
             double* t = Model::kTangent ? &block_tangent[blocks[i]] : nullptr;
-            block_energy[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model, t);
+            block_energy[blocks[i]] = block_forces(d, blocks[i], model, t);
         });
     }
     double energy = 0.0;
