@@ -111,6 +111,20 @@ typedef struct lfem_world_def {
                                     (for experiments; instability is still caught), default 0 */
     uint8_t padding[3];
     uint32_t internal_value;    /* set by lfem_world_def_default; do not change */
+    uint32_t padding2;
+    double mass_scaling_step;   /* s; 0 (default) = off. Mass scaling, the explicit codes' tool
+                                   for a step that stiff or small elements would shorten
+                                   (OpenRadioss /DT/NODA/CST, LS-DYNA DT2MS): the nodes of each
+                                   tet that would need a shorter sub-step than this get the
+                                   added mass that lets the automatic step be at least
+                                   mass_scaling_step (the stable limit at least
+                                   mass_scaling_step / step_safety). Applied to the deformable
+                                   meshes added to the world; the added mass acts fully (inertia
+                                   and gravity) and is reported by lfem_body_get_added_mass and
+                                   stats.added_mass. It changes the physics: waves run slower in
+                                   the scaled elements (tests/bench's error-against-run-time
+                                   report shows what it costs). Neo-Hookean bodies crushed
+                                   beyond the reference still stiffen below it */
 } lfem_world_def;
 
 /* A definition filled with the defaults above. Always start from it. */
@@ -179,6 +193,14 @@ typedef struct lfem_world_stats {
     double rotation_drift;    /* rad, largest angle between the global rotation integrated by
                                  eq. (2) and the one re-fitted to the nodes, last sub-step
                                  ("paper" model only, else 0) */
+    double added_mass;        /* kg, added by mass scaling to every body (world_def) */
+    uint32_t inverted_tets;   /* tets turned inside out (volume ratio J = det F <= 0) over the
+                                 deformable bodies after the last sub-step */
+    uint32_t padding;
+    double min_jacobian;      /* the smallest volume ratio J of their tets after the last
+                                 sub-step (1 without any). The materials resist crushing
+                                 without bound below J = 0.2, so J near 0 or below means a
+                                 body driven far past what its stiffness holds */
 } lfem_world_stats;
 
 LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_stats* out);
@@ -221,6 +243,11 @@ typedef struct lfem_profile {
                                            calls: "paper"-model bodies x sub-steps */
     lfem_phase_time commit;             /* velocities, contact forces, energy bookkeeping;
                                            calls: deformable and rigid bodies x sub-steps */
+    uint64_t candidate_searches;        /* how often contact searched for candidate faces
+                                           anew (part of the broad phase): only when a body
+                                           moved beyond the margin of the last search, or the
+                                           bodies changed; the sub-steps in between test the
+                                           candidates only */
 } lfem_profile;
 
 /* The accumulated profile (see lfem_profile). */
@@ -320,14 +347,50 @@ LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body 
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body,
                                              void** out);
 
-/* Total mass of the body (kg): the sum of its lumped node masses, rho V. */
+/* Total mass of the body (kg): the sum of its lumped node masses, rho V, plus what mass scaling
+ * added (lfem_world_def.mass_scaling_step). */
 LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body, double* out);
+/* The mass (kg) that mass scaling added to the body's nodes (0 without mass scaling). */
+LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body body, double* out);
+
+/* The body's inverted tets after the last sub-step (J = det F <= 0), the smallest volume
+ * ratio J of its tets, and for how long (s) it has had inverted tets without a break (0 when
+ * it has none). 0, 1, 0 for a body that is not deformable. Each output is nullable. */
+LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body body, uint32_t* inverted_tets,
+                                             double* min_jacobian, double* inverted_for);
 
 /* Linear momentum (kg m/s) and angular momentum about the world origin (kg m^2/s) of the
  * body, from its synchronized velocities. Static and kinematic bodies report zero. Either
  * output is nullable. */
 LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body,
                                             double linear[3], double angular[3]);
+
+/* Warnings: trouble the step recovers from but the caller may want to know of, counted as
+ * MuJoCo counts its warnings (how often, when last, for which body). They never change the
+ * physics; they say where the scene asks more than the bodies or the settings give. */
+typedef enum lfem_warning_kind {
+    LFEM_WARNING_INVERTED_TETS = 0,  /* a sub-step ended with inverted tets in a body: once per
+                                        body and sub-step */
+    LFEM_WARNING_STAYS_INVERTED = 1, /* a body kept inverted tets for 0.5 s in a row: once per
+                                        spell (it is crushed harder than its material holds) */
+    LFEM_WARNING_FALLEN_IN = 2,      /* nodes found inside a static, kinematic or rigid body (or
+                                        a shape) during the run, pushed back out: once per node
+                                        and fall (not counted: overlaps of newly added bodies) */
+    LFEM_WARNING_UNCONVERGED = 3,    /* a contact solve used every one of contact_iterations
+                                        sweeps and ended above its tolerance (no body) */
+    LFEM_WARNING_KIND_COUNT = 4
+} lfem_warning_kind;
+
+typedef struct lfem_warning {
+    uint64_t count;      /* since the world was created or lfem_world_clear_warnings */
+    double last_time;    /* s, the simulated time of the last one (0 before any) */
+    lfem_body last_body; /* the body of the last one; the null handle when none is concerned
+                            (it may since have been destroyed: then stale) */
+} lfem_warning;
+
+LFEM_API lfem_status lfem_world_get_warning(const lfem_world* world, lfem_warning_kind kind, lfem_warning* out);
+/* Set every warning's count and last time back to zero. */
+LFEM_API lfem_status lfem_world_clear_warnings(lfem_world* world);
 
 /* Copy the current node positions (m) into out[3*node_capacity]. LFEM_BUFFER_TOO_SMALL when
  * node_capacity < node count (nothing written). */

@@ -30,6 +30,8 @@ void check_world_def(const lfem_world_def& d) {
             "def->contact_tolerance must be finite and > 0");
     require(d.max_substeps >= 1, "def->max_substeps must be >= 1");
     require(d.allow_unstable_step <= 1, "def->allow_unstable_step must be 0 or 1");
+    require(std::isfinite(d.mass_scaling_step) && d.mass_scaling_step >= 0.0,
+            "def->mass_scaling_step must be finite and >= 0 s (0 = no mass scaling)");
 }
 
 }  // namespace lfem::api
@@ -58,6 +60,9 @@ lfem_world_stats stats_of(const World& w) {
     st.strain_energy = t.strain_energy;
     for (int k = 0; k < 3; ++k) st.linear_momentum[k] = t.linear_momentum[k], st.angular_momentum[k] = t.angular_momentum[k];
     st.energy_error = t.energy_error;
+    st.added_mass = t.added_mass;
+    st.inverted_tets = t.inverted_tets;
+    st.min_jacobian = t.min_jacobian;
     return st;
 }
 
@@ -185,6 +190,25 @@ LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profil
 
 LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world) {
     return guard(__func__, [&] { world_of(world).reset_profile(); });
+}
+
+LFEM_API lfem_status lfem_world_get_warning(const lfem_world* world, lfem_warning_kind kind, lfem_warning* out) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(out, "out");
+        const Warnings& all = w.counters().warnings;
+        const Warning* by_kind[] = {&all.inverted_tets, &all.stays_inverted, &all.fallen_in, &all.unconverged};
+        static_assert(sizeof(by_kind) / sizeof(by_kind[0]) == LFEM_WARNING_KIND_COUNT, "a warning without its kind");
+        const int k = int(kind);
+        require(k >= 0 && k < LFEM_WARNING_KIND_COUNT,
+                "kind must be an lfem_warning_kind below LFEM_WARNING_KIND_COUNT, got " + std::to_string(k));
+        const Warning& x = *by_kind[k];
+        *out = lfem_warning{x.count, x.last_time, lfem_body{x.last_slot, x.last_generation}};
+    });
+}
+
+LFEM_API lfem_status lfem_world_clear_warnings(lfem_world* world) {
+    return guard(__func__, [&] { world_of(world).clear_warnings(); });
 }
 
 }  // extern "C"

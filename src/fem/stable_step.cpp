@@ -13,25 +13,31 @@
 namespace lfem {
 namespace {
 
-// Gershgorin: every eigenvalue of M^-1 K lies below max over rows of sum_j |K_ij| / m_i. The
-// element blocks are K_ab = V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g = grad N;
+// The absolute row sums of tet e's stiffness: visit(a, r, s) with s = sum_j |K_(3a+r) j| over
+// the block K_ab, for b = 0..3 in order. The element blocks are
+// K_ab = V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g = grad N.
+template <class Visit>
+void for_each_row_sum(const ElementMesh& ref, const Lame& lame, uint32_t e, const Visit& visit) {
+    const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
+    Vec3 g[4];
+    for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
+    g[0] = -(g[1] + g[2] + g[3]);
+    const double V = ref.volume[e];
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+            const Mat3 K = V * (lame.lambda * g[a] * g[b].transpose() + lame.mu * g[b] * g[a].transpose() +
+                                lame.mu * g[a].dot(g[b]) * Mat3::Identity());
+            for (int r = 0; r < 3; ++r) visit(a, r, K.row(r).cwiseAbs().sum());
+        }
+}
+
+// Gershgorin: every eigenvalue of M^-1 K lies below max over rows of sum_j |K_ij| / m_i;
 // summing |K_e| entries per row over-counts cancellations, so the bound is safe.
 double gershgorin_bound(const ElementMesh& ref, const Lame& lame) {
     std::vector<double> row_sum(3 * ref.node_count(), 0.0);
     for (uint32_t e = 0; e < ref.tet_count(); ++e) {
         const uint32_t* t = &ref.tets[4 * e];
-        const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
-        Vec3 g[4];
-        for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
-        g[0] = -(g[1] + g[2] + g[3]);
-        const double V = ref.volume[e];
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b) {
-                const Mat3 K = V * (lame.lambda * g[a] * g[b].transpose() +
-                                    lame.mu * g[b] * g[a].transpose() +
-                                    lame.mu * g[a].dot(g[b]) * Mat3::Identity());
-                for (int r = 0; r < 3; ++r) row_sum[3 * t[a] + r] += K.row(r).cwiseAbs().sum();
-            }
+        for_each_row_sum(ref, lame, e, [&](int a, int r, double s) { row_sum[3 * t[a] + r] += s; });
     }
     double bound = 0.0;
     for (uint32_t i = 0; i < ref.node_count(); ++i)
@@ -39,7 +45,76 @@ double gershgorin_bound(const ElementMesh& ref, const Lame& lame) {
     return bound;
 }
 
+// The largest eigenvalue of tet e's stiffness K_e (12 x 12, Hooke's law at rest).
+double element_stiffness_eigenvalue(const ElementMesh& ref, const Lame& lame, uint32_t e) {
+    const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
+    Vec3 g[4];
+    for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
+    g[0] = -(g[1] + g[2] + g[3]);
+    Eigen::Matrix<double, 12, 12> K;
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+            K.block<3, 3>(3 * a, 3 * b) = ref.volume[e] * (lame.lambda * g[a] * g[b].transpose() +
+                                                           lame.mu * g[b] * g[a].transpose() +
+                                                           lame.mu * g[a].dot(g[b]) * Mat3::Identity());
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>>(K, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+}
+
 }  // namespace
+
+double add_scaling_mass(const ElementMesh& ref, const Lame& lame, double density, double omega_target, double* added) {
+    double total = 0.0;
+    const double target2 = omega_target * omega_target;
+    for (uint32_t e = 0; e < ref.tet_count(); ++e) {
+        // The tet's own lumped share rho V / 4 at each node. Its Gershgorin bound is cheap and
+        // at least its eigenvalue: only where it exceeds the target is the eigenvalue needed.
+        const double share = density * ref.volume[e] / 4.0;
+        double rows[4][3] = {};
+        for_each_row_sum(ref, lame, e, [&](int a, int r, double s) { rows[a][r] += s; });
+        double gershgorin = 0.0;
+        for (const auto& node : rows)
+            for (double s : node) gershgorin = std::max(gershgorin, s / share);
+        if (!(gershgorin > target2)) continue;
+        const double bound = element_stiffness_eigenvalue(ref, lame, e) / share;
+        if (!(bound > target2)) continue;
+        // Its density times bound / target2: its own highest frequency becomes the target.
+        const double extra = (bound / target2 - 1.0) * share;
+        const uint32_t* t = &ref.tets[4 * e];
+        for (int a = 0; a < 4; ++a) added[t[a]] += extra;
+        total += 4.0 * extra;
+    }
+    return total;
+}
+
+StableStepEstimate scale_masses_for_step(const ElementMesh& mesh, const Lame& lame, double density,
+                                         double omega_target, double* scaled, ThreadPool* pool) {
+    const std::size_t n = mesh.node_count();
+    std::vector<double> trial(n);
+    ElementMesh with_trial = mesh;
+    with_trial.mass = Span<const double>(trial.data(), n);
+    const auto attempt = [&](double theta) {
+        std::copy(mesh.mass.begin(), mesh.mass.end(), trial.begin());
+        add_scaling_mass(mesh, lame, density, theta, trial.data());
+        return estimate_stable_step(with_trial, lame, pool);
+    };
+    // The proven target: the estimate adds at most a 2 % margin on omega^2 to a true value.
+    double good = omega_target / std::sqrt(1.02), bad = HUGE_VAL;
+    StableStepEstimate best = attempt(good);
+    std::copy(trial.begin(), trial.end(), scaled);
+    for (int i = 0; i < 4 && best.omega_max < 0.99 * omega_target; ++i) {
+        // The element target grows in proportion to the slack (secant), or halfway towards
+        // the last one that overshot.
+        const double theta = std::isfinite(bad) ? 0.5 * (good + bad) : good * omega_target / best.omega_max;
+        const StableStepEstimate e = attempt(theta);
+        if (e.omega_max <= omega_target) {
+            good = theta, best = e;
+            std::copy(trial.begin(), trial.end(), scaled);
+        } else {
+            bad = theta;
+        }
+    }
+    return best;
+}
 
 StableStepEstimate estimate_stable_step(const ElementMesh& ref, const Lame& lame, ThreadPool* pool) {
     StableStepEstimate out;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/rigid_shape.h"
+#include "contact/triangle_bvh.h"
 #include "fem/central_difference.h"
 #include "fem/element_colouring.h"
 #include "fem/element_mesh.h"
@@ -28,13 +29,17 @@ struct BodyReference {
     std::vector<double> Dm_inv;     // 9 per tet: inverse reference edge matrix (column-major)
     std::vector<double> volume;     // reference volume per tet (m^3)
     Surface surface;                // boundary triangles, slave and feature nodes, edge length
-    double total_mass = 0;
+    double total_mass = 0;          // the sum of `mass`, added mass included
+    double added_mass = 0;          // kg, added by mass scaling (lfem_world_def.mass_scaling_step)
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
     double inertia[9] = {0};        // rigid bodies: inertia about the COM, reference frame
     Numbering numbering;            // internal (locality) order <-> the caller's numbering
     ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
                                     // from tets: rebuilt, not saved, by checkpoints)
+    std::vector<uint32_t> every_node;  // deformable bodies: 0 .. node_count - 1, the contact slaves
+    TriangleBvh bvh;                // static bodies: the tree of the boundary triangles, built
+                                    // when the mesh is added (derived, like the colouring)
 
     uint32_t node_count() const { return uint32_t(X.size() / 3); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }
@@ -52,6 +57,9 @@ struct BodyState {
                                        // empty while the body touches nothing
     double h_last = 0;             // size of the last step (s); 0 = no step since a reset
     double strain_energy = 0;      // J, at x
+    uint32_t inverted_tets = 0;    // tets turned inside out at x (J <= 0)
+    double min_jacobian = 1;       // the smallest volume ratio J of the tets at x
+    double inverted_since = -1;    // s: when the body's tets last began to be inverted (-1: none are)
     double stiffening = 1;         // neo-Hookean: how much stiffer the stiffest tet is at x than
                                    // at rest (>= 1; neo_hookean_tangent.h); 1 for the others
     GlobalMotion global;           // paper model: frame rotation and L of eq. (2); rigid: the
@@ -61,6 +69,8 @@ struct BodyState {
 
 struct Body {
     uint32_t generation = 0;
+    uint32_t geometry_revision = 0;           // counts the meshes and shapes added (contact's
+                                              // cached candidates hold while it does not change)
     lfem_body_def def{};
     Lame lame;
     BodyReference ref;
@@ -77,7 +87,13 @@ struct Body {
     bool is_paper() const { return is_deformable() && def.model == LFEM_MODEL_PAPER; }
     bool has_mesh() const { return !ref.X.empty(); }  // tets, or a static triangle surface
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
+    // Changes whenever the geometry does: a new generation, a mesh or a shape added.
+    uint64_t geometry_identity() const { return uint64_t(generation) << 32 | geometry_revision; }
 };
+
+// The data derived from a body's reference (not saved in checkpoints): the element colouring,
+// the surface's node-triangle lists and, for a static body, the tree of its triangles.
+void derive_reference_data(const Body& body, BodyReference& ref);
 
 // ---- views for the kernels ---------------------------------------------------------------
 
@@ -104,6 +120,8 @@ inline void update_elastic_forces(const Body& b, BodyState& s, ThreadPool* pool)
         compute_elastic_forces(element_mesh(b.ref), material_of(b), elastic_state(s, s.elastic, s.tet_rotation), pool);
     s.strain_energy = r.strain_energy;
     s.stiffening = r.stiffening;
+    s.inverted_tets = r.inverted_tets;
+    s.min_jacobian = r.min_jacobian;
 }
 
 inline NodeLoads node_loads(const Body& b, const double gravity[3]) {
