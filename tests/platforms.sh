@@ -24,6 +24,7 @@ wine=/usr/lib/wine/wine64          # Debian's wine64 package
 wineserver=/usr/lib/wine/wineserver64
 qemu=(qemu-aarch64 -L /usr/aarch64-linux-gnu -E LD_LIBRARY_PATH=/usr/aarch64-linux-gnu/lib)
 started=$SECONDS
+unset LFEM_CPU_LEVEL  # the first run of each program takes the variant the CPU chooses
 
 fail() {
   echo "platforms: FAILED: $*" >&2
