@@ -100,7 +100,8 @@ CHECK_OFFSET(lfem_body_def, category_bits, 96);
 CHECK_OFFSET(lfem_body_def, mask_bits, 100);
 CHECK_OFFSET(lfem_body_def, user_data, 104);
 CHECK_OFFSET(lfem_body_def, internal_value, 112);
-CHECK_OFFSET(lfem_body_def, padding, 116);
+CHECK_OFFSET(lfem_body_def, self_contact, 116);
+CHECK_OFFSET(lfem_body_def, padding, 117);
 
 CHECK_SIZE(lfem_contact, 128);
 CHECK_OFFSET(lfem_contact, body_a, 0);

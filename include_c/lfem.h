@@ -306,7 +306,14 @@ typedef struct lfem_body_def {
                                  other's mask */
     void* user_data;          /* nullable, returned by lfem_body_get_user_data */
     uint32_t internal_value;  /* set by lfem_body_def_default; do not change */
-    uint32_t padding;
+    uint8_t self_contact;     /* 1 = the body's surface collides with itself (a bar folding over
+                                 a post, a sheet piling up, a squashed jelly's folds): each
+                                 boundary node against the body's own boundary triangles, except
+                                 the ones around it and their neighbours (those sharing a node
+                                 with them), by the same multipliers as contact between bodies.
+                                 Deformable bodies only; default 0 (it costs a search of the
+                                 body's own surface) */
+    uint8_t padding[3];
 } lfem_body_def;
 
 LFEM_API lfem_body_def lfem_body_def_default(void);

@@ -231,8 +231,11 @@ namespace Lfem
         public IntPtr UserData;       // returned by World.GetUserData
 #pragma warning disable 0169, 0649 // set by lfem_body_def_default, never by C#
         private uint internalValue;
-        private uint padding;
 #pragma warning restore 0169, 0649
+        public byte SelfContact;      // 1 = the surface collides with itself (deformable only), default 0
+#pragma warning disable 0169 // C padding
+        private byte padding0, padding1, padding2;
+#pragma warning restore 0169
 
         /// <summary>The defaults (lfem_body_def_default).</summary>
         public static BodyDef Default { get { return Native.lfem_body_def_default(); } }

@@ -34,6 +34,9 @@ void check_body_def(const lfem_body_def& d) {
     require(std::isfinite(d.friction) && d.friction >= 0.0, "def->friction must be finite and >= 0");
     require_finite(d.linear_velocity, 3, "def->linear_velocity");
     require_finite(d.angular_velocity, 3, "def->angular_velocity");
+    require(d.self_contact <= 1, "def->self_contact must be 0 or 1, got " + std::to_string(int(d.self_contact)));
+    require(d.self_contact == 0 || d.type == LFEM_BODY_DEFORMABLE,
+            "def->self_contact needs a deformable body (the others keep their shape)");
 }
 
 }  // namespace lfem::api

@@ -47,6 +47,7 @@ struct ContactBody {
     RigidResponse* rigid = nullptr;    // a rigid body: its nodes move together (x holds x*)
     double friction = 0;               // Coulomb coefficient of the body's surface
     uint32_t category = 1, mask = ~0u; // collision filter
+    bool self_contact = false;         // its boundary nodes meet its own triangles too
     double edge_length = 0;            // mean boundary edge length (m): sets the tolerances
     const RigidShape* shapes = nullptr; // rigid shapes (static and kinematic bodies)
     uint32_t shape_count = 0;
@@ -64,6 +65,17 @@ inline bool is_movable(const ContactBody& b) { return b.inv_mass != nullptr || b
 inline bool catches_deep_nodes(const ContactBody& b, bool scan_overlaps) {
     return scan_overlaps || b.inv_mass == nullptr;
 }
+
+// The same for a node of `a` against `b`: a body's own nodes lie behind its own faces, so a
+// body never finds them deep inside itself.
+inline bool catches_deep_nodes(const ContactBody& a, const ContactBody& b, bool scan_overlaps) {
+    return &a != &b && catches_deep_nodes(b, scan_overlaps);
+}
+
+// Node p of a self-contact body against one of its own triangles: only a boundary node, and
+// never a triangle around it or next to those (sharing a node with one of them), which it
+// touches by construction. (node_face.cpp)
+bool own_triangle_in_reach(const ContactBody& a, uint32_t p, const uint32_t* triangle);
 
 // Two bodies are checked against each other only if each one's category is in the other's
 // mask, and at least one of them can move.

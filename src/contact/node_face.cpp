@@ -31,7 +31,6 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
                         const ContactBody& b, uint32_t t, double depth_allowance, NodeCandidate& best,
                         NodeCandidate* deep) {
     const uint32_t* tri = &b.triangles[3 * t];
-    if (a.slot == b.slot) return;  // self-contact is not handled here
     const Vec3 pa = position(b.x, tri[0]), pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
     const Vec3 qa = position(b.x_start, tri[0]), qb = position(b.x_start, tri[1]), qc = position(b.x_start, tri[2]);
     const Vec3 n_end = (pb - pa).cross(pc - pa), n_start = (qb - qa).cross(qc - qa);
@@ -50,6 +49,9 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     const double l = contact_length(a, b);
     if (gap > kCaptureBand * l) return;
     if (gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return;
+    // A body's own face is met only by a part of its surface that comes at it from outside:
+    // facing it, at any depth (a node behind a face of its own body is inside the body).
+    if (&a == &b && !(n.dot(node_normal) < 0.0)) return;
     const double start_gap = (n_start / area2_start).dot(x_start - qa);
     NodeCandidate* slot = &best;
     if (start_gap < -depth_allowance) {
@@ -120,6 +122,18 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
     // The same material point of the shape at the start of the step.
     best.point_start = pose_start.center +
                        pose_start.rotation * (pose_end.rotation.conjugate() * (best.point_end - pose_end.center));
+}
+
+bool own_triangle_in_reach(const ContactBody& a, uint32_t p, const uint32_t* triangle) {
+    const uint32_t begin = a.node_triangle_begin[p], end = a.node_triangle_begin[p + 1];
+    if (begin == end) return false;  // an interior node
+    for (uint32_t k = begin; k < end; ++k) {
+        const uint32_t* around = &a.triangles[3 * std::size_t(a.node_triangles[k])];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                if (around[i] == triangle[j]) return false;
+    }
+    return true;
 }
 
 // The constraint of node p of `a` against the candidate face or shape of `b`, warm-started

@@ -178,6 +178,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     const BodyState& s = b.state;
     require(b.def.type >= LFEM_BODY_DEFORMABLE && b.def.type <= LFEM_BODY_RIGID, "bad body type");
     require(b.def.model >= LFEM_MODEL_PAPER && b.def.model <= LFEM_MODEL_LINEAR, "bad model");
+    require(b.def.self_contact <= 1 && (b.def.self_contact == 0 || b.is_deformable()), "bad self-contact flag");
     require(r.X.size() % 3 == 0, "bad reference positions");
     const std::size_t n = r.X.size() / 3, t = r.tets.size() / 4;
     require(r.tets.size() % 4 == 0 && r.mass.size() == n && r.Dm_inv.size() == 9 * t &&

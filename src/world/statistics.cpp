@@ -12,13 +12,29 @@ double World::stable_step() const {
     double h = std::numeric_limits<double>::infinity();
     bodies_.for_each([&](const Body& b, uint32_t) {
         if (!b.is_deformable() || !b.has_mesh()) return;
-        // Neo-Hookean stiffness grows with deformation (a crushed tet is stiffer): the limit
-        // at the current nodes. The reference limit already carries the 2 % margin on
-        // omega^2 of its Lanczos estimate; only stiffening beyond it shortens the step. The
-        // other models' stiffness does not depend on the state.
-        // The estimate comes with the elastic forces at x (internal_forces.cpp).
+        // Neo-Hookean stiffness grows with deformation, and every model's below J = 0.2 (the
+        // volume barrier): the limit at the current nodes. The reference limit already carries
+        // the 2 % margin on omega^2 of its Lanczos estimate; only stiffening beyond it shortens
+        // the step. The estimate comes with the elastic forces at x (internal_forces.cpp).
         const double stiffening = b.state.stiffening / 1.02;
         h = std::min(h, b.ref.stable_step / std::sqrt(std::max(stiffening, 1.0)));
+    });
+    return h;
+}
+
+double World::self_contact_step() const {
+    double h = std::numeric_limits<double>::infinity();
+    bodies_.for_each([&](const Body& b, uint32_t) {
+        if (!b.def.self_contact || !b.is_deformable() || !b.has_mesh()) return;
+        const std::vector<uint32_t>& nodes = b.ref.surface.nodes;
+        const double* v = b.state.v_half.data();
+        Vec3 mean = Vec3::Zero();
+        for (uint32_t i : nodes) mean += Vec3(v + 3 * std::size_t(i));
+        mean /= double(std::max<std::size_t>(nodes.size(), 1));
+        double fastest = 0.0;
+        for (uint32_t i : nodes) fastest = std::max(fastest, (Vec3(v + 3 * std::size_t(i)) - mean).norm());
+        // Two parts of the body close at up to twice the fastest's speed about the mean.
+        if (fastest > 0.0) h = std::min(h, kSelfContactMotion * b.ref.surface.edge_length / (2.0 * fastest));
     });
     return h;
 }

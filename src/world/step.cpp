@@ -95,7 +95,11 @@ double World::blow_up_energy_scale(double& start_energy) {
 }
 
 void World::step(double dt) {
-    const double limit = stable_step();
+    // The automatic step also keeps self-contact bodies' parts from closing too fast per
+    // sub-step; a fixed time_step is checked against the stable limit alone.
+    const bool automatic = def_.time_step == 0.0;
+    const auto step_limit = [&] { return automatic ? std::min(stable_step(), self_contact_step()) : stable_step(); };
+    const double limit = step_limit();
     uint32_t substeps = substeps_for(dt, limit);
 
     // The snapshot: body by body on the pool (a copy of every node and tet array: with one
@@ -120,7 +124,6 @@ void World::step(double dt) {
     // multiplies the energy every step (by about 47 at 1.5x the limit, 6 at 1.1x), so it passes
     // that bound within a few steps of becoming visible. Under the automatic step the limit is
     // re-checked after every sub-step (the neo-Hookean limit follows the current shape).
-    const bool automatic = def_.time_step == 0.0;
     const auto run = [&](double h) {
         Attempt a;
         a.limit_seen = limit;
@@ -129,7 +132,7 @@ void World::step(double dt) {
             double kinetic = 0.0, strain = 0.0, step_work = 0.0, limit_now = a.limit_seen;
             try {
                 substep(h, kinetic, strain, step_work);
-                if (automatic) limit_now = stable_step();
+                if (automatic) limit_now = step_limit();
             } catch (...) {
                 // Whatever failed inside (out of memory in detection, say), the caller gets the
                 // world as it was before the call, and the failure's own status.
@@ -164,7 +167,8 @@ void World::step(double dt) {
                                       seconds(a.limit_seen) + ", after " + std::to_string(attempt) +
                                       " retries with more sub-steps)";
             throw Error(LFEM_UNSTABLE, (a.blew_up_at ? "the state blew up at sub-step " + where
-                                                     : "a body stiffened beyond the sub-step at sub-step " + where +
+                                                     : "a body stiffened (or a self-contact body sped) beyond the "
+                                                       "sub-step at sub-step " + where +
                                                            "; the next retry would need " + number(wanted) +
                                                            " sub-steps (max_substeps " +
                                                            std::to_string(def_.max_substeps) + ")") +

@@ -130,6 +130,7 @@ void World::detect() {
         in.friction = b.def.friction;
         in.category = b.def.category_bits;
         in.mask = b.def.mask_bits;
+        in.self_contact = b.def.self_contact != 0;
         in.shapes = b.shapes.data();
         in.shape_count = uint32_t(b.shapes.size());
         in.shape_pose = b.state.shape_pose.data();

@@ -25,6 +25,11 @@ namespace lfem {
 
 struct WorldImage;
 
+// How far (in boundary edges) two parts of a self-contact body may close in one sub-step of
+// the automatic step. Found by the bar-over-a-rod scene (tests/physics/test_self_contact.cpp):
+// its tips meet at 5 m/s; locked edges appeared at 0.6 of an edge per sub-step, none at 0.4.
+constexpr double kSelfContactMotion = 0.25;
+
 // What the moving bodies add up to at the current time (synchronized velocities).
 struct WorldTotals {
     double kinetic_energy = 0;  // J
@@ -80,6 +85,11 @@ public:
     // Stable limit 2/omega_max over the deformable bodies, neo-Hookean ones at their current
     // shape (from the stiffening their last force computation estimated); +inf without any.
     double stable_step() const;
+    // The automatic step's bound for bodies with self-contact: their parts may close by at most
+    // kSelfContactMotion of an edge per sub-step (node-to-face contact catches a node that
+    // crosses a face; two parts meeting edge-first with more motion per step than that can
+    // lock their edges past each other before any node crosses). +inf without such a body.
+    double self_contact_step() const;
     // Advance by dt (see lfem_world_step; under the automatic step, retried with more
     // sub-steps when a body outruns its sub-step or blows up). Throws Error:
     // LFEM_INVALID_ARGUMENT when refused up front, LFEM_UNSTABLE after rolling back to the

@@ -103,7 +103,7 @@ public static class LfemTests
                         "CandidateSearches", 184);
         Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
-                        "UserData", 104, "internalValue", 112);
+                        "UserData", 104, "internalValue", 112, "SelfContact", 116);
         Layout<Contact>(128, "BodyA", 0, "BodyB", 8, "Node", 16, "TriangleA", 20, "TriangleC", 28, "Barycentric1", 32,
                         "Barycentric2", 40, "Position", 48, "Normal", 72, "Force", 96, "Sliding", 120, "Shape", 124);
         Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(ShapeType))), "sizeof(lfem_shape_type)");
@@ -541,6 +541,29 @@ public static class LfemTests
             foreach (WarningKind k in new[] { WarningKind.InvertedTets, WarningKind.StaysInverted, WarningKind.FallenIn,
                                               WarningKind.Unconverged })
                 Equal(0ul, world.GetWarning(k).Count, "cleared " + k);
+        }
+    }
+
+    public static void TestSelfContactIsForDeformableBodiesOnly()
+    {
+        using (World world = new World())
+        {
+            BodyDef d = BodyDef.Default;
+            Equal((byte)0, d.SelfContact, "self-contact default");
+            d.SelfContact = 1;
+            d.Type = BodyType.Static;
+            try
+            {
+                world.CreateBody(d);
+                Check(false, "a static body with self-contact was accepted");
+            }
+            catch (LfemException e)
+            {
+                Equal(Status.InvalidArgument, e.Status, "status");
+                Check(e.Message.Contains("self_contact"), "message names the field: " + e.Message);
+            }
+            d.Type = BodyType.Deformable;
+            world.CreateBody(d);
         }
     }
 

@@ -182,7 +182,8 @@ class BodyDef(_Definition):
         ("mask_bits", ctypes.c_uint32),       # default all bits
         ("user_data", ctypes.c_void_p),
         ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
-        ("_padding", ctypes.c_uint32),
+        ("self_contact", ctypes.c_uint8),     # 1 = the surface collides with itself (deformable)
+        ("_padding", ctypes.c_uint8 * 3),
     ]
     _enums = ("type", "model")
     type = _enum_property("_type", BodyType)

@@ -67,7 +67,8 @@ class Layout(unittest.TestCase):
         self.check(lfem.BodyDef, 120, {
             "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
-            "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112})
+            "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112,
+            "self_contact": 116})
         self.check(lfem.Contact, 128, {
             "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
             "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124})
@@ -213,6 +214,14 @@ class Physics(unittest.TestCase):
             world.clear_warnings()
             for kind in lfem.WarningKind:
                 self.assertEqual(world.warning(kind).count, 0)
+
+    def test_self_contact_is_for_deformable_bodies_only(self):
+        with lfem.World() as world:
+            self.assertEqual(lfem.BodyDef().self_contact, 0)
+            with self.assertRaises(lfem.InvalidArgumentError) as caught:
+                world.create_body(lfem.BodyDef(type=lfem.BodyType.STATIC, self_contact=1))
+            self.assertIn("self_contact", str(caught.exception))
+            world.create_body(lfem.BodyDef(self_contact=1))
 
     def test_falling_block_follows_free_fall(self):
         # Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each

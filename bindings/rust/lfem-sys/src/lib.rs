@@ -228,7 +228,8 @@ pub struct lfem_body_def {
     pub mask_bits: u32,
     pub user_data: *mut c_void,
     pub internal_value: u32,
-    pub padding: u32,
+    pub self_contact: u8,
+    pub padding: [u8; 3],
 }
 
 #[repr(C)]

@@ -83,6 +83,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_body_def, angular_velocity), 72);
     assert_eq!(offset!(lfem_body_def, category_bits), 96);
     assert_eq!(offset!(lfem_body_def, mask_bits), 100);
+    assert_eq!(offset!(lfem_body_def, self_contact), 116);
     assert_eq!(offset!(lfem_body_def, user_data), 104);
     assert_eq!(offset!(lfem_body_def, internal_value), 112);
 

@@ -322,6 +322,8 @@ pub struct BodyDef {
     pub category_bits: u32,
     /// Collision filter: what it collides with, default all bits.
     pub mask_bits: u32,
+    /// The body's surface collides with itself (deformable bodies only), default false.
+    pub self_contact: bool,
     internal_value: u32,
 }
 
@@ -351,6 +353,7 @@ impl Default for BodyDef {
             angular_velocity: d.angular_velocity,
             category_bits: d.category_bits,
             mask_bits: d.mask_bits,
+            self_contact: d.self_contact != 0,
             internal_value: d.internal_value,
         }
     }
@@ -382,7 +385,8 @@ impl BodyDef {
             mask_bits: self.mask_bits,
             user_data: ptr::null_mut(),
             internal_value: self.internal_value,
-            padding: 0,
+            self_contact: u8::from(self.self_contact),
+            padding: [0; 3],
         }
     }
 }

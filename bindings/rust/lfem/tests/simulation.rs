@@ -450,3 +450,18 @@ fn a_block_held_inside_out_is_reported_once_per_spell() {
         assert_eq!((w.count, w.last_time, w.last_body), (0, 0.0, Body::NULL));
     }
 }
+
+#[test]
+fn self_contact_is_for_deformable_bodies_only() {
+    // The flag reaches lfem: a static body asking for it is refused, a deformable one keeps it.
+    let mut world = World::new(&WorldDef::default()).unwrap();
+    let mut d = BodyDef::default();
+    assert!(!d.self_contact);
+    d.self_contact = true;
+    d.body_type = BodyType::Static;
+    let err = world.create_body(&d).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().contains("self_contact"), "message: {}", err.message());
+    d.body_type = BodyType::Deformable;
+    world.create_body(&d).unwrap();
+}
