@@ -20,6 +20,7 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.node_triangle_begin = in.surface->node_triangle_begin.data();
     cb.node_triangles = in.surface->node_triangles.data();
     cb.static_bvh = in.type == LFEM_BODY_STATIC ? in.static_bvh : nullptr;
+    cb.face_normals = in.type == LFEM_BODY_STATIC ? in.face_normals : nullptr;
     cb.triangles = in.surface->triangles.data();
     cb.triangle_count = in.surface->triangle_count();
     const std::vector<uint32_t>& slaves = in.type == LFEM_BODY_DEFORMABLE ? *in.every_node

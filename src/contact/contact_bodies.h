@@ -18,6 +18,7 @@ struct ContactBodyInput {
     uint32_t slot = 0;                   // the body's slot in the world
     uint64_t identity = 0;               // changes whenever the body's geometry does
     const TriangleBvh* static_bvh = nullptr;  // static bodies: the tree of their triangles
+    const double* face_normals = nullptr;     // static bodies: their unit face normals
     lfem_body_type type = LFEM_BODY_STATIC;
     const Surface* surface = nullptr;    // its boundary (triangles, slave candidates)
     const std::vector<uint32_t>* every_node = nullptr;  // 0 .. node_count - 1 (deformable bodies)

@@ -38,6 +38,8 @@ struct ContactBody {
     const uint32_t* node_triangle_begin = nullptr;  // per node: where its triangles start
     const uint32_t* node_triangles = nullptr;       // (+1 at the end), ascending
     const TriangleBvh* static_bvh = nullptr;  // a static body's tree, built when its mesh was added
+    const double* face_normals = nullptr;     // a static body's unit face normals (3 per triangle,
+                                              // zero: collapsed), made when its mesh was added
     const double* x_start = nullptr;   // 3 per node: positions at the start of the step, x^n
     const double* v_last = nullptr;    // 3 per node: velocity over the last step (deformable
                                        // bodies); nullptr = (x - x_start) / h, this step's

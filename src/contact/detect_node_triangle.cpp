@@ -78,6 +78,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     double allowance = 0.0, grow = 0.0;
     bool first_touch = false;
     uint32_t grow_body = UINT32_MAX;
+    const Vec3* normal = nullptr;
     for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
         const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
         const ContactBody& b = in.bodies[bi];
@@ -99,7 +100,8 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             allowance = 1.25 * kept_offset(last) + kResidualDepth * contact_length(a, b);
             first_touch = catches_deep_nodes(a, b, in.scan_overlaps) && last == nullptr;
         }
-        test_node_triangle(a, p, normal_of(in, g, slave_normals, ready), b, t, allowance, block.best.back(),
+        if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
+        test_node_triangle(a, p, *normal, b, t, allowance, block.best.back(),
                            first_touch ? &block.deep.back() : nullptr);
     }
     // An overlap met for the first time: accepted when nothing of the other body lies between

@@ -11,7 +11,7 @@ namespace lfem {
 double World::stable_step() const {
     double h = std::numeric_limits<double>::infinity();
     bodies_.for_each([&](const Body& b, uint32_t) {
-        if (!b.is_deformable() || !b.has_mesh()) return;
+        if (!b.is_deformable() || !b.has_mesh() || b.state.asleep) return;
         // Neo-Hookean stiffness grows with deformation, and every model's below J = 0.2 (the
         // volume barrier): the limit at the current nodes. The reference limit already carries
         // the 2 % margin on omega^2 of its Lanczos estimate; only stiffening beyond it shortens
@@ -25,7 +25,7 @@ double World::stable_step() const {
 double World::self_contact_step() const {
     double h = std::numeric_limits<double>::infinity();
     bodies_.for_each([&](const Body& b, uint32_t) {
-        if (!b.def.self_contact || !b.is_deformable() || !b.has_mesh()) return;
+        if (!b.def.self_contact || !b.is_deformable() || !b.has_mesh() || b.state.asleep) return;
         const std::vector<uint32_t>& nodes = b.ref.surface.nodes;
         const double* v = b.state.v_half.data();
         Vec3 mean = Vec3::Zero();
@@ -110,25 +110,27 @@ void World::body_momentum(const Body& b, Vec3& P, Vec3& L) const {
     }
 }
 
+void World::add_kinetic_energy(const Body& b, double& sum) const {
+    if (!b.is_dynamic() || !b.has_mesh()) return;
+    if (b.is_rigid()) {
+        sum += rigid_kinetic_energy(rigid_view(b), b.state.global);
+        return;
+    }
+    std::vector<double> v(b.state.v_half.size());
+    synchronized_velocities(b, v.data());
+    for (uint32_t i = 0; i < b.ref.node_count(); ++i) sum += 0.5 * b.ref.mass[i] * Vec3(&v[3 * i]).squaredNorm();
+}
+
 WorldTotals World::totals() const {
     WorldTotals t;
-    std::vector<double> v;
     bodies_.for_each([&](const Body& b, uint32_t) {
         t.added_mass += b.ref.added_mass;
         if (!b.is_dynamic() || !b.has_mesh()) return;
         Vec3 P, L;
-        if (b.is_rigid()) {
-            t.kinetic_energy += rigid_kinetic_energy(rigid_view(b), b.state.global);
-            body_momentum(b, P, L);
-            t.linear_momentum += P, t.angular_momentum += L;
-            return;
-        }
-        v.resize(b.state.v_half.size());
-        synchronized_velocities(b, v.data());
-        for (uint32_t i = 0; i < b.ref.node_count(); ++i)
-            t.kinetic_energy += 0.5 * b.ref.mass[i] * Vec3(&v[3 * i]).squaredNorm();
+        add_kinetic_energy(b, t.kinetic_energy);  // node by node into the total
         body_momentum(b, P, L);
         t.linear_momentum += P, t.angular_momentum += L;
+        if (b.is_rigid()) return;
         t.strain_energy += b.state.strain_energy;
         t.inverted_tets += b.state.inverted_tets;
         t.min_jacobian = std::min(t.min_jacobian, b.state.min_jacobian);

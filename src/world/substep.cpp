@@ -40,7 +40,7 @@ void World::plan_stages() {
         if (!bodies_.live(i) || !b.has_geometry()) continue;
         s.with_geometry.push_back(i);
         if (b.is_kinematic()) s.kinematic.push_back(i);
-        if (!b.has_mesh()) continue;
+        if (!b.has_mesh() || b.state.asleep) continue;  // a sleeping body is not stepped
         if (b.is_rigid()) s.rigid.push_back(i);
         if (!b.is_deformable()) continue;
         s.deformable.push_back(i);
@@ -102,7 +102,8 @@ void World::move_kinematic_bodies(double h) {
         Body& b = bodies_.slot(i);
         scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
         scratch_[i].shape_pose_start.assign(b.state.shape_pose.begin(), b.state.shape_pose.end());
-        move_kinematic(Vec3(b.def.linear_velocity), Vec3(b.def.angular_velocity), h, b.state.global.center, b.state.x,
+        move_kinematic(Vec3(b.def.linear_velocity), Vec3(b.def.angular_velocity), h, b.state.global.center,
+                       b.state.global.rotation, b.state.x,
                        b.state.shape_pose);
     }
 }
@@ -116,9 +117,12 @@ void World::detect() {
         StepScratch& sc = scratch_[i];
         ContactBodyInput in;
         in.slot = i;
-        in.identity = b.geometry_identity();
-        in.static_bvh = &b.ref.bvh;
-        in.type = b.def.type;
+        // A sleeping body takes part as a static one (its slaves and its cached candidates
+        // those of a static body: the identity says so).
+        in.identity = b.geometry_identity() ^ (b.state.asleep ? uint64_t(1) << 31 : 0);
+        in.static_bvh = b.is_static() ? &b.ref.bvh : nullptr;
+        in.face_normals = b.is_static() && !b.ref.face_normals.empty() ? b.ref.face_normals.data() : nullptr;
+        in.type = b.state.asleep ? LFEM_BODY_STATIC : b.def.type;
         in.surface = &b.ref.surface;
         in.every_node = &b.ref.every_node;
         in.node_count = b.ref.node_count();
@@ -139,6 +143,15 @@ void World::detect() {
     }
     detected_.clear();
     fallen_ = FallenIn{};
+    // Pairs among sleeping and static bodies are not detected again: they are kept as they
+    // were (and merged back after the solve), so a sleeping pile keeps its contacts.
+    frozen_.clear();
+    for (const ContactRecord& r : state_.contacts) {
+        const Body& a = bodies_.slot(r.body_a);
+        const Body& b = bodies_.slot(r.body_b);
+        const bool held_a = a.state.asleep || a.is_static(), held_b = b.state.asleep || b.is_static();
+        if (held_a && held_b && (a.state.asleep || b.state.asleep)) frozen_.push_back(r);
+    }
     WorldCounters& c = state_.counters;
     c.solver_iterations = 0;
     c.solver_residual = 0.0;
@@ -155,9 +168,10 @@ void World::detect() {
 // instead of trading it back and forth. Only pairs that carry force are contacts.
 void World::solve(double h) {
     unconverged_ = false;
-    if (!detected_.empty()) {
+    build_links(frame_fraction_);
+    if (!detected_.empty() || !links_.empty()) {
         const ContactSolveResult res =
-            solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_,
+            solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_, links_,
                                       def_.contact_iterations, def_.contact_tolerance, h, solve_scratch_, profile_,
                                       pool_.get());
         state_.counters.solver_iterations = res.iterations;
@@ -165,9 +179,22 @@ void World::solve(double h) {
         state_.counters.max_penetration = res.max_penetration;
         unconverged_ = !res.converged;
     }
-    state_.contacts.swap(detected_);
+    take_link_forces(h);
+    if (frozen_.empty()) {
+        state_.contacts.swap(detected_);
+    } else {
+        auto order = [](const ContactRecord& x, const ContactRecord& y) {
+            return x.body_a != y.body_a ? x.body_a < y.body_a : x.node != y.node ? x.node < y.node : x.body_b < y.body_b;
+        };
+        state_.contacts.clear();
+        std::merge(detected_.begin(), detected_.end(), frozen_.begin(), frozen_.end(), std::back_inserter(state_.contacts),
+                   order);
+    }
     for (const ContactRecord& r : state_.contacts)
         if (r.active()) scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
+    for (const LinkRecord& l : links_) scratch_[l.body_a].touched = true;  // holds contact forces too
+    tally_contact_pairs(h);
+    wake_touched_sleepers();
 }
 
 void World::commit(double h) {
