@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "common/cpu_dispatch.h"
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
 #include "fem/tet_element.h"
@@ -19,17 +20,6 @@ namespace {
 // turns into SIMD instructions. The gather of node positions and the scatter of forces stay
 // in tet order, so every node sums its contributions in the same order as a plain loop would.
 constexpr int kLanes = 8;
-
-// Not under the sanitizers: the clones' load-time resolvers (ifuncs) run before a sanitizer's
-// runtime is set up, and ThreadSanitizer crashes there.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__) && \
-    !defined(__SANITIZE_THREAD__)
-#define LFEM_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#define LFEM_INLINE __attribute__((always_inline)) inline
-#else
-#define LFEM_SIMD_CLONES
-#define LFEM_INLINE inline
-#endif
 
 struct Batch {
     int n;                    // live lanes (the rest are padding with zero volume)
@@ -227,12 +217,13 @@ struct LoopData {
 };
 
 // One block of tets: gather, kernel, scatter; returns the block's strain energy, its inverted
-// tets and smallest volume ratio (and, for a model with kTangent, its largest tangent estimate). Compiled for
-// AVX-512, AVX2 and baseline x86-64, chosen at load time by the CPU (GCC function clones). The
-// results are bitwise the same on each: this file is built with -ffp-contract=off (no a*b+c
-// fused into one rounding), so every clone rounds every operation alike.
+// tets and smallest volume ratio (and, for a model with kTangent, its largest tangent
+// estimate). The loop calls it through cpu_variant (common/cpu_dispatch.h): compiled for
+// AVX-512, AVX2 and the baseline, chosen by the CPU. The results are bitwise the same on each:
+// this file is built with -ffp-contract=off (no a*b+c fused into one rounding), so every
+// variant rounds alike.
 template <bool displacement_edges, class Model>
-LFEM_SIMD_CLONES BlockResult element_block(const LoopData& d, uint32_t block, const Model& model) {
+LFEM_INLINE BlockResult element_block(const LoopData& d, uint32_t block, const Model& model) {
     Batch b;
     BlockResult out;
     double energy = 0.0, worst = 0.0;
@@ -318,10 +309,11 @@ BlockResult element_loop(const ElementMesh& mesh, const double* x, double* f, Th
     const LoopData d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.volume.data(),
                      f, mesh.tet_count(), colouring.block_size};
     std::vector<BlockResult> per_block(colouring.block_count());
+    const auto block_forces = cpu_variant<&element_block<displacement_edges, Model>>(cpu_level());
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
         const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
         parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c], [&](uint32_t i) {
-            per_block[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model);
+            per_block[blocks[i]] = block_forces(d, blocks[i], model);
         });
     }
     BlockResult total;

@@ -12,8 +12,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <memory>
+#include <system_error>
 #include <type_traits>
 
 #include "common/error.h"
@@ -310,6 +312,10 @@ void save_checkpoint(const World& world, const std::string& path) {
     put_u64(file, payload.size());
     put_u64(file, fnv1a(payload.data(), payload.size()));
     const std::string tmp = path + ".tmp";
+    // std::filesystem::rename, not std::rename: on Windows the latter refuses to replace an
+    // existing file; the former replaces it there too (on POSIX both are rename(2)). Its paths
+    // are made before the file, so that running out of memory leaves no .tmp behind.
+    const std::filesystem::path from(tmp), to(path);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out) fail(path, "cannot open " + tmp + " for writing");
@@ -322,7 +328,9 @@ void save_checkpoint(const World& world, const std::string& path) {
             fail(path, "write failed (disk full?)");
         }
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::error_code renamed;
+    std::filesystem::rename(from, to, renamed);
+    if (renamed) {
         std::remove(tmp.c_str());
         fail(path, "cannot rename " + tmp + " to it");
     }

@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/cpu_dispatch.h"
 #include "common/thread_pool.h"
 #include "contact/contact_bodies.h"
 #include "contact/detect_node_triangle.h"
@@ -57,9 +58,10 @@ struct WorldTotals {
 
 class World {
 public:
-    // Starts def.thread_count - 1 worker threads (joined by the destructor).
+    // Starts def.thread_count - 1 worker threads (joined by the destructor). The kernels'
+    // instruction-set variant is chosen here, once for the process (common/cpu_dispatch.h).
     explicit World(const lfem_world_def& def)
-        : def_(def), pool_(new ThreadPool(def.thread_count)) {}
+        : def_(def), pool_(new ThreadPool(def.thread_count)) { cpu_level(); }
 
     const lfem_world_def& def() const { return def_; }
     void set_gravity(const double g[3]);
