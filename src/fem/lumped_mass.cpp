@@ -1,5 +1,6 @@
 #include "fem/lumped_mass.h"
 
+#include "fem/quadratic_tet.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
@@ -14,6 +15,30 @@ void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, u
         inverse = Dm.inverse();
         volume[e] = V;
         for (int a = 0; a < 4; ++a) mass[t[a]] += density * V / 4.0;  // lumped mass, eq. (1)
+    }
+}
+
+void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
+                                  double density, double* Jq_inv, double* qp_volume, double* volume,
+                                  double* mass) {
+    for (uint32_t e = first; e < end; ++e) {
+        const uint32_t* t = &tets[kQuadraticTetNodes * std::size_t(e)];
+        const double* p[kQuadraticTetNodes];
+        for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) p[a] = X + 3 * std::size_t(t[a]);
+        double V = 0.0;
+        for (int q = 0; q < kQuadraturePoints; ++q) {
+            double J[9];
+            natural_jacobian(p, kQuadraticGradients.g[q], J);
+            const Mat3 Jm = load_row_major(J);
+            const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
+            Eigen::Map<Mat3> inverse(Jq_inv + 9 * k);
+            inverse = Jm.inverse();
+            qp_volume[k] = kQuadratureWeight * Jm.determinant();
+            V += qp_volume[k];
+        }
+        volume[e] = V;
+        for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)  // lumped mass, eq. (1)
+            mass[t[a]] += density * V * (a < 4 ? kCornerMassFraction : kMidEdgeMassFraction);
     }
 }
 

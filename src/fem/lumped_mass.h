@@ -1,6 +1,7 @@
 // The reference data of each tet and the lumped (diagonal) mass matrix M of eq. (1): every
-// tet gives a quarter of its mass rho V to each of its nodes. With it the central difference
-// (eq. 3) needs no global matrix: M is a number per node.
+// linear tet gives a quarter of its mass rho V to each of its nodes; a 10-node tet gives rho V /
+// 32 to each corner and 7 rho V / 48 to each mid-edge node (fem/quadratic_tet.h says why). With
+// it the central difference (eq. 3) needs no global matrix: M is a number per node.
 #pragma once
 
 #include <cstdint>
@@ -13,5 +14,13 @@ namespace lfem {
 // output arrays are indexed by tet and node like the input.
 void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
                         double density, double* Dm_inv, double* volume, double* mass);
+
+// The same for 10-node tets (10 node indices each, common/quadratic_tet_nodes.h): at each of the
+// 4 quadrature points the inverse reference Jacobian J_q^-1 (9 each, column-major: 36 per tet)
+// and the volume w_q det J_q (4 per tet), the tet's volume (their sum), and its lumped mass added
+// to its nodes. The Jacobians must be positive (smallest_jacobian, checked when the mesh is added).
+void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
+                                  double density, double* Jq_inv, double* qp_volume, double* volume,
+                                  double* mass);
 
 }  // namespace lfem

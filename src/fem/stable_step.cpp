@@ -8,30 +8,55 @@
 
 #include "common/thread_pool.h"
 #include "fem/internal_forces.h"
+#include "fem/quadratic_tet.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
 namespace {
 
+// The gradients g_a = grad N_a of tet e's nodes at its quadrature point q and the point's
+// volume: for a linear tet one point, the rows of Dm^-1 (node 0 minus their sum) and V; for a
+// quadratic one J_q^-T dN_a/dxi and w_q det J_q. Returns the number of nodes.
+int point_gradients(const ElementMesh& ref, uint32_t e, int q, Vec3 g[kQuadraticTetNodes], double& V) {
+    if (ref.nodes_per_tet == kQuadraticTetNodes) {
+        const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
+        const Eigen::Map<const Mat3> Jq_inv(&ref.Dm_inv[9 * k]);
+        for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
+            g[a] = Jq_inv.transpose() * Vec3(kQuadraticGradients.g[q][a]);
+        V = ref.qp_volume[k];
+        return kQuadraticTetNodes;
+    }
+    const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
+    for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
+    g[0] = -(g[1] + g[2] + g[3]);
+    V = ref.volume[e];
+    return 4;
+}
+
 // Gershgorin: every eigenvalue of M^-1 K lies below max over rows of sum_j |K_ij| / m_i. The
-// element blocks are K_ab = V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g = grad N;
-// summing |K_e| entries per row over-counts cancellations, so the bound is safe.
+// element blocks are K_ab = sum_q V_q (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I),
+// g = grad N at quadrature point q (one point for a linear tet); summing |K_e| entries per row
+// over-counts cancellations, so the bound is safe.
 double gershgorin_bound(const ElementMesh& ref, const Lame& lame) {
     std::vector<double> row_sum(3 * ref.node_count(), 0.0);
+    const int points = ref.nodes_per_tet == kQuadraticTetNodes ? kQuadraturePoints : 1;
+    std::vector<Mat3> K(std::size_t(ref.nodes_per_tet) * ref.nodes_per_tet);
     for (uint32_t e = 0; e < ref.tet_count(); ++e) {
-        const uint32_t* t = &ref.tets[4 * e];
-        const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
-        Vec3 g[4];
-        for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
-        g[0] = -(g[1] + g[2] + g[3]);
-        const double V = ref.volume[e];
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b) {
-                const Mat3 K = V * (lame.lambda * g[a] * g[b].transpose() +
-                                    lame.mu * g[b] * g[a].transpose() +
-                                    lame.mu * g[a].dot(g[b]) * Mat3::Identity());
-                for (int r = 0; r < 3; ++r) row_sum[3 * t[a] + r] += K.row(r).cwiseAbs().sum();
-            }
+        const uint32_t* t = &ref.tets[std::size_t(ref.nodes_per_tet) * e];
+        std::fill(K.begin(), K.end(), Mat3::Zero());
+        int nodes = 0;
+        for (int q = 0; q < points; ++q) {
+            Vec3 g[kQuadraticTetNodes];
+            double V = 0.0;
+            nodes = point_gradients(ref, e, q, g, V);
+            for (int a = 0; a < nodes; ++a)
+                for (int b = 0; b < nodes; ++b)
+                    K[nodes * a + b] += V * (lame.lambda * g[a] * g[b].transpose() + lame.mu * g[b] * g[a].transpose() +
+                                             lame.mu * g[a].dot(g[b]) * Mat3::Identity());
+        }
+        for (int a = 0; a < nodes; ++a)
+            for (int b = 0; b < nodes; ++b)
+                for (int r = 0; r < 3; ++r) row_sum[3 * t[a] + r] += K[nodes * a + b].row(r).cwiseAbs().sum();
     }
     double bound = 0.0;
     for (uint32_t i = 0; i < ref.node_count(); ++i)

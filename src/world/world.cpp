@@ -26,7 +26,7 @@ void World::destroy_body(lfem_body h) {
 void World::restore(WorldImage&& image) {
     for (Body& b : image.bodies) {
         BodyReference& ref = b.ref;
-        ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count());
+        ref.colouring = colour_tets(ref);
     }
     def_ = image.def;
     bodies_.restore(std::move(image.bodies), std::move(image.free_slots));
