@@ -17,6 +17,13 @@
 namespace lfem {
 namespace {
 
+// The per-point steps inlined into the element loop (GCC and Clang keep them out of line).
+#if defined(__GNUC__)
+#define LFEM_QUADRATIC_INLINE __attribute__((always_inline)) inline
+#else
+#define LFEM_QUADRATIC_INLINE inline
+#endif
+
 // The stress of each model at one quadrature point (index k = 4 tet + q): P from F, the energy
 // density into psi; a model with kTangent also raises `tangent` to its stiffness estimate.
 struct LinearStress {
@@ -26,7 +33,7 @@ struct LinearStress {
 };
 
 // Hooke's law in a rotated frame: P = R hooke(R^T F - I).
-inline Mat3 rotated_hooke(const Mat3& R, const Mat3& F, const Lame& lame, double& psi) {
+LFEM_QUADRATIC_INLINE Mat3 rotated_hooke(const Mat3& R, const Mat3& F, const Lame& lame, double& psi) {
     return R * hooke_stress(R.transpose() * F - Mat3::Identity(), lame, &psi);
 }
 
@@ -77,7 +84,7 @@ struct QuadraticLoop {
 // The ten nodes of tet e relative to its first: displacements (small strains keep the digits
 // that positions would cancel away) or positions. sum_a dN_a = 0, so the offset drops out.
 template <bool displacement>
-void gather(const QuadraticLoop& d, uint32_t e, double u[kQuadraticTetNodes][3]) {
+LFEM_QUADRATIC_INLINE void gather(const QuadraticLoop& d, uint32_t e, double u[kQuadraticTetNodes][3]) {
     const uint32_t* t = d.tets + kQuadraticTetNodes * std::size_t(e);
     for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
         for (int r = 0; r < 3; ++r) {
@@ -99,7 +106,7 @@ struct PointWeights {
 // of (i, j) on dL_i and dL_j), Ds = sum_i w_i dL_i^T with w_i = sum_a c_ai u_a, and since
 // dL_0 = -(1, 1, 1), dL_c = e_c, its columns are w_c - w_0: the edge matrix of four virtual
 // nodes, a third of the work of the full sum over 10 nodes x 3 directions.
-Mat3 natural_gradient(const double u[kQuadraticTetNodes][3], const PointWeights& p) {
+LFEM_QUADRATIC_INLINE Mat3 natural_gradient(const double u[kQuadraticTetNodes][3], const PointWeights& p) {
     double w[4][3];
     for (int i = 0; i < 4; ++i)
         for (int r = 0; r < 3; ++r) w[i][r] = (4.0 * p.L[i] - 1.0) * u[i][r];
@@ -118,7 +125,7 @@ Mat3 natural_gradient(const double u[kQuadraticTetNodes][3], const PointWeights&
 
 // f_a += G dN_a/dxi for the ten nodes, through the same split: G dL_c is column c of G and
 // G dL_0 minus their sum.
-void add_nodal_forces(const Mat3& G, const PointWeights& p, double f[kQuadraticTetNodes][3]) {
+LFEM_QUADRATIC_INLINE void add_nodal_forces(const Mat3& G, const PointWeights& p, double f[kQuadraticTetNodes][3]) {
     double gamma[4][3];
     for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) gamma[c + 1][r] = G(r, c);
