@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -98,6 +99,28 @@ inline std::vector<uint32_t> nodes_in_box(lfem_world* w, lfem_body b, const doub
     std::vector<uint32_t> nodes(count);
     EXPECT_EQ(lfem_body_find_nodes_in_box(w, b, lo, hi, nodes.data(), count, &count), LFEM_OK);
     return nodes;
+}
+
+// Sum of the contact forces on body `on` (N): nodes of `on` get the force, triangles of `on`
+// get its opposite.
+inline void contact_force_on(lfem_world* w, lfem_body on, double out[3]) {
+    uint32_t count = 0;
+    lfem_world_query_contacts(w, nullptr, 0, &count);
+    std::vector<lfem_contact> c(count);
+    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
+    out[0] = out[1] = out[2] = 0;
+    for (const lfem_contact& k : c) {
+        const double sign = k.body_a.index == on.index ? 1.0 : (k.body_b.index == on.index ? -1.0 : 0.0);
+        for (int d = 0; d < 3; ++d) out[d] += sign * k.force[d];
+    }
+}
+
+// Root mean square of a body's node speeds (m/s).
+inline double rms_velocity(lfem_world* w, lfem_body b) {
+    const std::vector<double> v = velocities(w, b);
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s / (v.size() / 3));
 }
 
 // Every byte a user can read back about the given bodies and the world.

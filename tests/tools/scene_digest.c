@@ -320,6 +320,19 @@ static void scene_crush(uint32_t threads) {
     lfem_world_destroy(w);
 }
 
+/* The world saved to path and loaded again (the old one destroyed), when the build has file
+ * I/O; else the world itself. */
+static lfem_world* round_trip(lfem_world* w, const char* path) {
+    const lfem_status s = lfem_world_save(w, path);
+    if (s == LFEM_UNSUPPORTED) return w;
+    check(s, "save");
+    lfem_world* loaded = NULL;
+    check(lfem_world_load(path, &loaded), "load");
+    remove(path);
+    lfem_world_destroy(w);
+    return loaded;
+}
+
 /* Two blocks created 0.3 of a cell into each other, separating; then a checkpoint round trip
  * and more steps from the loaded world. */
 static void scene_overlap_checkpoint(uint32_t threads) {
@@ -333,17 +346,7 @@ static void scene_overlap_checkpoint(uint32_t threads) {
     d.model = LFEM_MODEL_PAPER;
     b[1] = add_box(w, &d, 0.1, 0.1, 0.1, 4, 4, 4, 0.0925, 0.01, 0.0);
     step(w, 10, 0.002);
-    const char* path = "scene_digest_checkpoint.bin";
-    lfem_status s = lfem_world_save(w, path);
-    if (s == LFEM_OK) {
-        lfem_world* loaded = NULL;
-        check(lfem_world_load(path, &loaded), "load");
-        remove(path);
-        lfem_world_destroy(w);
-        w = loaded;
-    } else if (s != LFEM_UNSUPPORTED) {
-        check(s, "save");
-    }
+    w = round_trip(w, "scene_digest_checkpoint.bin");
     step(w, 10, 0.002);
     digest_world(w, b, 2);
     lfem_world_destroy(w);
@@ -376,18 +379,7 @@ static void scene_quadratic(uint32_t threads) {
         lfem_mesh_destroy(m);
     }
     step(w, 8, 1.0 / 200.0);
-    char path[64];
-    snprintf(path, sizeof path, "scene_digest_quadratic_%u.ckpt", threads);
-    const lfem_status s = lfem_world_save(w, path);
-    if (s == LFEM_OK) {
-        lfem_world* loaded = NULL;
-        check(lfem_world_load(path, &loaded), "load");
-        remove(path);
-        lfem_world_destroy(w);
-        w = loaded;
-    } else if (s != LFEM_UNSUPPORTED) {
-        check(s, "save");
-    }
+    w = round_trip(w, "scene_digest_quadratic.ckpt");
     step(w, 8, 1.0 / 200.0);
     digest_world(w, b, 3);
     uint32_t faces = 0;

@@ -694,19 +694,11 @@ impl World {
     /// corners first (positive volume), then the mid-edge nodes of the edges 01, 12, 02, 03,
     /// 13, 23 (see lfem_body_add_quadratic_mesh).
     pub fn add_quadratic_mesh_data(&mut self, body: Body, positions: &[[f64; 3]], tets: &[[u32; 10]]) -> Result<()> {
-        let node_count = to_u32(positions.len(), "node count")?;
         let tet_count = to_u32(tets.len(), "tet count")?;
-        // SAFETY: live world; the arrays hold 3*node_count doubles and 10*tet_count indices.
-        check(unsafe {
-            sys::lfem_body_add_quadratic_mesh(
-                self.ptr_mut(),
-                body.raw(),
-                positions.as_ptr() as *const f64,
-                node_count,
-                tets.as_ptr() as *const u32,
-                tet_count,
-            )
-        })
+        // SAFETY: 10*tet_count indices.
+        unsafe {
+            self.add_tets(sys::lfem_body_add_quadratic_mesh, body, positions, tets.as_ptr() as *const u32, tet_count)
+        }
     }
 
     /// Nodes per tet of a body: 4, 10 for quadratic tets, 0 for a body without tets.
@@ -720,19 +712,26 @@ impl World {
     /// Add a tetrahedral mesh given as node positions (m) and tets (4 node indices, 0-based,
     /// positive volume).
     pub fn add_mesh_data(&mut self, body: Body, positions: &[[f64; 3]], tets: &[[u32; 4]]) -> Result<()> {
-        let node_count = to_u32(positions.len(), "node count")?;
         let tet_count = to_u32(tets.len(), "tet count")?;
-        // SAFETY: live world; the arrays hold 3*node_count doubles and 4*tet_count indices.
-        check(unsafe {
-            sys::lfem_body_add_mesh(
-                self.ptr_mut(),
-                body.raw(),
-                positions.as_ptr() as *const f64,
-                node_count,
-                tets.as_ptr() as *const u32,
-                tet_count,
-            )
-        })
+        // SAFETY: 4*tet_count indices.
+        unsafe { self.add_tets(sys::lfem_body_add_mesh, body, positions, tets.as_ptr() as *const u32, tet_count) }
+    }
+
+    /// Adds nodes and tets through `add` (lfem_body_add_mesh or lfem_body_add_quadratic_mesh).
+    ///
+    /// # Safety
+    /// `tets` must hold as many indices as `add` reads for `tet_count` tets.
+    unsafe fn add_tets(
+        &mut self,
+        add: unsafe extern "C" fn(*mut sys::lfem_world, sys::lfem_body, *const f64, u32, *const u32, u32) -> sys::lfem_status,
+        body: Body,
+        positions: &[[f64; 3]],
+        tets: *const u32,
+        tet_count: u32,
+    ) -> Result<()> {
+        let node_count = to_u32(positions.len(), "node count")?;
+        // SAFETY: live world; 3*node_count doubles, and the caller's promise for tets.
+        check(add(self.ptr_mut(), body.raw(), positions.as_ptr() as *const f64, node_count, tets, tet_count))
     }
 
     /// Give a static or kinematic body a rigid shape; returns its index on the body (the
