@@ -22,7 +22,7 @@ CHECK_SIZE(lfem_body, 8);
 CHECK_OFFSET(lfem_body, index, 0);
 CHECK_OFFSET(lfem_body, generation, 4);
 
-CHECK_SIZE(lfem_world_def, 72);
+CHECK_SIZE(lfem_world_def, 80);
 CHECK_OFFSET(lfem_world_def, gravity, 0);
 CHECK_OFFSET(lfem_world_def, time_step, 24);
 CHECK_OFFSET(lfem_world_def, step_safety, 32);
@@ -32,12 +32,13 @@ CHECK_OFFSET(lfem_world_def, contact_tolerance, 48);
 CHECK_OFFSET(lfem_world_def, max_substeps, 56);
 CHECK_OFFSET(lfem_world_def, allow_unstable_step, 60);
 CHECK_OFFSET(lfem_world_def, internal_value, 64);
+CHECK_OFFSET(lfem_world_def, mass_scaling_step, 72);
 
 CHECK_SIZE(lfem_phase_time, 16);
 CHECK_OFFSET(lfem_phase_time, seconds, 0);
 CHECK_OFFSET(lfem_phase_time, calls, 8);
 
-CHECK_SIZE(lfem_profile, 184);
+CHECK_SIZE(lfem_profile, 192);
 CHECK_OFFSET(lfem_profile, substeps, 0);
 CHECK_OFFSET(lfem_profile, internal_forces, 8);
 CHECK_OFFSET(lfem_profile, predictor, 24);
@@ -51,8 +52,9 @@ CHECK_OFFSET(lfem_profile, normal_solve, 120);
 CHECK_OFFSET(lfem_profile, friction, 136);
 CHECK_OFFSET(lfem_profile, global_rotation, 152);
 CHECK_OFFSET(lfem_profile, commit, 168);
+CHECK_OFFSET(lfem_profile, candidate_searches, 184);
 
-CHECK_SIZE(lfem_world_stats, 160);
+CHECK_SIZE(lfem_world_stats, 168);
 CHECK_OFFSET(lfem_world_stats, time, 0);
 CHECK_OFFSET(lfem_world_stats, steps, 8);
 CHECK_OFFSET(lfem_world_stats, step_size, 16);
@@ -71,6 +73,7 @@ CHECK_OFFSET(lfem_world_stats, solver_iterations, 132);
 CHECK_OFFSET(lfem_world_stats, solver_residual, 136);
 CHECK_OFFSET(lfem_world_stats, max_penetration, 144);
 CHECK_OFFSET(lfem_world_stats, rotation_drift, 152);
+CHECK_OFFSET(lfem_world_stats, added_mass, 160);
 
 /* 64-bit targets (8-byte pointers), which every binding test runs on */
 CHECK_SIZE(void*, 8);

@@ -111,6 +111,20 @@ typedef struct lfem_world_def {
                                     (for experiments; instability is still caught), default 0 */
     uint8_t padding[3];
     uint32_t internal_value;    /* set by lfem_world_def_default; do not change */
+    uint32_t padding2;
+    double mass_scaling_step;   /* s; 0 (default) = off. Mass scaling, the explicit codes' tool
+                                   for a step that stiff or small elements would shorten
+                                   (OpenRadioss /DT/NODA/CST, LS-DYNA DT2MS): the nodes of each
+                                   tet that would need a shorter sub-step than this get the
+                                   added mass that lets the automatic step be at least
+                                   mass_scaling_step (the stable limit at least
+                                   mass_scaling_step / step_safety). Applied to the deformable
+                                   meshes added to the world; the added mass acts fully (inertia
+                                   and gravity) and is reported by lfem_body_get_added_mass and
+                                   stats.added_mass. It changes the physics: waves run slower in
+                                   the scaled elements (tests/bench's error-against-run-time
+                                   report shows what it costs). Neo-Hookean bodies crushed
+                                   beyond the reference still stiffen below it */
 } lfem_world_def;
 
 /* A definition filled with the defaults above. Always start from it. */
@@ -179,6 +193,7 @@ typedef struct lfem_world_stats {
     double rotation_drift;    /* rad, largest angle between the global rotation integrated by
                                  eq. (2) and the one re-fitted to the nodes, last sub-step
                                  ("paper" model only, else 0) */
+    double added_mass;        /* kg, added by mass scaling to every body (world_def) */
 } lfem_world_stats;
 
 LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_stats* out);
@@ -221,6 +236,11 @@ typedef struct lfem_profile {
                                            calls: "paper"-model bodies x sub-steps */
     lfem_phase_time commit;             /* velocities, contact forces, energy bookkeeping;
                                            calls: deformable and rigid bodies x sub-steps */
+    uint64_t candidate_searches;        /* how often contact searched for candidate faces
+                                           anew (part of the broad phase): only when a body
+                                           moved beyond the margin of the last search, or the
+                                           bodies changed; the sub-steps in between test the
+                                           candidates only */
 } lfem_profile;
 
 /* The accumulated profile (see lfem_profile). */
@@ -336,8 +356,11 @@ LFEM_API lfem_status lfem_body_get_nodes_per_tet(const lfem_world* world, lfem_b
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body,
                                              void** out);
 
-/* Total mass of the body (kg): the sum of its lumped node masses, rho V. */
+/* Total mass of the body (kg): the sum of its lumped node masses, rho V, plus what mass scaling
+ * added (lfem_world_def.mass_scaling_step). */
 LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body, double* out);
+/* The mass (kg) that mass scaling added to the body's nodes (0 without mass scaling). */
+LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body body, double* out);
 
 /* Linear momentum (kg m/s) and angular momentum about the world origin (kg m^2/s) of the
  * body, from its synchronized velocities. Static and kinematic bodies report zero. Either

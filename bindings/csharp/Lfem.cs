@@ -103,7 +103,10 @@ namespace Lfem
 #pragma warning disable 0169, 0649 // set by lfem_world_def_default, never by C#
         private byte padding0, padding1, padding2;
         private uint internalValue;
+        private uint padding3;
 #pragma warning restore 0169, 0649
+        public double MassScalingStep;  // s; 0 (default) = off: tets that would need a shorter
+                                        // sub-step get added mass (see lfem_world_def)
 
         /// <summary>The defaults (lfem_world_def_default).</summary>
         public static WorldDef Default { get { return Native.lfem_world_def_default(); } }
@@ -131,6 +134,7 @@ namespace Lfem
         public double SolverResidual;   // m
         public double MaxPenetration;   // m
         public double RotationDrift;    // rad
+        public double AddedMass;        // kg, by mass scaling
     }
 
     /// <summary>lfem_phase_time: wall time (s) and run count of one phase of the step.</summary>
@@ -158,6 +162,7 @@ namespace Lfem
         public PhaseTime Friction;
         public PhaseTime GlobalRotation;
         public PhaseTime Commit;
+        public ulong CandidateSearches; // contact's searches for candidate faces anew
     }
 
     /// <summary>A body handle (lfem_body): a value. Body.Null is {0, 0}.</summary>
@@ -499,10 +504,17 @@ namespace Lfem
             }
         }
 
-        /// <summary>Total mass (kg) of a body: the sum of its lumped node masses, rho V.</summary>
+        /// <summary>Total mass (kg) of a body: the sum of its lumped node masses, rho V, and what
+        /// mass scaling added.</summary>
         public double Mass(Body body)
         {
             double m; LfemException.Check(Native.lfem_body_get_mass(handle, body, out m)); return m;
+        }
+
+        /// <summary>The mass (kg) mass scaling added to a body (WorldDef.MassScalingStep).</summary>
+        public double AddedMass(Body body)
+        {
+            double m; LfemException.Check(Native.lfem_body_get_added_mass(handle, body, out m)); return m;
         }
 
         /// <summary>Linear momentum (kg m/s) and angular momentum about the origin (kg m^2/s).</summary>
@@ -859,6 +871,7 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_user_data(WorldHandle world, Body body, out IntPtr userData);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_mass(WorldHandle world, Body body, out double mass);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_added_mass(WorldHandle world, Body body, out double mass);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_momentum(WorldHandle world, Body body, out Vec3 linear, out Vec3 angular);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_positions(WorldHandle world, Body body, [Out] Vec3[] positions, uint nodeCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_velocities(WorldHandle world, Body body, [Out] Vec3[] velocities, uint nodeCapacity);

@@ -205,6 +205,10 @@ LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body,
     return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.total_mass; });
 }
 
+LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body body, double* out) {
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.added_mass; });
+}
+
 LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body, double linear[3],
                                             double angular[3]) {
     return guard(__func__, [&] {

@@ -30,6 +30,8 @@ void check_world_def(const lfem_world_def& d) {
             "def->contact_tolerance must be finite and > 0");
     require(d.max_substeps >= 1, "def->max_substeps must be >= 1");
     require(d.allow_unstable_step <= 1, "def->allow_unstable_step must be 0 or 1");
+    require(std::isfinite(d.mass_scaling_step) && d.mass_scaling_step >= 0.0,
+            "def->mass_scaling_step must be finite and >= 0 s (0 = no mass scaling)");
 }
 
 }  // namespace lfem::api
@@ -58,6 +60,7 @@ lfem_world_stats stats_of(const World& w) {
     st.strain_energy = t.strain_energy;
     for (int k = 0; k < 3; ++k) st.linear_momentum[k] = t.linear_momentum[k], st.angular_momentum[k] = t.angular_momentum[k];
     st.energy_error = t.energy_error;
+    st.added_mass = t.added_mass;
     return st;
 }
 

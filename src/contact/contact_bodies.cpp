@@ -12,9 +12,18 @@ void ContactBodies::add(const ContactBodyInput& in) {
     const bool dynamic = in.type == LFEM_BODY_DEFORMABLE || in.type == LFEM_BODY_RIGID;
     ContactBody cb;
     cb.slot = in.slot;
+    cb.identity = in.identity;
+    cb.moves = in.type != LFEM_BODY_STATIC;
+    cb.surface_nodes = in.surface->nodes.data();
+    cb.surface_node_count = uint32_t(in.surface->nodes.size());
+    cb.node_triangle_begin = in.surface->node_triangle_begin.data();
+    cb.node_triangles = in.surface->node_triangles.data();
+    cb.static_bvh = in.type == LFEM_BODY_STATIC ? in.static_bvh : nullptr;
     cb.triangles = in.surface->triangles.data();
     cb.triangle_count = in.surface->triangle_count();
-    const std::vector<uint32_t>& slaves = dynamic ? in.surface->nodes : in.surface->feature_nodes;
+    const std::vector<uint32_t>& slaves = in.type == LFEM_BODY_DEFORMABLE ? *in.every_node
+                                          : dynamic                      ? in.surface->nodes
+                                                                         : in.surface->feature_nodes;
     cb.nodes = slaves.data();
     cb.node_count = uint32_t(slaves.size());
     cb.total_nodes = in.node_count;

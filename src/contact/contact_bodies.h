@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/contact_body.h"
+#include "contact/triangle_bvh.h"
 #include "lfem.h"
 #include "mesh/surface.h"
 
@@ -15,8 +16,11 @@ namespace lfem {
 // One body as the world has it during a sub-step, after the predictor.
 struct ContactBodyInput {
     uint32_t slot = 0;                   // the body's slot in the world
+    uint64_t identity = 0;               // changes whenever the body's geometry does
+    const TriangleBvh* static_bvh = nullptr;  // static bodies: the tree of their triangles
     lfem_body_type type = LFEM_BODY_STATIC;
     const Surface* surface = nullptr;    // its boundary (triangles, slave candidates)
+    const std::vector<uint32_t>* every_node = nullptr;  // 0 .. node_count - 1 (deformable bodies)
     uint32_t node_count = 0;
     double* x = nullptr;                 // 3 per node: predicted x* (the current x when static)
     const double* x_start = nullptr;     // 3 per node: x^n (unused for a static body)
@@ -35,9 +39,10 @@ class ContactBodies {
 public:
     // Starts a new list for a world of slot_count slots.
     void clear(uint32_t slot_count);
-    // Adds a body. Slave nodes: every boundary node of a body that forces move (deformable,
-    // rigid); only the edge and corner nodes of a static or kinematic one, whose flat faces
-    // the other pass enforces. Only a deformable body's free nodes move alone; a rigid body's
+    // Adds a body. Slave nodes: every node of a deformable body, its interior ones too (a body
+    // folded or crushed through itself must not pass through another body with them), every
+    // boundary node of a rigid one; only the edge and corner nodes of a static or kinematic
+    // one, whose flat faces the other pass enforces. Only a deformable body's free nodes move alone; a rigid body's
     // move through its response; a static body's start is where it is.
     void add(const ContactBodyInput& input);
 

@@ -21,13 +21,23 @@ struct RigidResponse {
     Vec3 dtheta = Vec3::Zero();     // correction of the rotation (rotation vector)
 };
 
+class TriangleBvh;
+
 struct ContactBody {
     uint32_t slot = 0;                 // the body's slot in the world (for handles)
+    uint64_t identity = 0;             // changes whenever the body's geometry does (cached
+                                       // contact candidates are kept only while it holds)
+    bool moves = true;                 // false for a static body: x never changes
     const uint32_t* triangles = nullptr; // boundary triangles, 3 node indices each
     uint32_t triangle_count = 0;
     const uint32_t* nodes = nullptr;   // boundary nodes (the candidate slave nodes)
     uint32_t node_count = 0;
     uint32_t total_nodes = 0;          // all nodes of the body (x has 3 per node)
+    const uint32_t* surface_nodes = nullptr;  // every node of the triangles, ascending
+    uint32_t surface_node_count = 0;
+    const uint32_t* node_triangle_begin = nullptr;  // per node: where its triangles start
+    const uint32_t* node_triangles = nullptr;       // (+1 at the end), ascending
+    const TriangleBvh* static_bvh = nullptr;  // a static body's tree, built when its mesh was added
     const double* x_start = nullptr;   // 3 per node: positions at the start of the step, x^n
     const double* v_last = nullptr;    // 3 per node: velocity over the last step (deformable
                                        // bodies); nullptr = (x - x_start) / h, this step's
@@ -48,10 +58,24 @@ struct ContactBody {
 // Static and kinematic bodies follow their own motion whatever the contacts do.
 inline bool is_movable(const ContactBody& b) { return b.inv_mass != nullptr || b.rigid != nullptr; }
 
+// Whether nodes found deep inside body b count (pushed out) at every step, not only when new
+// bodies are checked for initial overlaps: static, kinematic and rigid bodies are solid
+// volumes that nothing may pass through.
+inline bool catches_deep_nodes(const ContactBody& b, bool scan_overlaps) {
+    return scan_overlaps || b.inv_mass == nullptr;
+}
+
 // Two bodies are checked against each other only if each one's category is in the other's
 // mask, and at least one of them can move.
 inline bool bodies_may_touch(const ContactBody& a, const ContactBody& b) {
     return (a.category & b.mask) != 0 && (b.category & a.mask) != 0 && (is_movable(a) || is_movable(b));
+}
+
+// The length that scales the tolerances of a node of `a` against a triangle of `b`: the finer of
+// the two surfaces' mean edges, so that a coarse floor's large triangles do not widen the bands
+// (and the work) of a fine body resting on it.
+inline double contact_length(const ContactBody& a, const ContactBody& b) {
+    return a.edge_length < b.edge_length ? a.edge_length : b.edge_length;
 }
 
 // Friction of a pair: the geometric mean, so a frictionless surface (mu = 0) makes every

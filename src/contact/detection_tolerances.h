@@ -7,6 +7,9 @@
 
 namespace lfem {
 
+// l is the pair's contact_length (contact_body.h) for a node against a triangle, the node's own
+// body's edge length against a rigid shape.
+//
 // Capture band: a node up to 0.05 l in front of a face at the end of the step is kept as a
 // (possibly inactive) constraint, so resting contacts do not flicker in and out.
 constexpr double kCaptureBand = 0.05;
@@ -28,5 +31,16 @@ constexpr double kEdgeTolerance = 0.01;
 // never faster than 1e-3 l per step, rather than in one violent jump.
 constexpr double kOverlapRecovery = 0.2;
 constexpr double kMaxRecovery = 1e-3;
+// A node found inside another body during the run (it fell in: a fold, a solve cut short) is
+// pushed out faster, at most 1e-2 l per step.
+constexpr double kFallenRecovery = 1e-2;
+
+// How much a triangle's box grows over a step for a node at contact length l: the capture band
+// plus the deepest overlap being recovered, or half an edge when new bodies are checked for
+// initial overlaps.
+inline double triangle_growth(double l, double max_offset, bool scan_overlaps) {
+    const double band = kCaptureBand * l + max_offset, initial = scan_overlaps ? kInitialDepth * l : 0.0;
+    return band > initial ? band : initial;
+}
 
 }  // namespace lfem

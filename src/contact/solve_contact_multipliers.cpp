@@ -112,10 +112,10 @@ double stopping_tolerance(const std::vector<ContactBody>& bodies, const std::vec
         const ContactBody& b = bodies[body_of_slot[r.body_b]];
         const double w[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
         for (int d = 0; d < 3; ++d) {
-            double rel = last_velocity(a, r.node, d, h);
+            double rel = a.moves ? last_velocity(a, r.node, d, h) : 0.0;  // a static body's: 0
             if (r.shape != UINT32_MAX)
                 rel -= (r.point_end[d] - r.point_start[d]) / h;  // the shape's surface moves rigidly
-            else
+            else if (b.moves)
                 for (int v = 0; v < 3; ++v) rel -= w[v] * last_velocity(b, r.triangle[v], d, h);
             motion = std::max(motion, std::fabs(rel) * h);
         }
@@ -210,15 +210,16 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
     for (uint32_t k = 0; k < count; ++k) {
         ContactRecord& r = records[order[k]];
         r.gap_after = Vec3(r.normal).dot(relative_position(pairs[order[k]]));
-        result.max_penetration = std::max(result.max_penetration, -(r.gap_after + r.offset));
+        // The true depth, kept overlaps included (they are let out over several steps).
+        result.max_penetration = std::max(result.max_penetration, -r.gap_after);
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - group_start).count();
 }
 
 // The pieces of every record's constraint: its points, weights, H and friction.
-std::vector<Pair> make_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                             std::vector<ContactRecord>& records) {
-    std::vector<Pair> pairs(records.size());
+void make_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
+                std::vector<ContactRecord>& records, std::vector<Pair>& pairs) {
+    pairs.assign(records.size(), Pair{});
     for (std::size_t j = 0; j < records.size(); ++j) {
         ContactRecord& r = records[j];  // shape contacts lend their surface points
         const ContactBody& a = bodies[body_of_slot[r.body_a]];
@@ -253,7 +254,6 @@ std::vector<Pair> make_pairs(const std::vector<ContactBody>& bodies, const std::
         }
         q.mu = pair_friction(a.friction, b.friction);
     }
-    return pairs;
 }
 
 // Groups: pairs that share no movable point cannot affect each other, so each group of pairs
@@ -262,11 +262,25 @@ std::vector<Pair> make_pairs(const std::vector<ContactBody>& bodies, const std::
 // sixteen cubes on one static floor are sixteen groups. A group's result does not depend on the
 // others or on the thread count: on one thread the groups simply run one after another. The
 // pairs of group g are order[begin[g] .. begin[g+1]), in list order; returns the group count.
+}  // namespace
+
+// The solve's arrays, kept from sub-step to sub-step for their capacity.
+struct ContactSolveScratch::Arrays {
+    std::vector<Pair> pairs;
+    std::vector<uint32_t> parent, group_of_root, group_of_pair, group_begin, order, next;
+    std::vector<GroupResult> results;
+};
+
+ContactSolveScratch::ContactSolveScratch() : arrays_(new Arrays) {}
+ContactSolveScratch::~ContactSolveScratch() = default;
+
+namespace {
+
 uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                     const std::vector<ContactRecord>& records, std::vector<uint32_t>& begin,
-                     std::vector<uint32_t>& order) {
+                     const std::vector<ContactRecord>& records, ContactSolveScratch::Arrays& s) {
     const uint32_t nb = uint32_t(bodies.size());
-    std::vector<uint32_t> parent(nb);
+    std::vector<uint32_t>& parent = s.parent;
+    parent.resize(nb);
     for (uint32_t i = 0; i < nb; ++i) parent[i] = i;
     for (const ContactRecord& r : records) {
         const uint32_t a = body_of_slot[r.body_a], b = body_of_slot[r.body_b];
@@ -274,7 +288,10 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     }
     // Group numbers in order of first appearance in the list; a pair's group is that of its
     // movable body (the node's, or else the triangle's).
-    std::vector<uint32_t> group_of_root(nb, UINT32_MAX), group_of_pair(records.size());
+    std::vector<uint32_t>& group_of_root = s.group_of_root;
+    std::vector<uint32_t>& group_of_pair = s.group_of_pair;
+    group_of_root.assign(nb, UINT32_MAX);
+    group_of_pair.resize(records.size());
     uint32_t groups = 0;
     for (std::size_t j = 0; j < records.size(); ++j) {
         const uint32_t a = body_of_slot[records[j].body_a], b = body_of_slot[records[j].body_b];
@@ -283,12 +300,14 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
         group_of_pair[j] = group_of_root[root];
     }
     // The pairs of each group, in list order (a counting sort).
+    std::vector<uint32_t>& begin = s.group_begin;
+    std::vector<uint32_t>& order = s.order;
     begin.assign(groups + 1, 0);
     order.resize(records.size());
     for (uint32_t g : group_of_pair) ++begin[g + 1];
     for (uint32_t g = 0; g < groups; ++g) begin[g + 1] += begin[g];
-    std::vector<uint32_t> next(begin.begin(), begin.end() - 1);
-    for (std::size_t j = 0; j < records.size(); ++j) order[next[group_of_pair[j]]++] = uint32_t(j);
+    s.next.assign(begin.begin(), begin.end() - 1);
+    for (std::size_t j = 0; j < records.size(); ++j) order[s.next[group_of_pair[j]]++] = uint32_t(j);
     return groups;
 }
 
@@ -298,15 +317,20 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
                                              const std::vector<uint32_t>& body_of_slot,
                                              std::vector<ContactRecord>& records,
                                              uint32_t max_iterations, double relative_tolerance,
-                                             double h, lfem_profile& profile, ThreadPool* pool) {
+                                             double h, ContactSolveScratch& scratch, lfem_profile& profile,
+                                             ThreadPool* pool) {
     // The whole solve is timed as the normal part; the friction passes' share of it is moved
     // to the friction part at the end.
     const auto solve_start = std::chrono::steady_clock::now();
     const double tolerance = stopping_tolerance(bodies, body_of_slot, records, relative_tolerance, h);
-    std::vector<Pair> pairs = make_pairs(bodies, body_of_slot, records);
-    std::vector<uint32_t> begin, order;
-    const uint32_t groups = group_pairs(bodies, body_of_slot, records, begin, order);
-    std::vector<GroupResult> results(groups);
+    ContactSolveScratch::Arrays& s = scratch.arrays();
+    std::vector<Pair>& pairs = s.pairs;
+    make_pairs(bodies, body_of_slot, records, pairs);
+    const uint32_t groups = group_pairs(bodies, body_of_slot, records, s);
+    const std::vector<uint32_t>& begin = s.group_begin;
+    const std::vector<uint32_t>& order = s.order;
+    std::vector<GroupResult>& results = s.results;
+    results.assign(groups, GroupResult{});
     parallel_for(pool, groups, [&](uint32_t g) {
         solve_group(records, pairs, order.data() + begin[g], begin[g + 1] - begin[g], max_iterations,
                     tolerance, results[g]);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "common/thread_pool.h"
@@ -14,6 +15,21 @@
 #include "lfem.h"
 
 namespace lfem {
+
+// The arrays the solve reuses from sub-step to sub-step (for their capacity: no allocation per
+// sub-step once they have grown), owned by the caller.
+class ContactSolveScratch {
+public:
+    ContactSolveScratch();
+    ~ContactSolveScratch();
+    ContactSolveScratch(const ContactSolveScratch&) = delete;
+    ContactSolveScratch& operator=(const ContactSolveScratch&) = delete;
+    struct Arrays;
+    Arrays& arrays() { return *arrays_; }
+
+private:
+    std::unique_ptr<Arrays> arrays_;
+};
 
 struct ContactSolveResult {
     uint32_t iterations = 0;
@@ -35,6 +51,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
                                              const std::vector<uint32_t>& body_of_slot,
                                              std::vector<ContactRecord>& records,
                                              uint32_t max_iterations, double relative_tolerance,
-                                             double h, lfem_profile& profile, ThreadPool* pool);
+                                             double h, ContactSolveScratch& scratch, lfem_profile& profile,
+                                             ThreadPool* pool);
 
 }  // namespace lfem

@@ -11,9 +11,21 @@
 
 namespace lfem {
 
-// The last step's record of node `node` of body_a against body_b (slots), or nullptr.
-const ContactRecord* previous_record(const std::vector<ContactRecord>& previous, uint32_t body_a,
-                                     uint32_t node, uint32_t body_b);
+// The last step's record of node `node` of body_a against body_b (slots), looked up for keys
+// that come in ascending order (the nodes of a block of the narrow phase, and per node the
+// other bodies): a cursor that only moves forward, O(1) amortised.
+class PreviousRecords {
+public:
+    explicit PreviousRecords(const std::vector<ContactRecord>& previous) : list_(previous) {}
+    // Starts at the first record of (body_a, node) or after (one binary search).
+    void seek(uint32_t body_a, uint32_t node);
+    // The record, or nullptr.
+    const ContactRecord* find(uint32_t body_a, uint32_t node, uint32_t body_b);
+
+private:
+    const std::vector<ContactRecord>& list_;
+    std::size_t next_ = 0;
+};
 
 // Gives `record` the multipliers of the pair's last record (newtons): the solve applies them
 // first (solve_contact_multipliers.h).

@@ -5,22 +5,19 @@
 
 namespace lfem {
 
-void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
-                        double density, double* Dm_inv, double* volume, double* mass) {
+void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end, double* Dm_inv,
+                        double* volume) {
     for (uint32_t e = first; e < end; ++e) {
         const uint32_t* t = &tets[4 * std::size_t(e)];
         const Mat3 Dm = edge_matrix(X + 3 * t[0], X + 3 * t[1], X + 3 * t[2], X + 3 * t[3]);
-        const double V = Dm.determinant() / 6.0;
         Eigen::Map<Mat3> inverse(Dm_inv + 9 * std::size_t(e));
         inverse = Dm.inverse();
-        volume[e] = V;
-        for (int a = 0; a < 4; ++a) mass[t[a]] += density * V / 4.0;  // lumped mass, eq. (1)
+        volume[e] = Dm.determinant() / 6.0;
     }
 }
 
 void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
-                                  double density, double* Jq_inv, double* qp_volume, double* volume,
-                                  double* mass) {
+                                  double* Jq_inv, double* qp_volume, double* volume) {
     for (uint32_t e = first; e < end; ++e) {
         const uint32_t* t = &tets[kQuadraticTetNodes * std::size_t(e)];
         const double* p[kQuadraticTetNodes];
@@ -37,9 +34,19 @@ void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_
             V += qp_volume[k];
         }
         volume[e] = V;
-        for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)  // lumped mass, eq. (1)
-            mass[t[a]] += density * V * (a < 4 ? kCornerMassFraction : kMidEdgeMassFraction);
     }
+}
+
+void add_lumped_mass(const uint32_t* tets, const double* volume, uint32_t first, uint32_t end, double density,
+                     double* mass, uint32_t nodes_per_tet) {
+    if (nodes_per_tet == kQuadraticTetNodes) {
+        for (uint32_t e = first; e < end; ++e)  // eq. (1), the sub-tet lumping
+            for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
+                mass[tets[kQuadraticTetNodes * std::size_t(e) + a]] += density * volume[e] * lumped_share(nodes_per_tet, a);
+        return;
+    }
+    for (uint32_t e = first; e < end; ++e)
+        for (int a = 0; a < 4; ++a) mass[tets[4 * std::size_t(e) + a]] += density * volume[e] / 4.0;  // eq. (1)
 }
 
 }  // namespace lfem

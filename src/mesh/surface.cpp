@@ -56,4 +56,15 @@ std::vector<uint32_t> split_quadratic_faces(const std::vector<uint32_t>& faces) 
     return triangles;
 }
 
+void compute_node_triangles(uint32_t node_count, Surface& s) {
+    const uint32_t triangles = s.triangle_count();
+    s.node_triangle_begin.assign(std::size_t(node_count) + 1, 0);
+    for (uint32_t i : s.triangles) ++s.node_triangle_begin[i + 1];
+    for (uint32_t i = 0; i < node_count; ++i) s.node_triangle_begin[i + 1] += s.node_triangle_begin[i];
+    s.node_triangles.resize(s.triangles.size());
+    std::vector<uint32_t> next(s.node_triangle_begin.begin(), s.node_triangle_begin.end() - 1);
+    for (uint32_t t = 0; t < triangles; ++t)  // ascending per node: triangles in order
+        for (int v = 0; v < 3; ++v) s.node_triangles[next[s.triangles[3 * std::size_t(t) + v]]++] = t;
+}
+
 }  // namespace lfem

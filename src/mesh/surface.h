@@ -19,6 +19,10 @@ struct Surface {
     std::vector<uint32_t> nodes;          // nodes of the triangles, ascending
     std::vector<uint32_t> feature_nodes;  // nodes where the surface bends by more than 15 degrees
     double edge_length = 0;               // mean edge length of the triangles (m)
+    // The triangles around each node, ascending: node i's are
+    // node_triangles[node_triangle_begin[i] .. node_triangle_begin[i + 1]) (derived from the
+    // triangles; not saved in checkpoints).
+    std::vector<uint32_t> node_triangle_begin, node_triangles;
 
     uint32_t triangle_count() const { return uint32_t(triangles.size() / 3); }
 };
@@ -30,5 +34,8 @@ void compute_surface_data(const double* X, uint32_t node_count, Surface& surface
 // The 4 flat triangles (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca) of each 6-node face
 // (6 indices per face as in Surface::quadratic_faces), oriented as the face: 12 indices per face.
 std::vector<uint32_t> split_quadratic_faces(const std::vector<uint32_t>& faces);
+
+// The node-triangle lists (they depend on the triangles alone).
+void compute_node_triangles(uint32_t node_count, Surface& surface);
 
 }  // namespace lfem

@@ -3,6 +3,7 @@
 // them in only at the end, so any failure (a bad mesh, out of memory) leaves the body
 // untouched.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -61,21 +62,20 @@ void append_boundary(BodyReference& ref, const uint32_t* new_tets, uint32_t tet_
     compute_surface_data(ref.X.data(), ref.node_count(), surface);
 }
 
-// The reference data and lumped masses of the tets appended after the first old_tets (ref.tets
-// holds them already; the per-tet arrays grow to match).
-void append_reference_tets(BodyReference& ref, uint32_t old_tets, double density) {
+// The reference data of the tets appended after the first old_tets (ref.tets holds them
+// already; the per-tet arrays grow to match).
+void append_reference_tets(BodyReference& ref, uint32_t old_tets) {
     const uint32_t total = uint32_t(ref.tets.size() / ref.nodes_per_tet);
     if (ref.nodes_per_tet == kQuadraticTetNodes) {
         ref.Dm_inv.resize(9 * std::size_t(kQuadraturePoints) * total);
         ref.qp_volume.resize(std::size_t(kQuadraturePoints) * total);
         ref.volume.resize(total);
-        add_quadratic_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, density, ref.Dm_inv.data(),
-                                     ref.qp_volume.data(), ref.volume.data(), ref.mass.data());
+        add_quadratic_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, ref.Dm_inv.data(),
+                                     ref.qp_volume.data(), ref.volume.data());
     } else {
         ref.Dm_inv.resize(9 * std::size_t(total));
         ref.volume.resize(total);
-        add_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, density, ref.Dm_inv.data(),
-                           ref.volume.data(), ref.mass.data());
+        add_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, ref.Dm_inv.data(), ref.volume.data());
     }
 }
 
@@ -83,7 +83,8 @@ void append_reference_tets(BodyReference& ref, uint32_t old_tets, double density
 // of the element loop): everything from here on sees the reordered mesh, the caller its own
 // numbering. The reordered copies go as soon as they are appended (peak memory).
 BodyReference append_reference(const Body& body, const double* positions, uint32_t node_count,
-                               const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet, ThreadPool* pool) {
+                               const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet,
+                               const lfem_world_def& def, ThreadPool* pool) {
     BodyReference ref = body.ref;
     ref.nodes_per_tet = nodes_per_tet;
     const uint32_t old_nodes = ref.node_count(), old_tets = ref.tet_count();
@@ -96,14 +97,32 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
     }
     ref.mass.resize(ref.X.size() / 3, 0.0);
     append_boundary(ref, &ref.tets[std::size_t(nodes_per_tet) * old_tets], tet_count);
-    append_reference_tets(ref, old_tets, body.def.density);
+    append_reference_tets(ref, old_tets);
+    add_lumped_mass(ref.tets.data(), ref.volume.data(), old_tets, old_tets + tet_count, body.def.density,
+                    ref.mass.data(), nodes_per_tet);
     const uint32_t n = ref.node_count();
+    derive_reference_data(body, ref);
+    if (body.is_deformable() && def.mass_scaling_step > 0.0) {
+        // Mass for the tets that would need a shorter step than the requested one (all the
+        // body's, from their physical masses again): the stable limit is then at least
+        // mass_scaling_step / step_safety.
+        std::vector<double> physical(n, 0.0);
+        add_lumped_mass(ref.tets.data(), ref.volume.data(), 0, ref.tet_count(), body.def.density, physical.data(),
+                        nodes_per_tet);
+        ElementMesh mesh = element_mesh(ref);
+        mesh.mass = physical;
+        const double omega_target = 2.0 * def.step_safety / def.mass_scaling_step;
+        ref.stable_step =
+            2.0 / scale_masses_for_step(mesh, body.lame, body.def.density, omega_target, ref.mass.data(), pool).omega_max;
+        ref.added_mass = 0.0;
+        for (uint32_t i = 0; i < n; ++i) ref.added_mass += ref.mass[i] - physical[i];
+    } else if (body.is_deformable()) {
+        ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame, pool).omega_max;
+    }
     ref.total_mass = 0.0;
     for (double m : ref.mass) ref.total_mass += m;
     const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
     for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
-    ref.colouring = colour_tets(ref);
-    if (body.is_deformable()) ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame, pool).omega_max;
     if (body.is_rigid()) {
         // The inertia of the lumped masses about the centre of mass, in the reference frame.
         const Mat3 I = inertia_tensor(ref.mass.data(), ref.X.data(), n, C);
@@ -175,6 +194,17 @@ void start_motion(Body& candidate, BodyState& state, ThreadPool* pool) {
 
 }  // namespace
 
+void derive_reference_data(const Body& body, BodyReference& ref) {
+    ref.colouring = colour_tets(ref);
+    compute_node_triangles(ref.node_count(), ref.surface);
+    ref.every_node.clear();
+    if (body.is_deformable())
+        for (uint32_t i = 0; i < ref.node_count(); ++i) ref.every_node.push_back(i);
+    ref.bvh = TriangleBvh{};
+    if (body.def.type == LFEM_BODY_STATIC)  // never moves: its tree is built once, here
+        ref.bvh.build(ref.X.data(), ref.surface.triangles.data(), ref.surface.triangle_count());
+}
+
 void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_count, const uint32_t* tets,
                      uint32_t tet_count, uint32_t nodes_per_tet) {
     Body& body = bodies_.get(handle);
@@ -194,7 +224,7 @@ void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_co
     Body candidate;
     candidate.def = body.def;
     candidate.lame = body.lame;
-    candidate.ref = append_reference(body, positions, node_count, tets, tet_count, nodes_per_tet, pool_.get());
+    candidate.ref = append_reference(body, positions, node_count, tets, tet_count, nodes_per_tet, def_, pool_.get());
     double added_kinetic = 0.0;
     BodyState state = append_state(*this, body, candidate.ref, old_nodes,
                                    &candidate.ref.X[3 * std::size_t(old_nodes)], &added_kinetic);
@@ -214,6 +244,7 @@ void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_co
     body.node_force = std::move(forces);
     if (body.is_dynamic()) state_.counters.initial_energy += added_kinetic;
     state_.counters.scan_overlaps = true;
+    body.geometry_revision += 1;
 }
 
 void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_t node_count,
@@ -241,6 +272,7 @@ void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_
     ref.X.assign(positions, positions + 3 * std::size_t(node_count));
     ref.surface.triangles.assign(triangles, triangles + 3 * std::size_t(triangle_count));
     compute_surface_data(ref.X.data(), ref.node_count(), ref.surface);
+    derive_reference_data(body, ref);
     BodyState state = body.state;
     state.x = ref.X;
     state.v_half.assign(ref.X.size(), 0.0);
@@ -254,6 +286,7 @@ void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_
     body.state = std::move(state);
     body.node_mode = std::move(modes);
     state_.counters.scan_overlaps = true;
+    body.geometry_revision += 1;
 }
 
 uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const double pose[7]) {
@@ -266,6 +299,7 @@ uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const doubl
         for (int k = 0; k < 3; ++k) body.state.global.center[k] = pose[k];  // kinematic pivot
     body.shapes.push_back(std::move(copy));
     body.state.shape_pose.insert(body.state.shape_pose.end(), pose, pose + 7);
+    body.geometry_revision += 1;
     return uint32_t(body.shapes.size() - 1);
 }
 

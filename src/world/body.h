@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/rigid_shape.h"
+#include "contact/triangle_bvh.h"
 #include "fem/central_difference.h"
 #include "fem/element_colouring.h"
 #include "fem/element_mesh.h"
@@ -32,13 +33,17 @@ struct BodyReference {
     uint32_t nodes_per_tet = 4;     // 4, or 10 for a body of quadratic tets (fixed by its
                                     // first mesh)
     Surface surface;                // boundary triangles, slave and feature nodes, edge length
-    double total_mass = 0;
+    double total_mass = 0;          // the sum of `mass`, added mass included
+    double added_mass = 0;          // kg, added by mass scaling (lfem_world_def.mass_scaling_step)
     double com[3] = {0, 0, 0};      // reference centre of mass
     double stable_step = 0;         // 2/omega_max of this body alone (s); 0 = not deformable
     double inertia[9] = {0};        // rigid bodies: inertia about the COM, reference frame
     Numbering numbering;            // internal (locality) order <-> the caller's numbering
     ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
                                     // from tets: rebuilt, not saved, by checkpoints)
+    std::vector<uint32_t> every_node;  // deformable bodies: 0 .. node_count - 1, the contact slaves
+    TriangleBvh bvh;                // static bodies: the tree of the boundary triangles, built
+                                    // when the mesh is added (derived, like the colouring)
 
     uint32_t node_count() const { return uint32_t(X.size() / 3); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }
@@ -68,6 +73,8 @@ struct BodyState {
 
 struct Body {
     uint32_t generation = 0;
+    uint32_t geometry_revision = 0;           // counts the meshes and shapes added (contact's
+                                              // cached candidates hold while it does not change)
     lfem_body_def def{};
     Lame lame;
     BodyReference ref;
@@ -84,6 +91,8 @@ struct Body {
     bool is_paper() const { return is_deformable() && def.model == LFEM_MODEL_PAPER; }
     bool has_mesh() const { return !ref.X.empty(); }  // tets, or a static triangle surface
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
+    // Changes whenever the geometry does: a new generation, a mesh or a shape added.
+    uint64_t geometry_identity() const { return uint64_t(generation) << 32 | geometry_revision; }
 };
 
 // The blocks of the parallel element loop of a body's tets (element_colouring.h): blocks of
@@ -93,6 +102,10 @@ inline ElementColouring colour_tets(const BodyReference& ref) {
     const uint32_t block = ref.nodes_per_tet == 10 ? kElementBlockSize / 4 : kElementBlockSize;
     return colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count(), block, ref.nodes_per_tet);
 }
+
+// The data derived from a body's reference (not saved in checkpoints): the element colouring,
+// the surface's node-triangle lists and, for a static body, the tree of its triangles.
+void derive_reference_data(const Body& body, BodyReference& ref);
 
 // ---- views for the kernels ---------------------------------------------------------------
 

@@ -22,16 +22,18 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 4;  // 2: thread_count in the def, float tet rotations,
-                                        // stiffening; 3: the node and tet numbering; 4: 10-node
-                                        // tets (nodes per tet, quadrature volumes, 6-node faces)
+constexpr uint32_t kFormatVersion = 5;  // 2: thread_count in the def, float tet rotations,
+                                        // stiffening; 3: the node and tet numbering; 4: mass
+                                        // scaling (the world def's step, a body's added mass);
+                                        // 5: 10-node tets (nodes per tet, quadrature volumes,
+                                        // 6-node faces)
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 496,  // colouring: derived, rebuilt by World::restore
+static_assert(sizeof(BodyReference) == 624,  // colouring, node-triangle lists, tree: derived
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 272, "BodyState changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 96, "WorldCounters changed: update the checkpoint");
@@ -146,7 +148,8 @@ void body_fields(A& a, B& b) {
     auto& r = b.ref;
     a(r.nodes_per_tet), a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.qp_volume);
     a(r.surface.triangles), a(r.surface.quadratic_faces), a(r.surface.nodes);
-    a(r.surface.feature_nodes), a(r.surface.edge_length), a(r.total_mass), a(r.com), a(r.stable_step), a(r.inertia);
+    a(r.surface.feature_nodes), a(r.surface.edge_length), a(r.total_mass), a(r.added_mass), a(r.com), a(r.stable_step);
+    a(r.inertia);
     a(r.numbering.node_of_api), a(r.numbering.api_of_node), a(r.numbering.api_of_tet);
     auto& s = b.state;
     a(s.x), a(s.v_half), a(s.elastic), a(s.tet_rotation), a(s.contact_force), a(s.h_last);
@@ -214,6 +217,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(!b.is_deformable() || n == 0 || (std::isfinite(r.stable_step) && r.stable_step > 0.0),
             "bad stable step");
     require(s.stiffening >= 1.0 && s.stiffening < HUGE_VAL, "bad stiffening");  // also NaN
+    require(r.added_mass >= 0.0 && r.added_mass < HUGE_VAL, "bad added mass");
     for (const std::vector<double>* a : {&r.X, &r.mass, &r.Dm_inv, &r.volume, &r.qp_volume, &s.x, &s.v_half,
                                          &s.elastic, &s.contact_force,
                                          &s.shape_pose, &b.prescribed_velocity, &b.node_force})

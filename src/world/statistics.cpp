@@ -98,6 +98,7 @@ WorldTotals World::totals() const {
     WorldTotals t;
     std::vector<double> v;
     bodies_.for_each([&](const Body& b, uint32_t) {
+        t.added_mass += b.ref.added_mass;
         if (!b.is_dynamic() || !b.has_mesh()) return;
         Vec3 P, L;
         if (b.is_rigid()) {

@@ -115,8 +115,11 @@ void World::detect() {
         StepScratch& sc = scratch_[i];
         ContactBodyInput in;
         in.slot = i;
+        in.identity = b.geometry_identity();
+        in.static_bvh = &b.ref.bvh;
         in.type = b.def.type;
         in.surface = &b.ref.surface;
+        in.every_node = &b.ref.every_node;
         in.node_count = b.ref.node_count();
         in.x = b.state.x.data();
         in.x_start = b.is_deformable() ? sc.start.x.data() : sc.x_start.data();
@@ -151,7 +154,8 @@ void World::solve(double h) {
     if (!detected_.empty()) {
         const ContactSolveResult res =
             solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_,
-                                      def_.contact_iterations, def_.contact_tolerance, h, profile_, pool_.get());
+                                      def_.contact_iterations, def_.contact_tolerance, h, solve_scratch_, profile_,
+                                      pool_.get());
         state_.counters.solver_iterations = res.iterations;
         state_.counters.solver_residual = res.residual;
         state_.counters.max_penetration = res.max_penetration;

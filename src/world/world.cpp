@@ -24,10 +24,7 @@ void World::destroy_body(lfem_body h) {
 }
 
 void World::restore(WorldImage&& image) {
-    for (Body& b : image.bodies) {
-        BodyReference& ref = b.ref;
-        ref.colouring = colour_tets(ref);
-    }
+    for (Body& b : image.bodies) derive_reference_data(b, b.ref);
     def_ = image.def;
     bodies_.restore(std::move(image.bodies), std::move(image.free_slots));
     state_ = std::move(image.state);

@@ -14,6 +14,7 @@
 #include "common/thread_pool.h"
 #include "contact/contact_bodies.h"
 #include "contact/detect_node_triangle.h"
+#include "contact/solve_contact_multipliers.h"
 #include "lfem.h"
 #include "world/body.h"
 #include "world/body_registry.h"
@@ -30,6 +31,7 @@ struct WorldTotals {
     Vec3 linear_momentum = Vec3::Zero();   // kg m/s
     Vec3 angular_momentum = Vec3::Zero();  // kg m^2/s, about the origin
     double energy_error = 0;    // J: kinetic + strain + dissipated - external work - initial
+    double added_mass = 0;      // kg, by mass scaling
 };
 
 class World {
@@ -158,6 +160,7 @@ private:
     ContactBodies contact_bodies_;
     std::vector<ContactRecord> detected_;
     DetectionScratch detection_;
+    ContactSolveScratch solve_scratch_;
     std::unique_ptr<ThreadPool> pool_;  // the step's parallel loops
 };
 

@@ -41,8 +41,9 @@ struct QuadraticBox {
         const uint32_t t = mesh.tet_count();
         Jq_inv.resize(36 * std::size_t(t)), qp_volume.resize(4 * std::size_t(t)), volume.resize(t);
         mass.assign(mesh.node_count(), 0.0);
-        add_quadratic_reference_tets(mesh.positions.data(), mesh.tets.data(), 0, t, kRho, Jq_inv.data(),
-                                     qp_volume.data(), volume.data(), mass.data());
+        add_quadratic_reference_tets(mesh.positions.data(), mesh.tets.data(), 0, t, Jq_inv.data(), qp_volume.data(),
+                                     volume.data());
+        add_lumped_mass(mesh.tets.data(), volume.data(), 0, t, kRho, mass.data(), 10);
         colouring = colour_element_blocks(mesh.tets.data(), t, mesh.node_count(), block, 10);
         boundary.assign(mesh.node_count(), 0);
         for (uint32_t i : extract_quadratic_boundary(mesh.tets.data(), t)) boundary[i] = 1;

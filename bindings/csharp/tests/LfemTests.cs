@@ -87,17 +87,19 @@ public static class LfemTests
         Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(Model))), "sizeof(lfem_model)");
         Layout<Vec3>(24, "Z", 16);
         Layout<Body>(8, "Index", 0, "Generation", 4);
-        Layout<WorldDef>(72, "Gravity", 0, "TimeStep", 24, "StepSafety", 32, "ContactIterations", 40,
+        Layout<WorldDef>(80, "Gravity", 0, "TimeStep", 24, "StepSafety", 32, "ContactIterations", 40,
                          "ThreadCount", 44,
-                         "ContactTolerance", 48, "MaxSubsteps", 56, "AllowUnstableStep", 60, "internalValue", 64);
-        Layout<WorldStats>(160, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
+                         "ContactTolerance", 48, "MaxSubsteps", 56, "AllowUnstableStep", 60, "internalValue", 64,
+                         "MassScalingStep", 72);
+        Layout<WorldStats>(168, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
                            "KineticEnergy", 40, "EnergyError", 72, "LinearMomentum", 80, "AngularMomentum", 104,
                            "ContactCount", 128, "SolverIterations", 132, "SolverResidual", 136, "MaxPenetration", 144,
-                           "RotationDrift", 152);
+                           "RotationDrift", 152, "AddedMass", 160);
         Layout<PhaseTime>(16, "Seconds", 0, "Calls", 8);
-        Layout<Profile>(184, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
+        Layout<Profile>(192, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
                         "BroadPhase", 56, "NarrowPhase", 72, "ShapeQueries", 88, "ShapeTests", 104, "CcdQueries", 112,
-                        "NormalSolve", 120, "Friction", 136, "GlobalRotation", 152, "Commit", 168);
+                        "NormalSolve", 120, "Friction", 136, "GlobalRotation", 152, "Commit", 168,
+                        "CandidateSearches", 184);
         Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
                         "UserData", 104, "internalValue", 112);

@@ -260,9 +260,16 @@ class World:
         return index.value
 
     def mass(self, body: Body) -> float:
-        """Total mass (kg) of a body: the sum of its lumped node masses, rho V."""
+        """Total mass (kg) of a body: the sum of its lumped node masses, rho V, and what mass
+        scaling added."""
         out = ctypes.c_double()
         native.lfem_body_get_mass(self.handle, _body(body), ctypes.byref(out))
+        return out.value
+
+    def added_mass(self, body: Body) -> float:
+        """The mass (kg) mass scaling added to a body (WorldDef.mass_scaling_step)."""
+        out = ctypes.c_double()
+        native.lfem_body_get_added_mass(self.handle, _body(body), ctypes.byref(out))
         return out.value
 
     def momentum(self, body: Body) -> Tuple[Vectors, Vectors]:

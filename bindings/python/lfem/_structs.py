@@ -150,6 +150,8 @@ class WorldDef(_Definition):
         ("allow_unstable_step", ctypes.c_uint8),
         ("_padding", ctypes.c_uint8 * 3),
         ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
+        ("_padding2", ctypes.c_uint32),
+        ("mass_scaling_step", ctypes.c_double),  # s, 0 = off (default): see lfem_world_def
     ]
 
 
@@ -221,6 +223,7 @@ class WorldStats(ctypes.Structure):
         ("solver_residual", ctypes.c_double),
         ("max_penetration", ctypes.c_double),
         ("rotation_drift", ctypes.c_double),
+        ("added_mass", ctypes.c_double),      # kg, by mass scaling
     ]
 
 
@@ -247,6 +250,7 @@ class Profile(ctypes.Structure):
         ("friction", PhaseTime),
         ("global_rotation", PhaseTime),
         ("commit", PhaseTime),
+        ("candidate_searches", ctypes.c_uint64),  # contact's searches for candidate faces anew
     ]
 
 

@@ -46,22 +46,23 @@ class Layout(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(ctypes.c_void_p), 8)
         self.assertEqual(ctypes.sizeof(ctypes.c_int), 4)  # enums
         self.check(lfem.Body, 8, {"index": 0, "generation": 4})
-        self.check(lfem.WorldDef, 72, {
+        self.check(lfem.WorldDef, 80, {
             "gravity": 0, "time_step": 24, "step_safety": 32, "contact_iterations": 40,
             "thread_count": 44,
             "contact_tolerance": 48, "max_substeps": 56, "allow_unstable_step": 60,
-            "_internal_value": 64})
-        self.check(lfem.WorldStats, 160, {
+            "_internal_value": 64, "mass_scaling_step": 72})
+        self.check(lfem.WorldStats, 168, {
             "steps": 8, "step_size": 16, "stable_step": 24, "substeps_last_call": 32,
             "body_count": 36, "kinetic_energy": 40, "energy_error": 72, "linear_momentum": 80,
             "angular_momentum": 104, "contact_count": 128, "solver_iterations": 132,
-            "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152})
+            "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152,
+            "added_mass": 160})
         self.check(lfem.PhaseTime, 16, {"seconds": 0, "calls": 8})
-        self.check(lfem.Profile, 184, {
+        self.check(lfem.Profile, 192, {
             "substeps": 0, "internal_forces": 8, "predictor": 24, "kinematic_motion": 40,
             "broad_phase": 56, "narrow_phase": 72, "shape_queries": 88, "shape_tests": 104,
             "ccd_queries": 112, "normal_solve": 120, "friction": 136, "global_rotation": 152,
-            "commit": 168})
+            "commit": 168, "candidate_searches": 184})
         self.check(lfem.BodyDef, 120, {
             "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,

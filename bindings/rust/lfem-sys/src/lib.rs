@@ -85,6 +85,8 @@ pub struct lfem_world_def {
     pub allow_unstable_step: u8,
     pub padding: [u8; 3],
     pub internal_value: u32,
+    pub padding2: u32,
+    pub mass_scaling_step: c_double,
 }
 
 /// Statistics of a world (lfem_world_stats): time, energies and momenta of the moving
@@ -128,6 +130,8 @@ pub struct lfem_world_stats {
     pub max_penetration: c_double,
     /// rad, largest angle between the global rotation integrated by eq. (2) and the one re-fitted to the nodes, last sub-step ("paper" model only, else 0).
     pub rotation_drift: c_double,
+    /// kg, added by mass scaling to every body.
+    pub added_mass: c_double,
 }
 
 /// Time (s) and count of one phase of the step (lfem_phase_time).
@@ -170,6 +174,9 @@ pub struct lfem_profile {
     pub global_rotation: lfem_phase_time,
     /// Velocities, contact forces, energy bookkeeping; calls: sub-steps.
     pub commit: lfem_phase_time,
+    /// How often contact searched for candidate faces anew (only when a body moved beyond the
+    /// margin of the last search, or the bodies changed).
+    pub candidate_searches: u64,
 }
 
 /// A body handle: a value, `{0, 0}` is the null handle.
@@ -237,11 +244,11 @@ const _: () = assert!(size_of::<lfem_body_type>() == 4);
 const _: () = assert!(size_of::<lfem_model>() == 4);
 const _: () = assert!(size_of::<lfem_shape_type>() == 4);
 const _: () = assert!(size_of::<lfem_body>() == 8);
-const _: () = assert!(size_of::<lfem_world_def>() == 72);
-const _: () = assert!(size_of::<lfem_world_stats>() == 160);
+const _: () = assert!(size_of::<lfem_world_def>() == 80);
+const _: () = assert!(size_of::<lfem_world_stats>() == 168);
 const _: () = assert!(size_of::<lfem_contact>() == 128);
 const _: () = assert!(size_of::<lfem_phase_time>() == 16);
-const _: () = assert!(size_of::<lfem_profile>() == 184);
+const _: () = assert!(size_of::<lfem_profile>() == 192);
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(size_of::<lfem_body_def>() == 120);
 #[cfg(target_pointer_width = "64")]
@@ -305,6 +312,7 @@ extern "C" {
         out: *mut *mut c_void,
     ) -> lfem_status;
     pub fn lfem_body_get_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
+    pub fn lfem_body_get_added_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
     pub fn lfem_body_get_momentum(
         world: *const lfem_world,
         body: lfem_body,

@@ -17,13 +17,13 @@ macro_rules! offset {
 #[test]
 fn sizes_match_c() {
     assert_eq!(size_of::<lfem_body>(), 8);
-    assert_eq!(size_of::<lfem_world_def>(), 72);
-    assert_eq!(size_of::<lfem_world_stats>(), 160);
+    assert_eq!(size_of::<lfem_world_def>(), 80);
+    assert_eq!(size_of::<lfem_world_stats>(), 168);
     assert_eq!(size_of::<lfem_body_def>(), 120);
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
     assert_eq!(size_of::<lfem_phase_time>(), 16);
-    assert_eq!(size_of::<lfem_profile>(), 184);
+    assert_eq!(size_of::<lfem_profile>(), 192);
     assert_eq!(align_of::<lfem_world_def>(), 8);
     assert_eq!(align_of::<lfem_body>(), 4);
 }
@@ -40,6 +40,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_world_def, max_substeps), 56);
     assert_eq!(offset!(lfem_world_def, allow_unstable_step), 60);
     assert_eq!(offset!(lfem_world_def, internal_value), 64);
+    assert_eq!(offset!(lfem_world_def, mass_scaling_step), 72);
 
     assert_eq!(offset!(lfem_world_stats, steps), 8);
     assert_eq!(offset!(lfem_world_stats, substeps_last_call), 32);
@@ -52,6 +53,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_world_stats, solver_iterations), 132);
     assert_eq!(offset!(lfem_world_stats, solver_residual), 136);
     assert_eq!(offset!(lfem_world_stats, rotation_drift), 152);
+    assert_eq!(offset!(lfem_world_stats, added_mass), 160);
 
     assert_eq!(offset!(lfem_phase_time, calls), 8);
     assert_eq!(offset!(lfem_profile, internal_forces), 8);
@@ -66,6 +68,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_profile, friction), 136);
     assert_eq!(offset!(lfem_profile, global_rotation), 152);
     assert_eq!(offset!(lfem_profile, commit), 168);
+    assert_eq!(offset!(lfem_profile, candidate_searches), 184);
 
     assert_eq!(offset!(lfem_body_def, model), 4);
     assert_eq!(offset!(lfem_body_def, young_modulus), 8);

@@ -227,6 +227,9 @@ pub struct WorldDef {
     pub max_substeps: u32,
     /// Skip the up-front stability check of a fixed time step, default false.
     pub allow_unstable_step: bool,
+    /// s; 0 (default) = off. Mass scaling: tets that would need a shorter sub-step get added
+    /// mass, so that the automatic step is at least this (see `lfem_world_def`).
+    pub mass_scaling_step: f64,
     internal_value: u32,
 }
 
@@ -243,6 +246,7 @@ impl Default for WorldDef {
             contact_tolerance: d.contact_tolerance,
             max_substeps: d.max_substeps,
             allow_unstable_step: d.allow_unstable_step != 0,
+            mass_scaling_step: d.mass_scaling_step,
             internal_value: d.internal_value,
         }
     }
@@ -261,6 +265,8 @@ impl WorldDef {
             allow_unstable_step: u8::from(self.allow_unstable_step),
             padding: [0; 3],
             internal_value: self.internal_value,
+            padding2: 0,
+            mass_scaling_step: self.mass_scaling_step,
         }
     }
 }
@@ -766,6 +772,14 @@ impl World {
         let mut out = 0.0;
         // SAFETY: live world, valid output.
         check(unsafe { sys::lfem_body_get_mass(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out)
+    }
+
+    /// The mass (kg) that mass scaling added to a body's nodes (`WorldDef::mass_scaling_step`).
+    pub fn added_mass(&self, body: Body) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_added_mass(self.ptr(), body.raw(), &mut out) })?;
         Ok(out)
     }
 

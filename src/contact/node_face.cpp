@@ -1,0 +1,184 @@
+// A slave node against one face of another body (a boundary triangle, eqs. 5 and 6) or one of
+// its rigid shapes: the tests the narrow phase runs on every candidate, and the constraint
+// record they make.
+#include "contact/node_face.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/detection_tolerances.h"
+#include "contact/warm_start.h"
+
+namespace lfem {
+namespace {
+
+// Barycentric weights (wa, wb, wc) of the projection of p onto the plane of triangle abc.
+void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double w[3]) {
+    const Vec3 e0 = b - a, e1 = c - a, d = p - a;
+    const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1);
+    const double d20 = d.dot(e0), d21 = d.dot(e1);
+    const double denom = d00 * d11 - d01 * d01;
+    w[1] = (d11 * d20 - d01 * d21) / denom;
+    w[2] = (d00 * d21 - d01 * d20) / denom;
+    w[0] = 1.0 - w[1] - w[2];
+}
+
+}  // namespace
+
+// Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
+// with less penetration than what best holds.
+void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal,
+                        const ContactBody& b, uint32_t t, double depth_allowance, NodeCandidate& best,
+                        NodeCandidate* deep) {
+    const uint32_t* tri = &b.triangles[3 * t];
+    if (a.slot == b.slot) return;  // self-contact is not handled here
+    const Vec3 pa = position(b.x, tri[0]), pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
+    const Vec3 qa = position(b.x_start, tri[0]), qb = position(b.x_start, tri[1]), qc = position(b.x_start, tri[2]);
+    const Vec3 n_end = (pb - pa).cross(pc - pa), n_start = (qb - qa).cross(qc - qa);
+    const double area2 = n_end.norm(), area2_start = n_start.norm();
+    if (!(area2 > 0.0) || !(area2_start > 0.0)) return;  // a collapsed face has no normal
+    const Vec3 n = n_end / area2;
+    // Surfaces in contact face each other. A face whose normal points the same way as the
+    // node's own surface normal is the far side of an edge the node sits on (a cube's corner
+    // node resting on another cube's top face also lies in the plane of its side face): taking
+    // it would push the node sideways off the edge. Convex edges thus keep the one right face.
+    // That choice is for a node at the face: one deeper than the residual depth behind it has
+    // passed it, whichever way its surface turns (a soft body's bulging side sinking into a
+    // floor), and an interior node (no surface around it: normal zero) faces every way.
+    const Vec3 x_end = position(a.x, p), x_start = position(a.x_start, p);
+    const double gap = n.dot(x_end - pa);
+    const double l = contact_length(a, b);
+    if (gap > kCaptureBand * l) return;
+    if (gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return;
+    const double start_gap = (n_start / area2_start).dot(x_start - qa);
+    NodeCandidate* slot = &best;
+    if (start_gap < -depth_allowance) {
+        // Deeper than the pair was left: only a possible initial overlap (checked later).
+        if (start_gap < -kInitialDepth * l || !deep) return;
+        slot = deep;
+    }
+    double w[3];
+    if (start_gap >= 0.0 && gap < 0.0) {
+        // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
+        // with the triangle moved by the same fraction of its own step.
+        const double s = start_gap / (start_gap - gap);
+        barycentric(x_start + s * (x_end - x_start), qa + s * (pa - qa), qb + s * (pb - qb),
+                    qc + s * (pc - qc), w);
+    } else {
+        barycentric(x_end, pa, pb, pc, w);  // at or behind the face: its projection
+    }
+    for (double wi : w)
+        if (!(wi >= -kEdgeTolerance)) return;
+    NodeCandidate& c = *slot;
+    if (c.found && gap <= c.gap) return;  // keep the face penetrated least
+    c.found = true;
+    c.triangle = t;
+    c.shape = UINT32_MAX;
+    c.gap = gap;
+    c.start_gap = start_gap;
+    c.normal = n;
+    // Clamp the weights into the triangle: the force goes to its nodes, never outside.
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) sum += (c.w[k] = std::max(0.0, w[k]));
+    for (int k = 0; k < 3; ++k) c.w[k] /= sum;
+}
+
+// Test node p of `a` against rigid shape j of `b`, same rules as for a triangle: within the
+// capture band at the end of the step, no deeper at its start than the pair was left, facing
+// the node's surface.
+// The queries are counted in `counts` (its shape_tests and ccd_queries).
+void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+                     uint32_t j, double depth_allowance, NodeCandidate& best, ShapeQueryCounts& counts) {
+    const RigidShape& shape = b.shapes[j];
+    const ShapePose pose_end = ShapePose::load(b.shape_pose + 7 * std::size_t(j));
+    const ShapePose pose_start = ShapePose::load(b.shape_pose_start + 7 * std::size_t(j));
+    const Vec3 x_end = position(a.x, p), x_start = position(a.x_start, p);
+    const double band = kCaptureBand * a.edge_length;
+    const double reach = shape_bounding_radius(shape) + band + (x_end - x_start).norm();
+    if ((x_end - pose_end.center).norm() > reach) return;  // far from a bounded shape
+    double gap, start_gap;
+    Vec3 n, n_start;
+    const uint64_t by_ccd = shape.type == LFEM_SHAPE_CONVEX_HULL;
+    counts.shape_tests += 1, counts.ccd_queries += by_ccd;
+    if (!shape_signed_distance(shape, pose_end, x_end, band, gap, n)) return;
+    // At the start the node may be anywhere along its path: ask with the whole path as reach.
+    const double path = (x_end - x_start).norm() + band;
+    counts.shape_tests += 1, counts.ccd_queries += by_ccd;
+    // A node that starts deeper than the pair was left is inside the solid shape all the same
+    // (a shape is convex and solid: no thin part to be beyond): it is pushed out, not forgotten.
+    const bool fallen = shape_signed_distance(shape, pose_start, x_start, path, start_gap, n_start) &&
+                        start_gap < -depth_allowance;
+    if (gap > -kResidualDepth * a.edge_length && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return;
+    if (best.found && gap <= best.gap) return;
+    best.found = true;
+    best.fallen = fallen;
+    best.shape = j;
+    best.gap = gap;
+    best.start_gap = std::min(0.0, start_gap);
+    best.normal = n;
+    best.point_end = x_end - gap * n;  // the nearest surface point
+    // The same material point of the shape at the start of the step.
+    best.point_start = pose_start.center +
+                       pose_start.rotation * (pose_end.rotation.conjugate() * (best.point_end - pose_end.center));
+}
+
+// The constraint of node p of `a` against the candidate face or shape of `b`, warm-started
+// from the pair's last record (nullable).
+ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b, const NodeCandidate& c,
+                          const ContactRecord* last) {
+    ContactRecord r;
+    if (last) warm_start(*last, r);
+    r.body_a = a.slot;
+    r.node = p;
+    r.body_b = b.slot;
+    r.shape = c.shape;
+    for (int k = 0; k < 3; ++k) {
+        r.triangle[k] = c.shape == UINT32_MAX ? b.triangles[3 * c.triangle + k] : UINT32_MAX;
+        r.normal[k] = c.normal[k];
+        r.point_start[k] = c.point_start[k];
+        r.point_end[k] = c.point_end[k];
+    }
+    // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c); a shape point: none
+    r.t2 = c.shape == UINT32_MAX ? c.w[1] : 0.0;
+    r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
+    // A node that starts the step inside is let out gradually (target gap < 0): by 20 % of
+    // the overlap per step, but never faster than 1e-3 of an edge per step, so bodies created
+    // deeply overlapping separate slowly instead of jumping apart; one found inside during the
+    // run (fallen in), never faster than 1e-2 of an edge. A pair in contact at the last step
+    // (and not letting out an overlap) has only the solve's residual to make up: at once.
+    const bool held = last && last->offset <= 0.0;
+    if (c.start_gap < 0.0 && !held) {
+        const double overlap = -c.start_gap;
+        const double l = c.shape == UINT32_MAX ? contact_length(a, b) : a.edge_length;
+        r.offset = overlap - std::min(kOverlapRecovery * overlap, (c.fallen ? kFallenRecovery : kMaxRecovery) * l);
+    }
+    return r;
+}
+
+bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t skip, const ContactBody& b,
+                          const TriangleBvh& tree, double drift) {
+    Aabb box;
+    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(from[k], to[k]), box.hi[k] = std::max(from[k], to[k]);
+    const Vec3 d = to - from;
+    bool crosses = false;
+    tree.query(box, b.x_start, b.triangles, drift, [&](uint32_t t) {
+        if (crosses || t == skip) return;
+        const uint32_t* tri = &b.triangles[3 * t];
+        const Vec3 v0 = position(b.x_start, tri[0]), e1 = position(b.x_start, tri[1]) - v0, e2 = position(b.x_start, tri[2]) - v0;
+        const Vec3 pv = d.cross(e2);
+        const double det = e1.dot(pv);
+        if (std::fabs(det) < 1e-300) return;
+        const Vec3 tv = from - v0;
+        const double u = tv.dot(pv) / det;
+        if (u < 0.0 || u > 1.0) return;
+        const Vec3 qv = tv.cross(e1);
+        const double v = d.dot(qv) / det;
+        if (v < 0.0 || u + v > 1.0) return;
+        const double s = e2.dot(qv) / det;
+        crosses = s > 1e-9 && s < 1.0 - 1e-9;
+    });
+    return crosses;
+}
+
+
+}  // namespace lfem

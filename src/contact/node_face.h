@@ -1,0 +1,59 @@
+// A slave node against one face of another body: a boundary triangle, by the path of the node
+// from x^n to x* and its projection onto the face (eqs. 5 and 6), or a rigid shape, by signed
+// distance. The narrow phase runs these on every candidate and keeps, per node and other body,
+// the face penetrated least; make_record turns it into the constraint of eq. (6).
+#pragma once
+
+#include <cstdint>
+
+#include "common/math.h"
+#include "contact/contact_body.h"
+#include "contact/contact_record.h"
+#include "contact/triangle_bvh.h"
+
+namespace lfem {
+
+inline Vec3 position(const double* x, uint32_t i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
+
+// The best face (or rigid shape) of another body found so far for one slave node.
+struct NodeCandidate {
+    bool found = false;
+    uint32_t triangle = 0;
+    uint32_t shape = UINT32_MAX;  // a rigid shape instead of a triangle
+    Vec3 point_start = Vec3::Zero(), point_end = Vec3::Zero();
+    double gap = 0;        // g* at the end of the step (m)
+    double start_gap = 0;  // g^n
+    double w[3] = {0, 0, 0};
+    Vec3 normal = Vec3::Zero();
+    bool fallen = false;   // found inside during the run, not among new bodies' overlaps
+};
+
+// The profile's counts of rigid-shape queries.
+struct ShapeQueryCounts {
+    uint64_t shape_tests = 0, ccd_queries = 0;
+};
+
+// Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in `best`
+// if it is a valid contact penetrated less than what best holds. A node that starts the step
+// deeper than depth_allowance behind the face is only a possible initial overlap: kept in
+// *deep (when given) for the caller to check.
+void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+                        uint32_t t, double depth_allowance, NodeCandidate& best, NodeCandidate* deep);
+
+// Node p of `a` against rigid shape j of `b`, by the same rules: within the capture band at the
+// end of the step, no deeper at its start than the pair was left, facing the node's surface.
+void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+                     uint32_t j, double depth_allowance, NodeCandidate& best, ShapeQueryCounts& counts);
+
+// The constraint of node p of `a` against the candidate face or shape of `b`, warm-started
+// from the pair's last record (nullable).
+ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b, const NodeCandidate& c,
+                          const ContactRecord* last);
+
+// Does the open segment from `from` to `to` cross a boundary triangle of body b other than
+// `skip`, at the start of the step? Möller-Trumbore against the triangles the tree (built on
+// positions up to `drift` per axis away from x_start) finds near the segment.
+bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t skip, const ContactBody& b,
+                          const TriangleBvh& tree, double drift);
+
+}  // namespace lfem
