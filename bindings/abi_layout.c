@@ -54,7 +54,7 @@ CHECK_OFFSET(lfem_profile, global_rotation, 152);
 CHECK_OFFSET(lfem_profile, commit, 168);
 CHECK_OFFSET(lfem_profile, candidate_searches, 184);
 
-CHECK_SIZE(lfem_world_stats, 168);
+CHECK_SIZE(lfem_world_stats, 184);
 CHECK_OFFSET(lfem_world_stats, time, 0);
 CHECK_OFFSET(lfem_world_stats, steps, 8);
 CHECK_OFFSET(lfem_world_stats, step_size, 16);
@@ -74,6 +74,15 @@ CHECK_OFFSET(lfem_world_stats, solver_residual, 136);
 CHECK_OFFSET(lfem_world_stats, max_penetration, 144);
 CHECK_OFFSET(lfem_world_stats, rotation_drift, 152);
 CHECK_OFFSET(lfem_world_stats, added_mass, 160);
+CHECK_OFFSET(lfem_world_stats, inverted_tets, 168);
+CHECK_OFFSET(lfem_world_stats, padding, 172);
+CHECK_OFFSET(lfem_world_stats, min_jacobian, 176);
+
+CHECK_SIZE(lfem_warning_kind, 4);
+CHECK_SIZE(lfem_warning, 24);
+CHECK_OFFSET(lfem_warning, count, 0);
+CHECK_OFFSET(lfem_warning, last_time, 8);
+CHECK_OFFSET(lfem_warning, last_body, 16);
 
 /* 64-bit targets (8-byte pointers), which every binding test runs on */
 CHECK_SIZE(void*, 8);
@@ -125,5 +134,6 @@ int main(void) {
            sizeof(lfem_world_def), sizeof(lfem_world_stats));
     printf("lfem_body_def %zu\nlfem_contact %zu\nlfem_shape_def %zu\n", sizeof(lfem_body_def),
            sizeof(lfem_contact), sizeof(lfem_shape_def));
+    printf("lfem_warning_kind %zu\nlfem_warning %zu\n", sizeof(lfem_warning_kind), sizeof(lfem_warning));
     return 0;
 }

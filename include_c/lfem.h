@@ -194,6 +194,13 @@ typedef struct lfem_world_stats {
                                  eq. (2) and the one re-fitted to the nodes, last sub-step
                                  ("paper" model only, else 0) */
     double added_mass;        /* kg, added by mass scaling to every body (world_def) */
+    uint32_t inverted_tets;   /* tets turned inside out (volume ratio J = det F <= 0) over the
+                                 deformable bodies after the last sub-step */
+    uint32_t padding;
+    double min_jacobian;      /* the smallest volume ratio J of their tets after the last
+                                 sub-step (1 without any). The materials resist crushing
+                                 without bound below J = 0.2, so J near 0 or below means a
+                                 body driven far past what its stiffness holds */
 } lfem_world_stats;
 
 LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_stats* out);
@@ -362,11 +369,44 @@ LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body,
 /* The mass (kg) that mass scaling added to the body's nodes (0 without mass scaling). */
 LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body body, double* out);
 
+/* The body's inverted tets after the last sub-step (J = det F <= 0), the smallest volume
+ * ratio J of its tets, and for how long (s) it has had inverted tets without a break (0 when
+ * it has none). 0, 1, 0 for a body that is not deformable. Each output is nullable. */
+LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body body, uint32_t* inverted_tets,
+                                             double* min_jacobian, double* inverted_for);
+
 /* Linear momentum (kg m/s) and angular momentum about the world origin (kg m^2/s) of the
  * body, from its synchronized velocities. Static and kinematic bodies report zero. Either
  * output is nullable. */
 LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body,
                                             double linear[3], double angular[3]);
+
+/* Warnings: trouble the step recovers from but the caller may want to know of, counted as
+ * MuJoCo counts its warnings (how often, when last, for which body). They never change the
+ * physics; they say where the scene asks more than the bodies or the settings give. */
+typedef enum lfem_warning_kind {
+    LFEM_WARNING_INVERTED_TETS = 0,  /* a sub-step ended with inverted tets in a body: once per
+                                        body and sub-step */
+    LFEM_WARNING_STAYS_INVERTED = 1, /* a body kept inverted tets for 0.5 s in a row: once per
+                                        spell (it is crushed harder than its material holds) */
+    LFEM_WARNING_FALLEN_IN = 2,      /* nodes found inside a static, kinematic or rigid body (or
+                                        a shape) during the run, pushed back out: once per node
+                                        and fall (not counted: overlaps of newly added bodies) */
+    LFEM_WARNING_UNCONVERGED = 3,    /* a contact solve used every one of contact_iterations
+                                        sweeps and ended above its tolerance (no body) */
+    LFEM_WARNING_KIND_COUNT = 4
+} lfem_warning_kind;
+
+typedef struct lfem_warning {
+    uint64_t count;      /* since the world was created or lfem_world_clear_warnings */
+    double last_time;    /* s, the simulated time of the last one (0 before any) */
+    lfem_body last_body; /* the body of the last one; the null handle when none is concerned
+                            (it may since have been destroyed: then stale) */
+} lfem_warning;
+
+LFEM_API lfem_status lfem_world_get_warning(const lfem_world* world, lfem_warning_kind kind, lfem_warning* out);
+/* Set every warning's count and last time back to zero. */
+LFEM_API lfem_status lfem_world_clear_warnings(lfem_world* world);
 
 /* Copy the current node positions (m) into out[3*node_capacity]. LFEM_BUFFER_TOO_SMALL when
  * node_capacity < node count (nothing written). */

@@ -40,6 +40,15 @@ namespace Lfem
         Rigid = 3,      // global translation and rotation alone, moved by forces and contacts
     }
 
+    /// <summary>lfem_warning_kind: what a warning counts.</summary>
+    public enum WarningKind : int
+    {
+        InvertedTets = 0,  // a sub-step ended with inverted tets in a body: once per body and sub-step
+        StaysInverted = 1, // a body kept inverted tets for 0.5 s in a row: once per spell
+        FallenIn = 2,      // nodes found inside a static, kinematic or rigid body, pushed out
+        Unconverged = 3,   // a contact solve used every sweep and ended above its tolerance
+    }
+
     public enum Model : int
     {
         Paper = 0,        // floating frame: one global rotation per body (eq. 2)
@@ -135,6 +144,28 @@ namespace Lfem
         public double MaxPenetration;   // m
         public double RotationDrift;    // rad
         public double AddedMass;        // kg, by mass scaling
+        public uint InvertedTets;       // tets with J = det F <= 0 after the last sub-step
+#pragma warning disable 0169 // padding
+        private uint padding;
+#pragma warning restore 0169
+        public double MinJacobian;      // the smallest volume ratio J of the tets (1 without any)
+    }
+
+    /// <summary>lfem_warning: how often, when last, for which body.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Warning
+    {
+        public ulong Count;      // since creation or World.ClearWarnings
+        public double LastTime;  // s, of the last one (0 before any)
+        public Body LastBody;    // Body.Null when none is concerned
+    }
+
+    /// <summary>A body's inverted tets after the last sub-step (lfem_body_get_inversion).</summary>
+    public struct Inversion
+    {
+        public uint InvertedTets;  // tets with J = det F <= 0
+        public double MinJacobian; // the smallest J
+        public double InvertedFor; // s, inverted without a break (0 when none)
     }
 
     /// <summary>lfem_phase_time: wall time (s) and run count of one phase of the step.</summary>
@@ -416,6 +447,14 @@ namespace Lfem
 
         public void ResetProfile() { LfemException.Check(Native.lfem_world_reset_profile(handle)); }
 
+        /// <summary>One warning counter (lfem_world_get_warning).</summary>
+        public Warning GetWarning(WarningKind kind)
+        {
+            Warning w; LfemException.Check(Native.lfem_world_get_warning(handle, kind, out w)); return w;
+        }
+
+        public void ClearWarnings() { LfemException.Check(Native.lfem_world_clear_warnings(handle)); }
+
         // ---- bodies ----
 
         public Body CreateBody(BodyDef def)
@@ -515,6 +554,15 @@ namespace Lfem
         public double AddedMass(Body body)
         {
             double m; LfemException.Check(Native.lfem_body_get_added_mass(handle, body, out m)); return m;
+        }
+
+        /// <summary>The body's inverted tets, smallest volume ratio and time inverted.</summary>
+        public Inversion GetInversion(Body body)
+        {
+            Inversion r;
+            LfemException.Check(Native.lfem_body_get_inversion(handle, body, out r.InvertedTets, out r.MinJacobian,
+                                                               out r.InvertedFor));
+            return r;
         }
 
         /// <summary>Linear momentum (kg m/s) and angular momentum about the origin (kg m^2/s).</summary>
@@ -872,6 +920,9 @@ namespace Lfem
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_mass(WorldHandle world, Body body, out double mass);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_added_mass(WorldHandle world, Body body, out double mass);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_inversion(WorldHandle world, Body body, out uint invertedTets, out double minJacobian, out double invertedFor);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_warning(WorldHandle world, WarningKind kind, out Warning warning);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_clear_warnings(WorldHandle world);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_momentum(WorldHandle world, Body body, out Vec3 linear, out Vec3 angular);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_positions(WorldHandle world, Body body, [Out] Vec3[] positions, uint nodeCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_velocities(WorldHandle world, Body body, [Out] Vec3[] velocities, uint nodeCapacity);

@@ -209,6 +209,19 @@ LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body
     return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.added_mass; });
 }
 
+LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body body, uint32_t* inverted_tets,
+                                             double* min_jacobian, double* inverted_for) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        const Body& b = w.body(body);
+        const bool deformable = b.is_deformable() && b.has_mesh();
+        const BodyState& s = b.state;
+        if (inverted_tets) *inverted_tets = deformable ? s.inverted_tets : 0;
+        if (min_jacobian) *min_jacobian = deformable ? s.min_jacobian : 1.0;
+        if (inverted_for) *inverted_for = deformable && s.inverted_since >= 0.0 ? w.counters().time - s.inverted_since : 0.0;
+    });
+}
+
 LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body, double linear[3],
                                             double angular[3]) {
     return guard(__func__, [&] {

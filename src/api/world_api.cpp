@@ -61,6 +61,8 @@ lfem_world_stats stats_of(const World& w) {
     for (int k = 0; k < 3; ++k) st.linear_momentum[k] = t.linear_momentum[k], st.angular_momentum[k] = t.angular_momentum[k];
     st.energy_error = t.energy_error;
     st.added_mass = t.added_mass;
+    st.inverted_tets = t.inverted_tets;
+    st.min_jacobian = t.min_jacobian;
     return st;
 }
 
@@ -188,6 +190,25 @@ LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profil
 
 LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world) {
     return guard(__func__, [&] { world_of(world).reset_profile(); });
+}
+
+LFEM_API lfem_status lfem_world_get_warning(const lfem_world* world, lfem_warning_kind kind, lfem_warning* out) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(out, "out");
+        const Warnings& all = w.counters().warnings;
+        const Warning* by_kind[] = {&all.inverted_tets, &all.stays_inverted, &all.fallen_in, &all.unconverged};
+        static_assert(sizeof(by_kind) / sizeof(by_kind[0]) == LFEM_WARNING_KIND_COUNT, "a warning without its kind");
+        const int k = int(kind);
+        require(k >= 0 && k < LFEM_WARNING_KIND_COUNT,
+                "kind must be an lfem_warning_kind below LFEM_WARNING_KIND_COUNT, got " + std::to_string(k));
+        const Warning& x = *by_kind[k];
+        *out = lfem_warning{x.count, x.last_time, lfem_body{x.last_slot, x.last_generation}};
+    });
+}
+
+LFEM_API lfem_status lfem_world_clear_warnings(lfem_world* world) {
+    return guard(__func__, [&] { world_of(world).clear_warnings(); });
 }
 
 }  // extern "C"

@@ -117,9 +117,11 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         }
     }
     for (std::size_t k = 0; k < block.touched.size(); ++k) {
-        if (!block.best[k].found) continue;
-        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], block.best[k], block.last[k]));
-        if (in.any_shapes) block.record_gap.push_back(block.best[k].gap);
+        const NodeCandidate& best = block.best[k];
+        if (!best.found) continue;
+        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], best, block.last[k]));
+        if (best.fallen) block.fallen.add(FallenIn{1, a.slot});
+        if (in.any_shapes) block.record_gap.push_back(best.gap), block.record_fallen.push_back(best.fallen);
     }
 }
 
@@ -133,7 +135,9 @@ void test_block_triangles(const NarrowInput& in, uint32_t b, DetectionBlock& blo
     block.records.clear();
     block.record_begin.clear();
     block.record_gap.clear();
+    block.record_fallen.clear();
     block.counts = ShapeQueryCounts{};
+    block.fallen = FallenIn{};
     const uint32_t first = b * kSlaveBlock, end = std::min(uint32_t(c.body.size()), (b + 1) * kSlaveBlock);
     PreviousRecords previous(in.previous);
     previous.seek(in.bodies[c.body[first]].slot, c.node[first]);
@@ -177,6 +181,9 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block,
             if (in.scan_overlaps) best.fallen = false;  // an overlap of new bodies: let out gently
             if (best.found && best.shape != UINT32_MAX) {
                 block.merged.push_back(make_record(a, p, o, best, last));
+                // The shape's fall replaces the triangle's, counted by the triangle pass.
+                if (has_triangle && block.record_fallen[next]) block.fallen.nodes -= 1;
+                if (best.fallen) block.fallen.add(FallenIn{1, a.slot});
                 next += has_triangle;  // replaced by the shape
             } else if (has_triangle) {
                 block.merged.push_back(found[next++]);
@@ -189,7 +196,8 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block,
 
 // The blocks' records joined in block order, which is the list's order; their counts added
 // to the profile in the same order.
-void join_blocks(const DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out, lfem_profile& profile) {
+FallenIn join_blocks(const DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out, lfem_profile& profile) {
+    FallenIn fallen;
     std::size_t total = out.size();
     for (uint32_t b = 0; b < blocks; ++b) total += s.blocks[b].records.size();
     out.reserve(total);
@@ -198,12 +206,14 @@ void join_blocks(const DetectionScratch& s, uint32_t blocks, std::vector<Contact
         out.insert(out.end(), block.records.begin(), block.records.end());
         profile.shape_tests += block.counts.shape_tests;
         profile.ccd_queries += block.counts.ccd_queries;
+        fallen.add(block.fallen);
     }
+    return fallen;
 }
 
 }  // namespace
 
-void detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vector<ContactRecord>& previous,
+FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vector<ContactRecord>& previous,
                           bool scan_overlaps, DetectionScratch& s, std::vector<ContactRecord>& out,
                           lfem_profile& profile, ThreadPool* pool) {
     out.clear();
@@ -218,7 +228,7 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vec
         }
     }
     const uint32_t nodes = uint32_t(c.body.size());
-    if (nodes == 0) return;
+    if (nodes == 0) return FallenIn{};
     const bool any_shapes = !c.shapes.empty();
     // Narrow phase: every candidate node against its candidate triangles, in blocks on the
     // pool, each block writing only its own records and scratch.
@@ -232,12 +242,11 @@ void detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vec
     {
         PhaseTimer timer(profile.narrow_phase);
         parallel_for(pool, blocks, [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], normals, ready); });
-        if (!any_shapes) join_blocks(s, blocks, out, profile);
+        if (!any_shapes) return join_blocks(s, blocks, out, profile);
     }
-    if (!any_shapes) return;
     PhaseTimer timer(profile.shape_queries);
     parallel_for(pool, blocks, [&](uint32_t b) { test_block_shapes(in, b, s.blocks[b], normals, ready); });
-    join_blocks(s, blocks, out, profile);
+    return join_blocks(s, blocks, out, profile);
 }
 
 }  // namespace lfem

@@ -16,6 +16,17 @@
 
 namespace lfem {
 
+// Nodes found inside a static, kinematic or rigid body (or a shape) during the run, to be
+// pushed out: how many, and the slot of the body of the last one (in the list's order).
+struct FallenIn {
+    uint64_t nodes = 0;
+    uint32_t last_slot = UINT32_MAX;
+    void add(const FallenIn& o) {
+        nodes += o.nodes;
+        if (o.nodes) last_slot = o.last_slot;
+    }
+};
+
 // One block of consecutive candidate nodes (cut into blocks of a fixed size): its own records
 // and scratch, so that blocks run in parallel on the pool and their records are joined in block
 // order, the list's order (body, node, other body). Kept between steps, so the vectors are
@@ -26,10 +37,12 @@ struct DetectionBlock {
     // of each record.
     std::vector<uint32_t> record_begin;
     std::vector<double> record_gap;
+    std::vector<uint8_t> record_fallen;       // shape pass: the record is of a node fallen in
     std::vector<uint32_t> touched;            // bodies with a candidate for the current node
     std::vector<NodeCandidate> best, deep;    // per touched body
     std::vector<const ContactRecord*> last;   // per touched body: the pair's last record
     ShapeQueryCounts counts;                  // the profile's counts, added in block order
+    FallenIn fallen;                          // of the block's records
 };
 
 struct DetectionScratch {
@@ -49,8 +62,8 @@ struct DetectionScratch {
 // candidate search (broad phase), the node-triangle tests (narrow phase) and the rigid-shape
 // queries are added to `profile`. The tests run in blocks on the pool when one is given; the
 // list and the counts are bitwise the same for any number of threads, and whether or not the
-// candidates were searched for again.
-void detect_node_triangle(const std::vector<ContactBody>& bodies,
+// candidates were searched for again. Returns the nodes found fallen in (a warning).
+FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies,
                           const std::vector<ContactRecord>& previous, bool scan_overlaps,
                           DetectionScratch& scratch, std::vector<ContactRecord>& out,
                           lfem_profile& profile, ThreadPool* pool = nullptr);

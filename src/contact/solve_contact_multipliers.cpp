@@ -338,11 +338,13 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
 
     // Iterations and residual of the slowest group to converge, the deepest penetration.
     ContactSolveResult result;
+    result.converged = true;
     double seconds = 0.0, friction_seconds = 0.0;
     bool any_friction = false;
     for (const GroupResult& g : results) {
         result.iterations = std::max(result.iterations, g.solve.iterations);
         result.residual = std::max(result.residual, g.solve.residual);
+        result.converged = result.converged && g.solve.residual <= tolerance;
         result.max_penetration = std::max(result.max_penetration, g.solve.max_penetration);
         seconds += g.seconds;
         friction_seconds += g.friction_seconds;

@@ -35,6 +35,7 @@ struct ContactSolveResult {
     uint32_t iterations = 0;
     double residual = 0;         // m, largest correction made by the last sweep
     double max_penetration = 0;  // m, deepest remaining penetration (beyond kept offsets)
+    bool converged = true;       // every group ended within the tolerance
 };
 
 // `body_of_slot[s]` is the index in `bodies` of the body in world slot s. Records carry warm

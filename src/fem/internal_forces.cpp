@@ -10,6 +10,7 @@
 #include "fem/polar_rotation.h"
 #include "fem/quadratic_forces.h"
 #include "fem/tet_element.h"
+#include "fem/volume_barrier.h"
 
 namespace lfem {
 namespace {
@@ -40,7 +41,27 @@ struct Batch {
     double P[9][kLanes];      // first Piola-Kirchhoff stress, row-major
     double psi[kLanes];       // energy density
     double tangent[kLanes];   // neo-Hookean: the tangent estimate (neo_hookean_tangent.h)
+    double J[kLanes];         // det F, the tet's volume ratio (<= 0: turned inside out)
 };
+
+// What a block of tets gives besides its forces.
+struct BlockResult {
+    double energy = 0;     // J, strain energy
+    double tangent = 0;    // the largest tangent estimate (a model with kTangent)
+    uint32_t inverted = 0; // tets with J <= 0
+    double min_J = HUGE_VAL;
+};
+
+// J = det F of every lane; with displacement edges the batch holds grad u, and F = I + grad u.
+template <bool displacement_edges>
+LFEM_INLINE void volume_ratios(Batch& b) {
+    for (int l = 0; l < kLanes; ++l) {
+        const double i = displacement_edges ? 1.0 : 0.0;
+        const double f00 = b.F[0][l] + i, f11 = b.F[4][l] + i, f22 = b.F[8][l] + i;
+        b.J[l] = f00 * (f11 * f22 - b.F[5][l] * b.F[7][l]) - b.F[1][l] * (b.F[3][l] * f22 - b.F[5][l] * b.F[6][l]) +
+                 b.F[2][l] * (b.F[3][l] * b.F[7][l] - f11 * b.F[6][l]);
+    }
+}
 
 // Gradient of the motion: F = D Dm^-1 (Dm_inv column-major: M[k][c] = m[k + 3c]).
 LFEM_INLINE void deformation_gradient(Batch& b) {
@@ -93,8 +114,10 @@ LFEM_INLINE void neo_hookean_lane(const double (*F)[kLanes], double mu, double l
     const double J = a0 * k00 + a1 * k10 + a2 * k20;
     const double sq = a0 * a0 + a1 * a1 + a2 * a2 + b0 * b0 + b1 * b1 + b2 * b2 + c0 * c0 +
                       c1 * c1 + c2 * c2;
-    psi[l] = 0.5 * mu * (sq - 3.0) - mu * (J - 1.0) + 0.5 * lam * (J - 1.0) * (J - 1.0);
-    const double s = lam * (J - 1.0) - mu;
+    double barrier, barrier_d1, barrier_d2;  // volume_barrier.h: only below J_b
+    volume_barrier(J, lam, barrier, barrier_d1, barrier_d2);
+    psi[l] = 0.5 * mu * (sq - 3.0) - mu * (J - 1.0) + 0.5 * lam * (J - 1.0) * (J - 1.0) + barrier;
+    const double s = lam * (J - 1.0) - mu + barrier_d1;
     P[0][l] = mu * a0 + s * k00, P[1][l] = mu * b0 + s * k01, P[2][l] = mu * c0 + s * k02;
     P[3][l] = mu * a1 + s * k10, P[4][l] = mu * b1 + s * k11, P[5][l] = mu * c1 + s * k12;
     P[6][l] = mu * a2 + s * k20, P[7][l] = mu * b2 + s * k21, P[8][l] = mu * c2 + s * k22;
@@ -102,16 +125,22 @@ LFEM_INLINE void neo_hookean_lane(const double (*F)[kLanes], double mu, double l
 
 // What a material model computes per batch: P and psi from F (and the tets' indices).
 // kTangent: the model also estimates each tet's tangent stiffness, whose largest value the
-// loop keeps (the stable step follows it).
-struct LinearModel {
-    static constexpr bool kTangent = false;
+// loop keeps (the stable step follows it). kBarrier: the loop adds the volume barrier
+// (volume_barrier.h) to P and psi, and keeps the largest stiffness it adds in tangent; the
+// neo-Hookean energy has it inside, and the reference stiffness K (apply_reference_stiffness)
+// is Hooke's law alone.
+struct HookeModel {
+    static constexpr bool kTangent = false, kBarrier = false;
     Lame lame;
     LFEM_INLINE void operator()(Batch& b, uint32_t) const {
         for (int l = 0; l < kLanes; ++l) hooke_lane(b.F, lame, b.P, b.psi, l);
     }
 };
+struct LinearModel : HookeModel {
+    static constexpr bool kBarrier = true;
+};
 struct PaperModel {
-    static constexpr bool kTangent = false;
+    static constexpr bool kTangent = false, kBarrier = true;
     Lame lame;
     double R[9];  // the body's global rotation, row-major
     LFEM_INLINE void operator()(Batch& b, uint32_t) const {
@@ -119,7 +148,7 @@ struct PaperModel {
     }
 };
 struct NeoHookeanModel {
-    static constexpr bool kTangent = true;
+    static constexpr bool kTangent = true, kBarrier = false;
     double mu, lam;
     LFEM_INLINE void operator()(Batch& b, uint32_t) const {
         for (int l = 0; l < kLanes; ++l) neo_hookean_lane(b.F, mu, lam, b.P, b.psi, l);
@@ -131,7 +160,7 @@ struct NeoHookeanModel {
     }
 };
 struct CorotationalModel {
-    static constexpr bool kTangent = false;
+    static constexpr bool kTangent = false, kBarrier = true;
     Lame lame;
     float* rotations;  // 4 per tet, warm start, updated
     // The Newton step of extract_rotation_fast (polar_rotation.h), once, for every lane at the
@@ -173,6 +202,20 @@ struct CorotationalModel {
     }
 };
 
+// The volume barrier of every lane that is crushed below J_b (rare: a branch, not SIMD);
+// tangent: the stiffness it adds, 0 in the others.
+template <bool displacement_edges>
+LFEM_INLINE void volume_barrier_lanes(Batch& b, const Lame& lame) {
+    for (int l = 0; l < kLanes; ++l) {
+        b.tangent[l] = 0.0;
+        if (!(b.J[l] < kBarrierJ)) continue;
+        double F[9], P[9];
+        for (int i = 0; i < 9; ++i) F[i] = b.F[i][l] + (displacement_edges && i % 4 == 0 ? 1.0 : 0.0), P[i] = b.P[i][l];
+        b.tangent[l] = add_volume_barrier(F, lame.lambda + lame.mu, P, b.psi[l]);
+        for (int i = 0; i < 9; ++i) b.P[i][l] = P[i];
+    }
+}
+
 struct LoopData {
     const double* x;
     const double* X;
@@ -184,15 +227,15 @@ struct LoopData {
     uint32_t block_size;
 };
 
-// One block of tets: gather, kernel, scatter; returns the block's strain energy (and, for a
-// model with kTangent, its largest tangent estimate in *tangent). Compiled for
+// One block of tets: gather, kernel, scatter; returns the block's strain energy, its inverted
+// tets and smallest volume ratio (and, for a model with kTangent, its largest tangent estimate). Compiled for
 // AVX-512, AVX2 and baseline x86-64, chosen at load time by the CPU (GCC function clones). The
 // results are bitwise the same on each: this file is built with -ffp-contract=off (no a*b+c
 // fused into one rounding), so every clone rounds every operation alike.
 template <bool displacement_edges, class Model>
-LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const Model& model,
-                                      double* tangent) {
+LFEM_SIMD_CLONES BlockResult element_block(const LoopData& d, uint32_t block, const Model& model) {
     Batch b;
+    BlockResult out;
     double energy = 0.0, worst = 0.0;
     const uint32_t e_end = std::min(d.tet_count, (block + 1) * d.block_size);
     for (uint32_t e0 = block * d.block_size; e0 < e_end; e0 += kLanes) {
@@ -228,7 +271,9 @@ LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const M
             b.V[l] = d.volume[e];
         }
         deformation_gradient(b);
+        volume_ratios<displacement_edges>(b);
         model(b, e0);
+        if constexpr (Model::kBarrier) volume_barrier_lanes<displacement_edges>(b, model.lame);
         // f_int_a = V P grad N_a with grad N_a the rows of Dm^-1 (a = 1..3) and node 0 the
         // negative sum; the elastic force is its negative.
         double G[9][kLanes];  // G[3r + a-1]: force component r on node a
@@ -243,7 +288,9 @@ LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const M
         for (int l = 0; l < b.n; ++l) {
             const uint32_t* t = d.tets + 4 * std::size_t(e0 + l);
             energy += b.V[l] * b.psi[l];
-            if constexpr (Model::kTangent) worst = std::max(worst, b.tangent[l]);  // drops a NaN
+            if constexpr (Model::kTangent || Model::kBarrier) worst = std::max(worst, b.tangent[l]);  // drops a NaN
+            out.inverted += !(b.J[l] > 0.0);
+            out.min_J = std::min(out.min_J, b.J[l]);
             for (int r = 0; r < 3; ++r) {
                 const double g1 = G[3 * r][l], g2 = G[3 * r + 1][l], g3 = G[3 * r + 2][l];
                 d.f[3 * std::size_t(t[1]) + r] += g1;
@@ -253,8 +300,9 @@ LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const M
             }
         }
     }
-    if constexpr (Model::kTangent) *tangent = worst;
-    return energy;
+    out.energy = energy;
+    out.tangent = worst;
+    return out;
 }
 
 // The element loop shared by every model, parallel over the colours of element blocks (see
@@ -262,27 +310,30 @@ LFEM_SIMD_CLONES double element_block(const LoopData& d, uint32_t block, const M
 // each node sums its contributions in the same order for any thread count. The strain energy
 // is summed per block, then over the blocks in index order, for the same reason. A model with
 // kTangent also gives its largest tangent estimate over the tets (a maximum: exact in any
-// order) in *tangent.
+// order), and every model its inverted tets and smallest volume ratio.
 template <bool displacement_edges, class Model>
-double element_loop(const ElementMesh& mesh, const double* x, double* f, ThreadPool* pool,
-                    const Model& model, double* tangent = nullptr) {
+BlockResult element_loop(const ElementMesh& mesh, const double* x, double* f, ThreadPool* pool,
+                         const Model& model) {
     std::fill(f, f + 3 * std::size_t(mesh.node_count()), 0.0);
     const ElementColouring& colouring = *mesh.colouring;
     const LoopData d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.volume.data(),
                      f, mesh.tet_count(), colouring.block_size};
-    std::vector<double> block_energy(colouring.block_count(), 0.0);
-    std::vector<double> block_tangent(Model::kTangent ? colouring.block_count() : 0, 0.0);
+    std::vector<BlockResult> per_block(colouring.block_count());
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
         const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
         parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c], [&](uint32_t i) {
-            double* t = Model::kTangent ? &block_tangent[blocks[i]] : nullptr;
-            block_energy[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model, t);
+            per_block[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model);
         });
     }
-    double energy = 0.0;
-    for (double e : block_energy) energy += e;
-    if (tangent) *tangent = block_tangent.empty() ? 0.0 : *std::max_element(block_tangent.begin(), block_tangent.end());
-    return energy;
+    BlockResult total;
+    total.energy = 0.0;
+    for (const BlockResult& r : per_block) {
+        total.energy += r.energy;
+        total.tangent = std::max(total.tangent, r.tangent);
+        total.inverted += r.inverted;
+        total.min_J = std::min(total.min_J, r.min_J);
+    }
+    return total;
 }
 
 // The forces of one body's state: strain energy and (a model with kTangent) the stiffening of
@@ -290,14 +341,21 @@ double element_loop(const ElementMesh& mesh, const double* x, double* f, ThreadP
 template <bool displacement_edges, class Model>
 ElasticResult elastic_forces(const ElementMesh& mesh, const ElasticState& state, ThreadPool* pool,
                              const Model& model) {
-    double tangent = 0.0;
+    const BlockResult r = element_loop<displacement_edges>(mesh, state.x.data(), state.force.data(), pool, model);
     ElasticResult out;
-    out.strain_energy = element_loop<displacement_edges>(mesh, state.x.data(), state.force.data(), pool,
-                                                         model, &tangent);
+    out.strain_energy = r.energy;
+    out.inverted_tets = r.inverted;
+    out.min_jacobian = r.min_J < HUGE_VAL ? r.min_J : 1.0;  // (no tets: nothing crushed)
     out.stiffening = 1.0;
     if constexpr (Model::kTangent) {
         const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, model.mu, model.lam);
-        out.stiffening = std::max(1.0, tangent / at_rest);
+        out.stiffening = std::max(1.0, r.tangent / at_rest);
+    } else if constexpr (Model::kBarrier) {
+        // The barrier's stiffness on top of Hooke's (whose largest tangent eigenvalue is that
+        // of the neo-Hookean at rest, 3 lambda + 2 mu): the stable step follows a crushed tet.
+        const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, model.lame.mu,
+                                                            model.lame.lambda + model.lame.mu);
+        out.stiffening = 1.0 + r.tangent / at_rest;
     }
     return out;
 }
@@ -310,7 +368,7 @@ ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& ma
     const Lame lame = material.lame;
     switch (material.model) {
         case LFEM_MODEL_LINEAR:
-            return elastic_forces<true>(mesh, state, pool, LinearModel{lame});
+            return elastic_forces<true>(mesh, state, pool, LinearModel{{lame}});
         case LFEM_MODEL_PAPER: {
             // Floating frame: strain measured in the body's rotated frame, R^T F - I; the
             // translation of the frame drops out because the gradients of N sum to zero.
@@ -334,7 +392,7 @@ void apply_reference_stiffness(const ElementMesh& mesh, const Lame& lame, const 
                                double* y, ThreadPool* pool) {
     if (mesh.nodes_per_tet == kQuadraticTetNodes) return apply_quadratic_reference_stiffness(mesh, lame, u, y, pool);
     // The linear kernel on the edges of u gives -K u.
-    element_loop<false>(mesh, u, y, pool, LinearModel{lame});
+    element_loop<false>(mesh, u, y, pool, HookeModel{lame});
     for (std::size_t i = 0; i < 3 * std::size_t(mesh.node_count()); ++i) y[i] = -y[i];
 }
 

@@ -21,6 +21,8 @@ struct ElasticResult {
     double strain_energy = 0;  // J, at x
     double stiffening = 1;     // neo-Hookean: how much stiffer the stiffest tet is than at rest
                                // (>= 1; neo_hookean_tangent.h); 1 for the other models
+    uint32_t inverted_tets = 0;  // tets turned inside out at x (volume ratio J = det F <= 0)
+    double min_jacobian = 1;     // the smallest J of the body's tets at x
 };
 
 // Overwrites state.force with the elastic forces at state.x. Corotational bodies update their

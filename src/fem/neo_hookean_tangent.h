@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fem/volume_barrier.h"
+
 namespace lfem {
 
 // T[D, D] = mu |D|^2 + lam' (cof F : D)^2 + c d2J[D, D], c = lam' (J - 1) - mu, lam' = lambda
@@ -26,12 +28,16 @@ inline double neo_hookean_tangent_estimate(double a0, double a1, double a2, doub
     const double k01 = c1 * a2 - c2 * a1, k11 = c2 * a0 - c0 * a2, k21 = c0 * a1 - c1 * a0;
     const double k02 = a1 * b2 - a2 * b1, k12 = a2 * b0 - a0 * b2, k22 = a0 * b1 - a1 * b0;
     const double J = a0 * k00 + a1 * k10 + a2 * k20;
-    const double c = lam * (J - 1.0) - mu;
+    // The volume barrier (volume_barrier.h) adds psi_b'' to the coefficient of (cof F : D)^2
+    // and psi_b' to that of d2J[D, D].
+    double barrier, barrier_d1, barrier_d2;
+    volume_barrier(J, lam, barrier, barrier_d1, barrier_d2);
+    const double c = lam * (J - 1.0) - mu + barrier_d1;
     const double cof2 = k00 * k00 + k10 * k10 + k20 * k20 + k01 * k01 + k11 * k11 + k21 * k21 +
                         k02 * k02 + k12 * k12 + k22 * k22;
     const double aa = a0 * a0 + a1 * a1 + a2 * a2, bb = b0 * b0 + b1 * b1 + b2 * b2,
                  cc = c0 * c0 + c1 * c1 + c2 * c2;
-    const double scaling = mu + lam * cof2 + (cof2 > 0.0 ? 2.0 * c * J * (aa + bb + cc) / cof2 : 0.0);
+    const double scaling = mu + (lam + barrier_d2) * cof2 + (cof2 > 0.0 ? 2.0 * c * J * (aa + bb + cc) / cof2 : 0.0);
     // Gershgorin rows of C = F^T F, C_ij = f_i . f_j.
     const double ab = std::fabs(a0 * b0 + a1 * b1 + a2 * b2), ac = std::fabs(a0 * c0 + a1 * c1 + a2 * c2),
                  bc = std::fabs(b0 * c0 + b1 * c1 + b2 * c2);

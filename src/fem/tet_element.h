@@ -9,6 +9,7 @@
 
 #include "common/math.h"
 #include "fem/material.h"
+#include "fem/volume_barrier.h"
 
 namespace lfem {
 
@@ -34,8 +35,9 @@ inline Mat3 hooke_stress(const Mat3& H, const Lame& l, double* energy_density) {
 
 // Stable neo-Hookean (Smith, de Goes & Kim 2018, without the log term):
 // psi = mu/2 (tr(F^T F) - 3) - mu (J - 1) + lambda'/2 (J - 1)^2 with lambda' = lambda + mu, so
-// that its linearisation at F = I is exactly Hooke's law with (mu, lambda). Defined for
-// inverted elements (J <= 0), which push back instead of producing NaN.
+// that its linearisation at F = I is exactly Hooke's law with (mu, lambda), plus the volume
+// barrier of volume_barrier.h below J = 0.2 (its own volume term is finite at J = 0). Defined
+// for inverted elements (J <= 0), which push back instead of producing NaN.
 inline Mat3 neo_hookean_stress(const Mat3& F, const Lame& l, double* energy_density) {
     const double J = F.determinant();
     Mat3 cof;  // cofactor matrix dJ/dF
@@ -43,10 +45,12 @@ inline Mat3 neo_hookean_stress(const Mat3& F, const Lame& l, double* energy_dens
     cof.col(1) = F.col(2).cross(F.col(0));
     cof.col(2) = F.col(0).cross(F.col(1));
     const double lam = l.lambda + l.mu;
+    double barrier, barrier_d1, barrier_d2;  // below J_b only (volume_barrier.h)
+    volume_barrier(J, lam, barrier, barrier_d1, barrier_d2);
     if (energy_density)
         *energy_density = 0.5 * l.mu * (F.squaredNorm() - 3.0) - l.mu * (J - 1.0) +
-                          0.5 * lam * (J - 1.0) * (J - 1.0);
-    return l.mu * F + (lam * (J - 1.0) - l.mu) * cof;
+                          0.5 * lam * (J - 1.0) * (J - 1.0) + barrier;
+    return l.mu * F + (lam * (J - 1.0) - l.mu + barrier_d1) * cof;
 }
 
 // Von Mises equivalent of a (symmetric) Cauchy stress.

@@ -64,6 +64,9 @@ struct BodyState {
                                        // empty while the body touches nothing
     double h_last = 0;             // size of the last step (s); 0 = no step since a reset
     double strain_energy = 0;      // J, at x
+    uint32_t inverted_tets = 0;    // tets turned inside out at x (J <= 0)
+    double min_jacobian = 1;       // the smallest volume ratio J of the tets at x
+    double inverted_since = -1;    // s: when the body's tets last began to be inverted (-1: none are)
     double stiffening = 1;         // neo-Hookean: how much stiffer the stiffest tet is at x than
                                    // at rest (>= 1; neo_hookean_tangent.h); 1 for the others
     GlobalMotion global;           // paper model: frame rotation and L of eq. (2); rigid: the
@@ -133,6 +136,8 @@ inline void update_elastic_forces(const Body& b, BodyState& s, ThreadPool* pool)
         compute_elastic_forces(element_mesh(b.ref), material_of(b), elastic_state(s, s.elastic, s.tet_rotation), pool);
     s.strain_energy = r.strain_energy;
     s.stiffening = r.stiffening;
+    s.inverted_tets = r.inverted_tets;
+    s.min_jacobian = r.min_jacobian;
 }
 
 inline NodeLoads node_loads(const Body& b, const double gravity[3]) {

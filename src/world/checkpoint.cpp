@@ -22,10 +22,11 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 5;  // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 6;  // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
-                                        // 5: 10-node tets (nodes per tet, quadrature volumes,
+                                        // 5: inverted tets and the warnings
+                                        // 6: 10-node tets (nodes per tet, quadrature volumes,
                                         // 6-node faces)
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
@@ -35,8 +36,8 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 #if defined(__x86_64__) || defined(__aarch64__)
 static_assert(sizeof(BodyReference) == 624,  // colouring, node-triangle lists, tree: derived
               "BodyReference changed: update the checkpoint");
-static_assert(sizeof(BodyState) == 272, "BodyState changed: update the checkpoint");
-static_assert(sizeof(WorldCounters) == 96, "WorldCounters changed: update the checkpoint");
+static_assert(sizeof(BodyState) == 296, "BodyState changed: update the checkpoint");
+static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
 #endif
@@ -114,6 +115,8 @@ void counter_fields(A& a, C& c) {
     a(c.time), a(c.steps), a(c.step_size), a(c.substeps_last_call), a(c.external_work);
     a(c.dissipated_energy), a(c.initial_energy), a(c.rotation_drift), a(c.solver_iterations);
     a(c.solver_residual), a(c.max_penetration), a(c.scan_overlaps);
+    for (auto* w : {&c.warnings.inverted_tets, &c.warnings.stays_inverted, &c.warnings.fallen_in, &c.warnings.unconverged})
+        a(w->count), a(w->last_time), a(w->last_slot), a(w->last_generation);
 }
 
 template <class A, class C>
@@ -153,7 +156,7 @@ void body_fields(A& a, B& b) {
     a(r.numbering.node_of_api), a(r.numbering.api_of_node), a(r.numbering.api_of_tet);
     auto& s = b.state;
     a(s.x), a(s.v_half), a(s.elastic), a(s.tet_rotation), a(s.contact_force), a(s.h_last);
-    a(s.strain_energy), a(s.stiffening), a(s.global.rotation), a(s.global.angular_momentum), a(s.global.center);
+    a(s.strain_energy), a(s.inverted_tets), a(s.min_jacobian), a(s.inverted_since), a(s.stiffening), a(s.global.rotation), a(s.global.angular_momentum), a(s.global.center);
     a(s.global.velocity);
     a(s.shape_pose);
     a(b.node_mode), a(b.prescribed_velocity), a(b.node_force);

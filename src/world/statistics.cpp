@@ -114,6 +114,8 @@ WorldTotals World::totals() const {
         body_momentum(b, P, L);
         t.linear_momentum += P, t.angular_momentum += L;
         t.strain_energy += b.state.strain_energy;
+        t.inverted_tets += b.state.inverted_tets;
+        t.min_jacobian = std::min(t.min_jacobian, b.state.min_jacobian);
     });
     const WorldCounters& c = state_.counters;
     t.energy_error = t.kinetic_energy + t.strain_energy + c.dissipated_energy - c.external_work - c.initial_energy;

@@ -8,6 +8,7 @@
 //   rotation update  eq. (2) and the re-fit of the "paper" model's floating frame
 //   element forces   elastic forces at x^{n+1}, element by element (they need the frame)
 //   energy           the sub-step's tallies added up in slot order
+//   warnings         inverted tets, nodes fallen in, an unconverged solve: counted
 // Each stage is a function over the list of the bodies it concerns, built once per sub-step.
 #include <algorithm>
 
@@ -136,13 +137,14 @@ void World::detect() {
         contact_bodies_.add(in);
     }
     detected_.clear();
+    fallen_ = FallenIn{};
     WorldCounters& c = state_.counters;
     c.solver_iterations = 0;
     c.solver_residual = 0.0;
     c.max_penetration = 0.0;
     if (!contact_bodies_.may_touch()) return;
-    detect_node_triangle(contact_bodies_.bodies(), state_.contacts, c.scan_overlaps, detection_, detected_, profile_,
-                         pool_.get());
+    fallen_ = detect_node_triangle(contact_bodies_.bodies(), state_.contacts, c.scan_overlaps, detection_, detected_,
+                                   profile_, pool_.get());
     c.scan_overlaps = false;
 }
 
@@ -151,6 +153,7 @@ void World::detect() {
 // each body pressing the other's face) keep the same split of the load from step to step
 // instead of trading it back and forth. Only pairs that carry force are contacts.
 void World::solve(double h) {
+    unconverged_ = false;
     if (!detected_.empty()) {
         const ContactSolveResult res =
             solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_,
@@ -159,6 +162,7 @@ void World::solve(double h) {
         state_.counters.solver_iterations = res.iterations;
         state_.counters.solver_residual = res.residual;
         state_.counters.max_penetration = res.max_penetration;
+        unconverged_ = !res.converged;
     }
     state_.contacts.swap(detected_);
     for (const ContactRecord& r : state_.contacts)
@@ -246,6 +250,29 @@ void World::add_up_energy(double h, double& kinetic, double& strain, double& wor
     c.step_size = h;
 }
 
+// After add_up_energy: the times are those at the end of the sub-step. A body's inverted
+// tets count once per sub-step; it is reported as staying inverted once per spell, when the
+// spell reaches kStaysInverted.
+void World::count_warnings(double h) {
+    WorldCounters& c = state_.counters;
+    Warnings& w = c.warnings;
+    for (uint32_t i : stages_.deformable) {
+        BodyState& s = bodies_.slot(i).state;
+        const uint32_t generation = bodies_.handle_of(i).generation;
+        if (s.inverted_tets == 0) {
+            s.inverted_since = -1.0;
+            continue;
+        }
+        w.inverted_tets.note(1, c.time, i, generation);
+        if (s.inverted_since < 0.0) s.inverted_since = c.time - h;  // it began in this sub-step
+        const double before = c.time - h - s.inverted_since, now = c.time - s.inverted_since;
+        if (before < kStaysInverted && now >= kStaysInverted) w.stays_inverted.note(1, c.time, i, generation);
+    }
+    if (fallen_.nodes)
+        w.fallen_in.note(fallen_.nodes, c.time, fallen_.last_slot, bodies_.handle_of(fallen_.last_slot).generation);
+    if (unconverged_) w.unconverged.note(1, c.time, 0, 0);
+}
+
 void World::substep(double h, double& kinetic, double& strain, double& work) {
     plan_stages();
     profile_.substeps += 1;
@@ -257,6 +284,7 @@ void World::substep(double h, double& kinetic, double& strain, double& work) {
     update_global_rotations(h);
     compute_element_forces();
     add_up_energy(h, kinetic, strain, work);
+    count_warnings(h);
 }
 
 }  // namespace lfem

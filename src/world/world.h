@@ -32,6 +32,8 @@ struct WorldTotals {
     Vec3 angular_momentum = Vec3::Zero();  // kg m^2/s, about the origin
     double energy_error = 0;    // J: kinetic + strain + dissipated - external work - initial
     double added_mass = 0;      // kg, by mass scaling
+    uint32_t inverted_tets = 0; // of the deformable bodies, at x
+    double min_jacobian = 1;    // their smallest volume ratio J at x
 };
 
 class World {
@@ -96,6 +98,7 @@ public:
     // Time and counts per phase of the step, accumulated (see lfem_profile).
     const lfem_profile& profile() const { return profile_; }
     void reset_profile() { profile_ = lfem_profile{}; }
+    void clear_warnings() { state_.counters.warnings = Warnings{}; }
 
     // ---- checkpoints (checkpoint.h)
     const WorldState& state() const { return state_; }
@@ -149,6 +152,7 @@ private:
     void update_global_rotations(double h);
     void compute_element_forces();
     void add_up_energy(double h, double& kinetic, double& strain, double& work);
+    void count_warnings(double h);
 
     lfem_world_def def_;
     BodyRegistry bodies_;
@@ -159,6 +163,8 @@ private:
     StageLists stages_;
     ContactBodies contact_bodies_;
     std::vector<ContactRecord> detected_;
+    FallenIn fallen_;           // by the sub-step's detection
+    bool unconverged_ = false;  // the sub-step's contact solve used every sweep
     DetectionScratch detection_;
     ContactSolveScratch solve_scratch_;
     std::unique_ptr<ThreadPool> pool_;  // the step's parallel loops

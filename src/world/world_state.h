@@ -10,6 +10,28 @@
 
 namespace lfem {
 
+// Non-fatal trouble, counted as MuJoCo counts its warnings: how often, when last and for which
+// body (slot and generation, as a handle).
+struct Warning {
+    uint64_t count = 0;
+    double last_time = 0;  // s
+    uint32_t last_slot = 0, last_generation = 0;  // generation 0: no body (or none yet)
+    void note(uint64_t n, double time, uint32_t slot, uint32_t generation) {
+        count += n;
+        last_time = time, last_slot = slot, last_generation = generation;
+    }
+};
+
+struct Warnings {
+    Warning inverted_tets;    // sub-steps that ended with a body's tet turned inside out (per body)
+    Warning stays_inverted;   // a body kept inverted tets for kStaysInverted s in a row
+    Warning fallen_in;        // nodes found inside a static, kinematic or rigid body, pushed out
+    Warning unconverged;      // a contact solve stopped at contact_iterations sweeps (no body)
+};
+
+// How long a body's tets may stay inverted before it is reported as staying so (s).
+constexpr double kStaysInverted = 0.5;
+
 // The world's own scalars that a step changes.
 struct WorldCounters {
     double time = 0;
@@ -24,6 +46,7 @@ struct WorldCounters {
     double solver_residual = 0;      // m
     double max_penetration = 0;      // m
     bool scan_overlaps = false;      // bodies were added: look for initial overlaps once
+    Warnings warnings;
 };
 
 struct WorldState {

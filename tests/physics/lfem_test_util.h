@@ -50,6 +50,15 @@ inline void make_quadratic_box_mesh(Mesh& mesh, double sx, double sy, double sz,
     ASSERT_EQ(lfem_mesh_make_quadratic(mesh.m), LFEM_OK) << lfem_last_error();
 }
 
+inline const char* model_name(lfem_model m) {
+    switch (m) {
+        case LFEM_MODEL_LINEAR: return "linear";
+        case LFEM_MODEL_PAPER: return "paper";
+        case LFEM_MODEL_COROTATIONAL: return "corotational";
+        default: return "neo_hookean";
+    }
+}
+
 // A body with the mesh: lfem_body_add_mesh, or lfem_body_add_quadratic_mesh for 10-node tets.
 inline lfem_body add_body(lfem_world* w, const lfem_body_def& def, const Mesh& mesh) {
     lfem_body b{};
@@ -132,6 +141,13 @@ inline std::vector<unsigned char> fingerprint(lfem_world* w, const std::vector<l
     };
     const lfem_world_stats s = stats(w);
     append(&s, sizeof s);
+    for (int k = 0; k < LFEM_WARNING_KIND_COUNT; ++k) {  // without the body's generation: it
+        lfem_warning warning{};                            // is process-wide (see below)
+        lfem_world_get_warning(w, lfem_warning_kind(k), &warning);
+        append(&warning.count, sizeof warning.count);
+        append(&warning.last_time, sizeof warning.last_time);
+        append(&warning.last_body.index, sizeof warning.last_body.index);
+    }
     for (lfem_body b : bodies) {
         const int valid = lfem_body_is_valid(w, b);
         append(&valid, sizeof valid);

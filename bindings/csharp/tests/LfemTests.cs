@@ -91,10 +91,11 @@ public static class LfemTests
                          "ThreadCount", 44,
                          "ContactTolerance", 48, "MaxSubsteps", 56, "AllowUnstableStep", 60, "internalValue", 64,
                          "MassScalingStep", 72);
-        Layout<WorldStats>(168, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
+        Layout<WorldStats>(184, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
                            "KineticEnergy", 40, "EnergyError", 72, "LinearMomentum", 80, "AngularMomentum", 104,
                            "ContactCount", 128, "SolverIterations", 132, "SolverResidual", 136, "MaxPenetration", 144,
-                           "RotationDrift", 152, "AddedMass", 160);
+                           "RotationDrift", 152, "AddedMass", 160, "InvertedTets", 168, "MinJacobian", 176);
+        Layout<Warning>(24, "Count", 0, "LastTime", 8, "LastBody", 16);
         Layout<PhaseTime>(16, "Seconds", 0, "Calls", 8);
         Layout<Profile>(192, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
                         "BroadPhase", 56, "NarrowPhase", 72, "ShapeQueries", 88, "ShapeTests", 104, "CcdQueries", 112,
@@ -558,6 +559,47 @@ public static class LfemTests
     }
 
     // ---- runner ----
+
+    public static void TestABlockHeldInsideOutIsReportedOncePerSpell()
+    {
+        // A 10 cm cube of one cell: bottom nodes fixed, top ones driven down at 0.5 m/s through
+        // the bottom for 0.3 s (to z = -0.05) and held. Every tet then has F = diag(1, 1, -0.5):
+        // all inverted, J = -0.5 exactly; after 1 s held it is reported as staying so, once.
+        WorldDef def = WorldDef.Default;
+        def.Gravity = new Vec3(0, 0, 0);
+        using (World world = new World(def))
+        using (Mesh mesh = Mesh.Box(new Vec3(0.1, 0.1, 0.1), 1, 1, 1))
+        {
+            BodyDef d = BodyDef.Default;
+            d.YoungModulus = 1e4;
+            d.Damping = 20;
+            Body body = world.CreateBody(d);
+            world.AddMesh(body, mesh);
+            Inversion rest = world.GetInversion(body);
+            Equal(0u, rest.InvertedTets, "inverted at rest");
+            Equal(1.0, rest.MinJacobian, "J at rest");
+            uint[] bottom = world.FindNodesInBox(body, new Vec3(-1, -1, -0.01), new Vec3(1, 1, 0.01));
+            uint[] top = world.FindNodesInBox(body, new Vec3(-1, -1, 0.09), new Vec3(1, 1, 0.11));
+            world.FixNodes(body, bottom);
+            world.PrescribeNodeVelocity(body, top, new Vec3(0, 0, -0.5));
+            for (int i = 0; i < 30; ++i) world.Step(0.01);
+            world.FixNodes(body, top);
+            for (int i = 0; i < 100; ++i) world.Step(0.01);
+            Inversion held = world.GetInversion(body);
+            Equal((uint)mesh.TetCount, held.InvertedTets, "every tet inverted");
+            Close(-0.5, held.MinJacobian, 1e-12, "J held");
+            Close(1.1, held.InvertedFor, 2e-3, "inverted for");
+            Equal(held.InvertedTets, world.Stats.InvertedTets, "stats inverted tets");
+            Warning stays = world.GetWarning(WarningKind.StaysInverted);
+            Equal(1ul, stays.Count, "stays inverted: once");
+            Check(stays.LastBody == body, "stays inverted: the body");
+            Equal(0ul, world.GetWarning(WarningKind.FallenIn).Count, "fallen in");
+            world.ClearWarnings();
+            foreach (WarningKind k in new[] { WarningKind.InvertedTets, WarningKind.StaysInverted, WarningKind.FallenIn,
+                                              WarningKind.Unconverged })
+                Equal(0ul, world.GetWarning(k).Count, "cleared " + k);
+        }
+    }
 
     public static int Main()
     {

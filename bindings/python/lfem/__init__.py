@@ -42,11 +42,12 @@ from ._native import c_string as _c_string
 from ._native import lib as native
 from ._native import library_path
 from ._structs import (CONTACT_DTYPE, NO_SHAPE, Body, BodyDef, BodyType, Contact, Model,
-                       PhaseTime, Profile, ShapeDef, ShapeType, WorldDef, WorldStats)
+                       PhaseTime, Profile, ShapeDef, ShapeType, Warning, WarningKind, WorldDef,
+                       WorldStats)
 from ._version import __version__
 
 __all__ = [
-    "__version__", "Status", "BodyType", "Model", "ShapeType", "LfemError",
+    "__version__", "Status", "BodyType", "Model", "ShapeType", "WarningKind", "Warning", "LfemError",
     "InvalidArgumentError", "WorldDef", "WorldStats", "PhaseTime", "Profile", "Body", "BodyDef",
     "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeDef", "World", "Mesh", "VtkSeries", "version",
     "version_string", "status_string", "last_error", "library_path", "native", "VERSION_MAJOR",
@@ -196,6 +197,16 @@ class World:
         """Set the profile back to zero."""
         native.lfem_world_reset_profile(self.handle)
 
+    def warning(self, kind: WarningKind) -> Warning:
+        """One warning counter: count, last_time (s), last_body."""
+        out = Warning()
+        native.lfem_world_get_warning(self.handle, int(kind), ctypes.byref(out))
+        return out
+
+    def clear_warnings(self) -> None:
+        """Set every warning counter back to zero."""
+        native.lfem_world_clear_warnings(self.handle)
+
     # -- bodies --
 
     def create_body(self, definition: Optional[BodyDef] = None) -> Body:
@@ -271,6 +282,14 @@ class World:
         out = ctypes.c_double()
         native.lfem_body_get_added_mass(self.handle, _body(body), ctypes.byref(out))
         return out.value
+
+    def inversion(self, body: Body) -> Tuple[int, float, float]:
+        """The body's inverted tets after the last sub-step (J = det F <= 0), the smallest
+        volume ratio J of its tets, and for how long (s) it has been inverted (0 when not)."""
+        count, min_j, since = ctypes.c_uint32(), ctypes.c_double(), ctypes.c_double()
+        native.lfem_body_get_inversion(self.handle, _body(body), ctypes.byref(count), ctypes.byref(min_j),
+                                       ctypes.byref(since))
+        return count.value, min_j.value, since.value
 
     def momentum(self, body: Body) -> Tuple[Vectors, Vectors]:
         """(linear, angular): linear momentum (kg m/s) and angular momentum about the origin

@@ -7,7 +7,7 @@ import ctypes
 from typing import Any
 
 from . import _errors, _library, _structs
-from ._structs import Body, BodyDef, Profile, ShapeDef, WorldDef, WorldStats
+from ._structs import Body, BodyDef, Profile, ShapeDef, Warning, WorldDef, WorldStats
 
 lib, library_path = _library.load()
 
@@ -59,6 +59,8 @@ _declare("lfem_world_get_stable_step", _st, _vp, _dp)
 _declare("lfem_world_get_stats", _st, _vp, _p(WorldStats))
 _declare("lfem_world_get_profile", _st, _vp, _p(Profile))
 _declare("lfem_world_reset_profile", _st, _vp)
+_declare("lfem_world_get_warning", _st, _vp, _enum, _p(Warning))
+_declare("lfem_world_clear_warnings", _st, _vp)
 
 _declare("lfem_body_def_default", BodyDef)
 _declare("lfem_body_create", _st, _vp, _p(BodyDef), _p(Body))
@@ -72,6 +74,7 @@ _declare("lfem_body_get_nodes_per_tet", _st, _vp, Body, _up)
 _declare("lfem_body_get_user_data", _st, _vp, Body, _p(_vp))
 _declare("lfem_body_get_mass", _st, _vp, Body, _dp)
 _declare("lfem_body_get_added_mass", _st, _vp, Body, _dp)
+_declare("lfem_body_get_inversion", _st, _vp, Body, _up, _dp, _dp)
 _declare("lfem_body_get_momentum", _st, _vp, Body, _dp, _dp)
 _declare("lfem_body_get_positions", _st, _vp, Body, _dp, _u32)
 _declare("lfem_body_get_velocities", _st, _vp, Body, _dp, _u32)

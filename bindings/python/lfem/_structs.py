@@ -37,6 +37,15 @@ class Model(enum.IntEnum):
     LINEAR = 3        # small-strain linear elasticity, no rotation at all
 
 
+class WarningKind(enum.IntEnum):
+    """lfem_warning_kind: what a warning counts (trouble the step recovers from)."""
+
+    INVERTED_TETS = 0   # a sub-step ended with inverted tets in a body: once per body and sub-step
+    STAYS_INVERTED = 1  # a body kept inverted tets for 0.5 s in a row: once per spell
+    FALLEN_IN = 2       # nodes found inside a static, kinematic or rigid body, pushed out
+    UNCONVERGED = 3     # a contact solve used every sweep and ended above its tolerance
+
+
 class ShapeType(enum.IntEnum):
     """lfem_shape_type: the kind of a rigid shape."""
 
@@ -224,6 +233,9 @@ class WorldStats(ctypes.Structure):
         ("max_penetration", ctypes.c_double),
         ("rotation_drift", ctypes.c_double),
         ("added_mass", ctypes.c_double),      # kg, by mass scaling
+        ("inverted_tets", ctypes.c_uint32),   # tets with J = det F <= 0 after the last sub-step
+        ("_padding", ctypes.c_uint32),
+        ("min_jacobian", ctypes.c_double),    # the smallest volume ratio J (1 without any)
     ]
 
 
@@ -268,6 +280,12 @@ class Body(ctypes.Structure):
 
     def __repr__(self) -> str:
         return "Body(index=%d, generation=%d)" % (self.index, self.generation)
+
+
+class Warning(ctypes.Structure):
+    """lfem_warning: how often, when last (s), for which body (Body() when none)."""
+
+    _fields_ = [("count", ctypes.c_uint64), ("last_time", ctypes.c_double), ("last_body", Body)]
 
 
 class Contact(ctypes.Structure):

@@ -51,12 +51,13 @@ class Layout(unittest.TestCase):
             "thread_count": 44,
             "contact_tolerance": 48, "max_substeps": 56, "allow_unstable_step": 60,
             "_internal_value": 64, "mass_scaling_step": 72})
-        self.check(lfem.WorldStats, 168, {
+        self.check(lfem.Warning, 24, {"count": 0, "last_time": 8, "last_body": 16})
+        self.check(lfem.WorldStats, 184, {
             "steps": 8, "step_size": 16, "stable_step": 24, "substeps_last_call": 32,
             "body_count": 36, "kinetic_energy": 40, "energy_error": 72, "linear_momentum": 80,
             "angular_momentum": 104, "contact_count": 128, "solver_iterations": 132,
             "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152,
-            "added_mass": 160})
+            "added_mass": 160, "inverted_tets": 168, "min_jacobian": 176})
         self.check(lfem.PhaseTime, 16, {"seconds": 0, "calls": 8})
         self.check(lfem.Profile, 192, {
             "substeps": 0, "internal_forces": 8, "predictor": 24, "kinematic_motion": 40,
@@ -181,6 +182,37 @@ class Physics(unittest.TestCase):
             world.reset_profile()
             self.assertEqual(world.profile.predictor.calls, 0)
             self.assertEqual(int(lfem.Status.UNSUPPORTED), 9)
+
+    def test_a_block_held_inside_out_is_reported_once_per_spell(self):
+        # A 10 cm cube of one cell: bottom nodes fixed, top ones driven down at 0.5 m/s through
+        # the bottom for 0.3 s (to z = -0.05) and held. Every tet then has F = diag(1, 1, -0.5):
+        # all inverted, J = -0.5 exactly; after 1 s held it is reported as staying so, once.
+        with lfem.World(lfem.WorldDef(gravity=(0, 0, 0))) as world:
+            body = world.create_body(lfem.BodyDef(young_modulus=1e4, damping=20))
+            mesh = lfem.Mesh.box((0.1, 0.1, 0.1), (1, 1, 1))
+            world.add_mesh(body, mesh)
+            self.assertEqual(world.inversion(body), (0, 1.0, 0.0))
+            bottom = world.find_nodes_in_box(body, (-1, -1, -0.01), (1, 1, 0.01))
+            top = world.find_nodes_in_box(body, (-1, -1, 0.09), (1, 1, 0.11))
+            world.fix_nodes(body, bottom)
+            world.prescribe_node_velocity(body, top, (0, 0, -0.5))
+            for _ in range(30):
+                world.step(0.01)
+            world.fix_nodes(body, top)
+            for _ in range(100):
+                world.step(0.01)
+            count, min_j, since = world.inversion(body)
+            self.assertEqual(count, mesh.tet_count)
+            self.assertAlmostEqual(min_j, -0.5, delta=1e-12)
+            self.assertAlmostEqual(since, 1.1, delta=2e-3)
+            self.assertEqual(world.stats.inverted_tets, count)
+            stays = world.warning(lfem.WarningKind.STAYS_INVERTED)
+            self.assertEqual(stays.count, 1)
+            self.assertEqual(stays.last_body, body)
+            self.assertEqual(world.warning(lfem.WarningKind.FALLEN_IN).count, 0)
+            world.clear_warnings()
+            for kind in lfem.WarningKind:
+                self.assertEqual(world.warning(kind).count, 0)
 
     def test_falling_block_follows_free_fall(self):
         # Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each

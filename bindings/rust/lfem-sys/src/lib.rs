@@ -132,6 +132,31 @@ pub struct lfem_world_stats {
     pub rotation_drift: c_double,
     /// kg, added by mass scaling to every body.
     pub added_mass: c_double,
+    /// Tets turned inside out (J = det F <= 0) over the deformable bodies after the last sub-step.
+    pub inverted_tets: u32,
+    pub padding: u32,
+    /// The smallest volume ratio J of their tets after the last sub-step (1 without any).
+    pub min_jacobian: c_double,
+}
+
+/// The kinds of warning (lfem_warning_kind).
+pub type lfem_warning_kind = c_int;
+pub const LFEM_WARNING_INVERTED_TETS: lfem_warning_kind = 0;
+pub const LFEM_WARNING_STAYS_INVERTED: lfem_warning_kind = 1;
+pub const LFEM_WARNING_FALLEN_IN: lfem_warning_kind = 2;
+pub const LFEM_WARNING_UNCONVERGED: lfem_warning_kind = 3;
+pub const LFEM_WARNING_KIND_COUNT: lfem_warning_kind = 4;
+
+/// One warning counter (lfem_warning): how often, when last, for which body.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_warning {
+    /// Since the world was created or `lfem_world_clear_warnings`.
+    pub count: u64,
+    /// s, the simulated time of the last one (0 before any).
+    pub last_time: c_double,
+    /// The body of the last one; the null handle when none is concerned.
+    pub last_body: lfem_body,
 }
 
 /// Time (s) and count of one phase of the step (lfem_phase_time).
@@ -245,7 +270,9 @@ const _: () = assert!(size_of::<lfem_model>() == 4);
 const _: () = assert!(size_of::<lfem_shape_type>() == 4);
 const _: () = assert!(size_of::<lfem_body>() == 8);
 const _: () = assert!(size_of::<lfem_world_def>() == 80);
-const _: () = assert!(size_of::<lfem_world_stats>() == 168);
+const _: () = assert!(size_of::<lfem_world_stats>() == 184);
+const _: () = assert!(size_of::<lfem_warning_kind>() == 4);
+const _: () = assert!(size_of::<lfem_warning>() == 24);
 const _: () = assert!(size_of::<lfem_contact>() == 128);
 const _: () = assert!(size_of::<lfem_phase_time>() == 16);
 const _: () = assert!(size_of::<lfem_profile>() == 192);
@@ -313,6 +340,19 @@ extern "C" {
     ) -> lfem_status;
     pub fn lfem_body_get_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
     pub fn lfem_body_get_added_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
+    pub fn lfem_body_get_inversion(
+        world: *const lfem_world,
+        body: lfem_body,
+        inverted_tets: *mut u32,
+        min_jacobian: *mut c_double,
+        inverted_for: *mut c_double,
+    ) -> lfem_status;
+    pub fn lfem_world_get_warning(
+        world: *const lfem_world,
+        kind: lfem_warning_kind,
+        out: *mut lfem_warning,
+    ) -> lfem_status;
+    pub fn lfem_world_clear_warnings(world: *mut lfem_world) -> lfem_status;
     pub fn lfem_body_get_momentum(
         world: *const lfem_world,
         body: lfem_body,

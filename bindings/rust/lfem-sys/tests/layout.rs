@@ -18,7 +18,8 @@ macro_rules! offset {
 fn sizes_match_c() {
     assert_eq!(size_of::<lfem_body>(), 8);
     assert_eq!(size_of::<lfem_world_def>(), 80);
-    assert_eq!(size_of::<lfem_world_stats>(), 168);
+    assert_eq!(size_of::<lfem_world_stats>(), 184);
+    assert_eq!(size_of::<lfem_warning>(), 24);
     assert_eq!(size_of::<lfem_body_def>(), 120);
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
@@ -54,6 +55,11 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_world_stats, solver_residual), 136);
     assert_eq!(offset!(lfem_world_stats, rotation_drift), 152);
     assert_eq!(offset!(lfem_world_stats, added_mass), 160);
+    assert_eq!(offset!(lfem_world_stats, inverted_tets), 168);
+    assert_eq!(offset!(lfem_world_stats, min_jacobian), 176);
+    assert_eq!(offset!(lfem_warning, count), 0);
+    assert_eq!(offset!(lfem_warning, last_time), 8);
+    assert_eq!(offset!(lfem_warning, last_body), 16);
 
     assert_eq!(offset!(lfem_phase_time, calls), 8);
     assert_eq!(offset!(lfem_profile, internal_forces), 8);

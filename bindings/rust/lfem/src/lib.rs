@@ -539,6 +539,56 @@ const _: () = assert!(size_of::<Contact>() == 128);
 
 /// Statistics of a world (lfem_world_stats): time, energies, momenta, solver figures.
 pub type WorldStats = sys::lfem_world_stats;
+
+/// What a warning counts (lfem_warning_kind): trouble the step recovers from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum WarningKind {
+    /// A sub-step ended with inverted tets in a body: once per body and sub-step.
+    InvertedTets,
+    /// A body kept inverted tets for 0.5 s in a row: once per spell.
+    StaysInverted,
+    /// Nodes found inside a static, kinematic or rigid body (or a shape), pushed back out.
+    FallenIn,
+    /// A contact solve used every sweep and ended above its tolerance.
+    Unconverged,
+}
+
+impl WarningKind {
+    /// Every kind, in the C order.
+    pub const ALL: [WarningKind; 4] =
+        [WarningKind::InvertedTets, WarningKind::StaysInverted, WarningKind::FallenIn, WarningKind::Unconverged];
+
+    fn raw(self) -> sys::lfem_warning_kind {
+        match self {
+            WarningKind::InvertedTets => sys::LFEM_WARNING_INVERTED_TETS,
+            WarningKind::StaysInverted => sys::LFEM_WARNING_STAYS_INVERTED,
+            WarningKind::FallenIn => sys::LFEM_WARNING_FALLEN_IN,
+            WarningKind::Unconverged => sys::LFEM_WARNING_UNCONVERGED,
+        }
+    }
+}
+
+/// One warning counter (lfem_warning).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Warning {
+    /// How often, since the world was created or [`World::clear_warnings`].
+    pub count: u64,
+    /// s, simulated time of the last one (0 before any).
+    pub last_time: f64,
+    /// The body of the last one; [`Body::NULL`] when none is concerned.
+    pub last_body: Body,
+}
+
+/// A body's inverted tets after the last sub-step (lfem_body_get_inversion).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Inversion {
+    /// Tets with volume ratio J = det F <= 0.
+    pub inverted_tets: u32,
+    /// The smallest J of the body's tets.
+    pub min_jacobian: f64,
+    /// s, for how long the body has had inverted tets without a break (0 when none).
+    pub inverted_for: f64,
+}
 /// Where the step spends its time (lfem_profile): seconds and call counts per phase.
 pub type Profile = sys::lfem_profile;
 /// Time and count of one phase (lfem_phase_time).
@@ -663,6 +713,21 @@ impl World {
         check(unsafe { sys::lfem_world_reset_profile(self.ptr_mut()) })
     }
 
+    /// One warning counter.
+    pub fn warning(&self, kind: WarningKind) -> Result<Warning> {
+        let mut out = sys::lfem_warning::default();
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_world_get_warning(self.ptr(), kind.raw(), &mut out) })?;
+        let b = out.last_body;
+        Ok(Warning { count: out.count, last_time: out.last_time, last_body: Body { index: b.index, generation: b.generation } })
+    }
+
+    /// Set every warning counter back to zero.
+    pub fn clear_warnings(&mut self) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_world_clear_warnings(self.ptr_mut()) })
+    }
+
     // -- bodies --
 
     /// A body without nodes; give it a mesh with [`World::add_mesh`].
@@ -780,6 +845,22 @@ impl World {
         let mut out = 0.0;
         // SAFETY: live world, valid output.
         check(unsafe { sys::lfem_body_get_added_mass(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out)
+    }
+
+    /// The body's inverted tets, smallest volume ratio and how long it has been inverted.
+    pub fn inversion(&self, body: Body) -> Result<Inversion> {
+        let mut out = Inversion { inverted_tets: 0, min_jacobian: 0.0, inverted_for: 0.0 };
+        // SAFETY: live world, three valid outputs.
+        check(unsafe {
+            sys::lfem_body_get_inversion(
+                self.ptr(),
+                body.raw(),
+                &mut out.inverted_tets,
+                &mut out.min_jacobian,
+                &mut out.inverted_for,
+            )
+        })?;
         Ok(out)
     }
 

@@ -1,6 +1,6 @@
 //! Real simulations through the safe API, checked against closed forms, plus error handling,
 //! handle invalidation, buffers and contacts.
-use lfem::{Body, BodyDef, BodyType, Contact, Mesh, Model, ShapeDef, ShapeType, Status, World, WorldDef};
+use lfem::{Body, BodyDef, BodyType, Contact, Mesh, Model, ShapeDef, ShapeType, Status, WarningKind, World, WorldDef};
 
 const G: f64 = 9.81;
 
@@ -458,4 +458,49 @@ fn ten_node_box_falls_freely_and_shows_its_six_node_faces() {
     // A body of 4-node tets has no 6-node faces.
     let (linear_world, linear) = block_world(Model::Paper, size, density);
     assert_eq!(linear_world.quadratic_boundary_faces(linear).unwrap_err().status(), Status::InvalidArgument);
+}
+
+#[test]
+fn a_block_held_inside_out_is_reported_once_per_spell() {
+    // A 10 cm cube of one cell: its bottom nodes fixed, its top ones driven down at 0.5 m/s
+    // through the bottom for 0.3 s (to z = -0.05) and held. Every tet then has F = diag(1, 1,
+    // -0.5): all inverted, J = -0.5 exactly. After 1 s held it is reported as staying inverted,
+    // once.
+    let mut def = WorldDef::default();
+    def.gravity = [0.0; 3];
+    let mut world = World::new(&def).unwrap();
+    let mesh = Mesh::new_box([0.1, 0.1, 0.1], [1, 1, 1]).unwrap();
+    let mut d = BodyDef::default();
+    d.young_modulus = 1e4;
+    d.damping = 20.0;
+    let body = world.create_body(&d).unwrap();
+    world.add_mesh(body, &mesh).unwrap();
+    let at_rest = world.inversion(body).unwrap();
+    assert_eq!((at_rest.inverted_tets, at_rest.min_jacobian, at_rest.inverted_for), (0, 1.0, 0.0));
+    let bottom = world.find_nodes_in_box(body, [-1.0, -1.0, -0.01], [1.0, 1.0, 0.01]).unwrap();
+    let top = world.find_nodes_in_box(body, [-1.0, -1.0, 0.09], [1.0, 1.0, 0.11]).unwrap();
+    world.fix_nodes(body, &bottom).unwrap();
+    world.prescribe_node_velocity(body, &top, [0.0, 0.0, -0.5]).unwrap();
+    for _ in 0..30 {
+        world.step(0.01).unwrap();
+    }
+    world.fix_nodes(body, &top).unwrap();
+    for _ in 0..100 {
+        world.step(0.01).unwrap();
+    }
+    let held = world.inversion(body).unwrap();
+    assert_eq!(held.inverted_tets as usize, world.tet_count(body).unwrap());
+    assert!(close(held.min_jacobian, -0.5, 1e-12), "J {}", held.min_jacobian);
+    assert!(close(held.inverted_for, 1.1, 2e-3), "inverted for {} s", held.inverted_for);
+    let stats = world.stats().unwrap();
+    assert_eq!(stats.inverted_tets, held.inverted_tets);
+    let stays = world.warning(WarningKind::StaysInverted).unwrap();
+    assert_eq!(stays.count, 1);
+    assert_eq!(stays.last_body, body);
+    assert_eq!(world.warning(WarningKind::FallenIn).unwrap().count, 0);
+    world.clear_warnings().unwrap();
+    for kind in WarningKind::ALL {
+        let w = world.warning(kind).unwrap();
+        assert_eq!((w.count, w.last_time, w.last_body), (0, 0.0, Body::NULL));
+    }
 }
