@@ -7,12 +7,14 @@
 #include "fem/quadratic_forces.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
 #include "fem/quadratic_tet.h"
 #include "fem/tet_element.h"
+#include "fem/volume_barrier.h"
 
 namespace lfem {
 namespace {
@@ -26,10 +28,15 @@ namespace {
 
 // The stress of each model at one quadrature point (index k = 4 tet + q): P from F, the energy
 // density into psi; a model with kTangent also raises `tangent` to its stiffness estimate.
-struct LinearStress {
-    static constexpr bool kTangent = false;
+// kBarrier: the loop adds the volume barrier (volume_barrier.h) at the point, as for linear
+// tets; the neo-Hookean energy has it inside, and the reference stiffness is Hooke's law alone.
+struct HookeStress {
+    static constexpr bool kTangent = false, kBarrier = false;
     Lame lame;
     Mat3 operator()(const Mat3& H, std::size_t, double& psi, double&) const { return hooke_stress(H, lame, &psi); }
+};
+struct LinearStress : HookeStress {
+    static constexpr bool kBarrier = true;
 };
 
 // Hooke's law in a rotated frame: P = R hooke(R^T F - I).
@@ -38,7 +45,7 @@ LFEM_QUADRATIC_INLINE Mat3 rotated_hooke(const Mat3& R, const Mat3& F, const Lam
 }
 
 struct PaperStress {
-    static constexpr bool kTangent = false;
+    static constexpr bool kTangent = false, kBarrier = true;
     Lame lame;
     Mat3 R;  // the body's floating frame
     Mat3 operator()(const Mat3& F, std::size_t, double& psi, double&) const { return rotated_hooke(R, F, lame, psi); }
@@ -47,7 +54,7 @@ struct PaperStress {
 // One rotation per quadrature point, the polar rotation of F_q: R^T F_q is then symmetric and
 // the stress torque-free there, so the element keeps angular momentum as the linear one does.
 struct CorotationalStress {
-    static constexpr bool kTangent = false;
+    static constexpr bool kTangent = false, kBarrier = true;
     Lame lame;
     float* rotations;  // 4 per quadrature point, warm start, updated
     Mat3 operator()(const Mat3& F, std::size_t k, double& psi, double&) const {
@@ -60,7 +67,7 @@ struct CorotationalStress {
 };
 
 struct NeoHookeanStress {
-    static constexpr bool kTangent = true;
+    static constexpr bool kTangent = true, kBarrier = false;
     Lame lame;
     Mat3 operator()(const Mat3& F, std::size_t, double& psi, double& tangent) const {
         const double t = neo_hookean_tangent_estimate(F(0, 0), F(1, 0), F(2, 0), F(0, 1), F(1, 1), F(2, 1), F(0, 2),
@@ -139,64 +146,101 @@ LFEM_QUADRATIC_INLINE void add_nodal_forces(const Mat3& G, const PointWeights& p
     }
 }
 
-// One block of tets; returns its strain energy (and, for a model with kTangent, its largest
-// tangent estimate in *tangent).
+// What a block of tets gives besides its forces. A 10-node tet's volume ratio J = det F varies
+// within it: it counts as inverted when J <= 0 at one of its quadrature points, and min_J is
+// the smallest J at the points.
+struct BlockResult {
+    double energy = 0;      // J, strain energy
+    double tangent = 0;     // the largest tangent estimate (kTangent) or barrier stiffness (kBarrier)
+    uint32_t inverted = 0;  // tets with J <= 0 at a quadrature point
+    double min_J = HUGE_VAL;
+};
+
+// The volume barrier at one quadrature point of deformation F, added to P and psi (rare: only
+// below J_b); returns the stiffness it adds, 0 above J_b.
+LFEM_QUADRATIC_INLINE double add_barrier(const Mat3& F, double J, const Lame& lame, Mat3& P, double& psi) {
+    if (!(J < kBarrierJ)) return 0.0;
+    double f[9], p[9];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) f[3 * r + c] = F(r, c), p[3 * r + c] = P(r, c);
+    const double t = add_volume_barrier(f, lame.lambda + lame.mu, p, psi);
+    P = load_row_major(p);
+    return t;
+}
+
+// One block of tets: its strain energy, inverted tets, smallest volume ratio and (a model with
+// kTangent or kBarrier) largest tangent estimate.
 template <bool displacement, class Model>
-double quadratic_block(const QuadraticLoop& d, uint32_t block, const Model& model, double* tangent) {
+BlockResult quadratic_block(const QuadraticLoop& d, uint32_t block, const Model& model) {
+    BlockResult out;
     double energy = 0.0, worst = 0.0;
     const uint32_t e_end = std::min(d.tet_count, (block + 1) * d.block_size);
     for (uint32_t e = block * d.block_size; e < e_end; ++e) {
         double u[kQuadraticTetNodes][3], f[kQuadraticTetNodes][3] = {};
         gather<displacement>(d, e, u);
+        double tet_J = HUGE_VAL;
         for (int q = 0; q < kQuadraturePoints; ++q) {
             const PointWeights p(q);
             const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
             const Eigen::Map<const Mat3> Jinv(d.Jq_inv + 9 * k);
             double psi = 0.0;
-            const Mat3 P = model(natural_gradient(u, p) * Jinv, k, psi, worst);
+            const Mat3 G = natural_gradient(u, p) * Jinv;  // F, or grad u with displacements
+            const Mat3 F = displacement ? Mat3(G + Mat3::Identity()) : G;
+            const double J = F.determinant();
+            tet_J = std::min(tet_J, J);
+            Mat3 P = model(G, k, psi, worst);
+            if constexpr (Model::kBarrier) worst = std::max(worst, add_barrier(F, J, model.lame, P, psi));
             const double V = d.qp_volume[k];
             energy += V * psi;
             add_nodal_forces(-V * (P * Jinv.transpose()), p, f);  // the elastic force is -f_int
         }
+        out.inverted += !(tet_J > 0.0);
+        out.min_J = std::min(out.min_J, tet_J);
         const uint32_t* t = d.tets + kQuadraticTetNodes * std::size_t(e);
         for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
             for (int r = 0; r < 3; ++r) d.f[3 * std::size_t(t[a]) + r] += f[a][r];
     }
-    if constexpr (Model::kTangent) *tangent = worst;
-    return energy;
+    out.energy = energy;
+    out.tangent = worst;
+    return out;
 }
 
-// The element loop, colour by colour (element_colouring.h), energies and tangents per block
-// then over the blocks in index order: bitwise the same for any thread count.
+// The element loop, colour by colour (element_colouring.h), the blocks' results then summed
+// over the blocks in index order: bitwise the same for any thread count.
 template <bool displacement, class Model>
-double quadratic_loop(const ElementMesh& mesh, const double* x, double* f, ThreadPool* pool, const Model& model,
-                      double* tangent) {
+BlockResult quadratic_loop(const ElementMesh& mesh, const double* x, double* f, ThreadPool* pool, const Model& model) {
     std::fill(f, f + 3 * std::size_t(mesh.node_count()), 0.0);
     const ElementColouring& colouring = *mesh.colouring;
     const QuadraticLoop d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.qp_volume.data(),
                           f, mesh.tet_count(), colouring.block_size};
-    std::vector<double> block_energy(colouring.block_count(), 0.0);
-    std::vector<double> block_tangent(Model::kTangent ? colouring.block_count() : 0, 0.0);
-    for_each_block_by_colour(colouring, pool, [&](uint32_t b) {
-        block_energy[b] = quadratic_block<displacement>(d, b, model, Model::kTangent ? &block_tangent[b] : nullptr);
-    });
-    double energy = 0.0;
-    for (double e : block_energy) energy += e;
-    *tangent = block_tangent.empty() ? 0.0 : *std::max_element(block_tangent.begin(), block_tangent.end());
-    return energy;
+    std::vector<BlockResult> per_block(colouring.block_count());
+    for_each_block_by_colour(colouring, pool,
+                             [&](uint32_t b) { per_block[b] = quadratic_block<displacement>(d, b, model); });
+    BlockResult total;
+    for (const BlockResult& r : per_block) {
+        total.energy += r.energy;
+        total.tangent = std::max(total.tangent, r.tangent);
+        total.inverted += r.inverted;
+        total.min_J = std::min(total.min_J, r.min_J);
+    }
+    return total;
 }
 
 template <bool displacement, class Model>
 ElasticResult quadratic_forces(const ElementMesh& mesh, const ElasticState& state, ThreadPool* pool,
                                const Model& model) {
+    const BlockResult r = quadratic_loop<displacement>(mesh, state.x.data(), state.force.data(), pool, model);
     ElasticResult out;
-    double tangent = 0.0;
-    out.strain_energy = quadratic_loop<displacement>(mesh, state.x.data(), state.force.data(), pool, model, &tangent);
-    if constexpr (Model::kTangent) {
-        const Lame& l = model.lame;
-        const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, l.mu, l.lambda + l.mu);
-        out.stiffening = std::max(1.0, tangent / at_rest);
-    }
+    out.strain_energy = r.energy;
+    out.inverted_tets = r.inverted;
+    out.min_jacobian = r.min_J < HUGE_VAL ? r.min_J : 1.0;  // (no tets: nothing crushed)
+    // As for linear tets (internal_forces.cpp): the neo-Hookean's tangent over its value at
+    // rest; the barrier's stiffness on top of Hooke's, whose largest tangent eigenvalue is that
+    // of the neo-Hookean at rest.
+    const Lame& l = model.lame;
+    const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, l.mu, l.lambda + l.mu);
+    if constexpr (Model::kTangent) out.stiffening = std::max(1.0, r.tangent / at_rest);
+    if constexpr (Model::kBarrier) out.stiffening = 1.0 + r.tangent / at_rest;
     return out;
 }
 
@@ -235,7 +279,7 @@ ElasticResult compute_quadratic_elastic_forces(const ElementMesh& mesh, const Ma
     const Lame lame = material.lame;
     switch (material.model) {
         case LFEM_MODEL_LINEAR:
-            return quadratic_forces<true>(mesh, state, pool, LinearStress{lame});
+            return quadratic_forces<true>(mesh, state, pool, LinearStress{{lame}});
         case LFEM_MODEL_PAPER:
             return quadratic_forces<false>(mesh, state, pool, PaperStress{lame, frame_rotation(state.frame)});
         case LFEM_MODEL_COROTATIONAL:
@@ -249,8 +293,7 @@ ElasticResult compute_quadratic_elastic_forces(const ElementMesh& mesh, const Ma
 void apply_quadratic_reference_stiffness(const ElementMesh& mesh, const Lame& lame, const double* u, double* y,
                                          ThreadPool* pool) {
     // The linear kernel on the nodes' u (their differences are u's) gives -K u.
-    double unused = 0.0;
-    quadratic_loop<false>(mesh, u, y, pool, LinearStress{lame}, &unused);
+    quadratic_loop<false>(mesh, u, y, pool, HookeStress{lame});
     for (std::size_t i = 0; i < 3 * std::size_t(mesh.node_count()); ++i) y[i] = -y[i];
 }
 
