@@ -84,6 +84,15 @@ public:
         static_assert(std::is_trivially_copyable<T>::value, "plain data only");
         take(&v, sizeof v);
     }
+    // A flag is one byte that must be 0 or 1: any other value would be a bool no code may
+    // read (undefined behaviour), so an altered file is refused instead.
+    void operator()(bool& v) {
+        unsigned char byte = 0;
+        static_assert(sizeof(bool) == 1, "a flag is one byte in the file");
+        take(&byte, 1);
+        if (byte > 1) fail(path_, "bad flag (neither 0 nor 1)");
+        v = byte == 1;
+    }
     template <class T>
     void operator()(std::vector<T>& v) {
         uint64_t n = 0;
