@@ -371,7 +371,9 @@ LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body
 
 /* The body's inverted tets after the last sub-step (J = det F <= 0), the smallest volume
  * ratio J of its tets, and for how long (s) it has had inverted tets without a break (0 when
- * it has none). 0, 1, 0 for a body that is not deformable. Each output is nullable. */
+ * it has none). 0, 1, 0 for a body that is not deformable. A 10-node tet's J varies inside it:
+ * it counts as inverted when J <= 0 at one of its 4 quadrature points, and its J is the
+ * smallest at them. Each output is nullable. */
 LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body body, uint32_t* inverted_tets,
                                              double* min_jacobian, double* inverted_for);
 
