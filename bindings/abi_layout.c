@@ -22,7 +22,7 @@ CHECK_SIZE(lfem_body, 8);
 CHECK_OFFSET(lfem_body, index, 0);
 CHECK_OFFSET(lfem_body, generation, 4);
 
-CHECK_SIZE(lfem_world_def, 80);
+CHECK_SIZE(lfem_world_def, 96);
 CHECK_OFFSET(lfem_world_def, gravity, 0);
 CHECK_OFFSET(lfem_world_def, time_step, 24);
 CHECK_OFFSET(lfem_world_def, step_safety, 32);
@@ -32,7 +32,10 @@ CHECK_OFFSET(lfem_world_def, contact_tolerance, 48);
 CHECK_OFFSET(lfem_world_def, max_substeps, 56);
 CHECK_OFFSET(lfem_world_def, allow_unstable_step, 60);
 CHECK_OFFSET(lfem_world_def, internal_value, 64);
+CHECK_OFFSET(lfem_world_def, enable_sleep, 61);
 CHECK_OFFSET(lfem_world_def, mass_scaling_step, 72);
+CHECK_OFFSET(lfem_world_def, sleep_velocity, 80);
+CHECK_OFFSET(lfem_world_def, sleep_time, 88);
 
 CHECK_SIZE(lfem_phase_time, 16);
 CHECK_OFFSET(lfem_phase_time, seconds, 0);
@@ -84,6 +87,18 @@ CHECK_OFFSET(lfem_warning, count, 0);
 CHECK_OFFSET(lfem_warning, last_time, 8);
 CHECK_OFFSET(lfem_warning, last_body, 16);
 
+CHECK_SIZE(lfem_event_type, 4);
+CHECK_SIZE(lfem_attachment, 8);
+CHECK_OFFSET(lfem_attachment, index, 0);
+CHECK_OFFSET(lfem_attachment, generation, 4);
+CHECK_SIZE(lfem_event, 48);
+CHECK_OFFSET(lfem_event, type, 0);
+CHECK_OFFSET(lfem_event, body_a, 8);
+CHECK_OFFSET(lfem_event, body_b, 16);
+CHECK_OFFSET(lfem_event, attachment, 24);
+CHECK_OFFSET(lfem_event, normal_impulse, 32);
+CHECK_OFFSET(lfem_event, max_force, 40);
+
 /* 64-bit targets (8-byte pointers), which every binding test runs on */
 CHECK_SIZE(void*, 8);
 CHECK_SIZE(lfem_body_def, 120);
@@ -100,7 +115,9 @@ CHECK_OFFSET(lfem_body_def, category_bits, 96);
 CHECK_OFFSET(lfem_body_def, mask_bits, 100);
 CHECK_OFFSET(lfem_body_def, user_data, 104);
 CHECK_OFFSET(lfem_body_def, internal_value, 112);
-CHECK_OFFSET(lfem_body_def, padding, 116);
+CHECK_OFFSET(lfem_body_def, enable_sleep, 116);
+CHECK_OFFSET(lfem_body_def, self_contact, 117);
+CHECK_OFFSET(lfem_body_def, padding, 118);
 
 CHECK_SIZE(lfem_contact, 128);
 CHECK_OFFSET(lfem_contact, body_a, 0);
@@ -114,6 +131,15 @@ CHECK_OFFSET(lfem_contact, force, 96);
 CHECK_OFFSET(lfem_contact, sliding, 120);
 CHECK_OFFSET(lfem_contact, padding, 121);
 CHECK_OFFSET(lfem_contact, shape, 124);
+
+CHECK_SIZE(lfem_attachment_def, 96);
+CHECK_OFFSET(lfem_attachment_def, body, 0);
+CHECK_OFFSET(lfem_attachment_def, target, 8);
+CHECK_OFFSET(lfem_attachment_def, nodes, 16);
+CHECK_OFFSET(lfem_attachment_def, node_count, 24);
+CHECK_OFFSET(lfem_attachment_def, internal_value, 28);
+CHECK_OFFSET(lfem_attachment_def, frame, 32);
+CHECK_OFFSET(lfem_attachment_def, break_force, 88);
 
 CHECK_SIZE(lfem_shape_def, 120);
 CHECK_OFFSET(lfem_shape_def, type, 0);

@@ -109,7 +109,9 @@ typedef struct lfem_world_def {
                                    refused up front, default 1000000 */
     uint8_t allow_unstable_step; /* 1 = skip the up-front stability check of a fixed time_step
                                     (for experiments; instability is still caught), default 0 */
-    uint8_t padding[3];
+    uint8_t enable_sleep;       /* 1 = bodies at rest fall asleep (see sleep_velocity), default 0:
+                                   off, so that a scene's physics does not depend on it */
+    uint8_t padding[2];
     uint32_t internal_value;    /* set by lfem_world_def_default; do not change */
     uint32_t padding2;
     double mass_scaling_step;   /* s; 0 (default) = off. Mass scaling, the explicit codes' tool
@@ -125,6 +127,14 @@ typedef struct lfem_world_def {
                                    the scaled elements (tests/bench's error-against-run-time
                                    report shows what it costs). Neo-Hookean bodies crushed
                                    beyond the reference still stiffen below it */
+    double sleep_velocity;      /* m/s, default 0.01. With enable_sleep, a deformable or rigid
+                                   body whose every node has moved slower than this for
+                                   sleep_time, and everything touching or attached to it too (a
+                                   pile sleeps as a whole), falls asleep: its velocities are
+                                   set to zero (booked as dissipated energy) and it is not
+                                   stepped (no element forces, no predictor, no detection among
+                                   sleeping bodies: it costs nothing) until it wakes */
+    double sleep_time;          /* s, default 0.5 */
 } lfem_world_def;
 
 /* A definition filled with the defaults above. Always start from it. */
@@ -306,7 +316,16 @@ typedef struct lfem_body_def {
                                  other's mask */
     void* user_data;          /* nullable, returned by lfem_body_get_user_data */
     uint32_t internal_value;  /* set by lfem_body_def_default; do not change */
-    uint32_t padding;
+    uint8_t enable_sleep;     /* 1 (default) = may fall asleep when the world's enable_sleep is
+                                 set; 0 = always awake */
+    uint8_t self_contact;     /* 1 = the body's surface collides with itself (a bar folding over
+                                 a post, a sheet piling up, a squashed jelly's folds): each
+                                 boundary node against the body's own boundary triangles, except
+                                 the ones around it and their neighbours (those sharing a node
+                                 with them), by the same multipliers as contact between bodies.
+                                 Deformable bodies only; default 0 (it costs a search of the
+                                 body's own surface) */
+    uint8_t padding[2];
 } lfem_body_def;
 
 LFEM_API lfem_body_def lfem_body_def_default(void);
@@ -447,8 +466,9 @@ LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_
 LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
                                                     double* out, uint32_t tet_capacity);
 
-/* The body's global rotation (row-major 3x3): a rigid body's rotation, or the floating frame
- * of the "paper" model (re-fitted to the nodes). Identity otherwise. */
+/* The body's global rotation (row-major 3x3): a rigid body's rotation, the floating frame of
+ * the "paper" model (re-fitted to the nodes), or how far a kinematic body has turned since it
+ * was created. Identity otherwise. */
 LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body body,
                                             double out[9]);
 
@@ -483,6 +503,62 @@ LFEM_API lfem_status lfem_body_clear_node_forces(lfem_world* world, lfem_body bo
 LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_body body,
                                                       const double linear[3],
                                                       const double angular[3]);
+
+/* Sleeping (lfem_world_def.enable_sleep). A sleeping body wakes when an awake body touches it,
+ * when its velocities, node forces, supports or attachments change (or those of a kinematic
+ * body touching it), when gravity changes, or on request. Waking a body does not wake what
+ * touches it until that is touched in turn. Both are reported as events (lfem_world_get_events). */
+LFEM_API lfem_status lfem_body_wake(lfem_world* world, lfem_body body);
+/* 1 when the body is awake (static bodies and bodies without a mesh: 1), 0 when asleep, -1 for
+ * an invalid world or handle. */
+LFEM_API int lfem_body_is_awake(const lfem_world* world, lfem_body body);
+
+/* ---------------------------------------------------------------------------------------- */
+/* Attachments                                                                                */
+/* ---------------------------------------------------------------------------------------- */
+
+/* Nodes of a deformable body held at fixed offsets in the frame of a target: a rigid body (the
+ * attachment pulls both ways: a soft rope holds a rigid weight and the weight swings it), a
+ * kinematic body (an animated bone), a static body, or a frame the caller moves every frame (a
+ * hand; the null target). Each node is a hard constraint of the contact solve (three
+ * multipliers, pulling or pushing), so a held node is exactly at its place at the end of every
+ * sub-step up to the solve's tolerance. The offsets are where the nodes are when the attachment
+ * is created. A value handle like lfem_body; destroying the body or the target destroys it. */
+typedef struct lfem_attachment {
+    uint32_t index;
+    uint32_t generation;
+} lfem_attachment;
+
+typedef struct lfem_attachment_def {
+    lfem_body body;           /* the deformable body whose nodes are held */
+    lfem_body target;         /* a rigid, kinematic or static body with geometry, or the null
+                                 handle {0, 0}: the frame below */
+    const uint32_t* nodes;    /* node_count indices of body's nodes (copied), distinct */
+    uint32_t node_count;      /* >= 1 */
+    uint32_t internal_value;  /* set by lfem_attachment_def_default; do not change */
+    double frame[7];          /* null target: the frame at creation, centre (m) and unit
+                                 quaternion (w, x, y, z); default the identity at the origin */
+    double break_force;       /* N: the attachment breaks (is destroyed, with an
+                                 LFEM_EVENT_ATTACHMENT_BROKEN event) when the total force on its
+                                 nodes exceeds this at the end of a sub-step; 0 (default) =
+                                 never */
+} lfem_attachment_def;
+
+LFEM_API lfem_attachment_def lfem_attachment_def_default(void);
+LFEM_API lfem_status lfem_attachment_create(lfem_world* world, const lfem_attachment_def* def,
+                                            lfem_attachment* out);
+LFEM_API lfem_status lfem_attachment_destroy(lfem_world* world, lfem_attachment attachment);
+/* 1 when the handle names a live attachment of this world, else 0. */
+LFEM_API int lfem_attachment_is_valid(const lfem_world* world, lfem_attachment attachment);
+/* Null target only: where the frame is to be at the end of the next lfem_world_step (centre and
+ * unit quaternion); the step moves it there uniformly over its sub-steps (a lerp of the
+ * centre, an nlerp of the rotation), so a frame set once per frame drags the nodes smoothly. */
+LFEM_API lfem_status lfem_attachment_set_frame(lfem_world* world, lfem_attachment attachment,
+                                               const double frame[7]);
+/* The total force (N) the attachment put on the body's nodes at the last sub-step (the target
+ * feels the opposite). */
+LFEM_API lfem_status lfem_attachment_get_force(const lfem_world* world, lfem_attachment attachment,
+                                               double force[3]);
 
 /* ---------------------------------------------------------------------------------------- */
 /* Rigid shapes of static and kinematic bodies                                                */
@@ -555,6 +631,40 @@ typedef struct lfem_contact {
  * node, then body_b and shape), so repeated runs give the same list. */
 LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
                                                uint32_t capacity, uint32_t* count);
+
+/* Events of the last lfem_world_step, fetched rather than called back (as in Box2D v3), so game
+ * logic can play a sound or deal damage without reading every node contact. A pair of bodies
+ * touches while any node of one presses a face or shape of the other. */
+typedef enum lfem_event_type {
+    LFEM_EVENT_CONTACT_BEGIN = 0,      /* a pair began to touch during the call */
+    LFEM_EVENT_CONTACT_END = 1,        /* a pair that touched stopped (a pair that touched and
+                                          parted within one call gives both) */
+    LFEM_EVENT_SLEEP = 2,              /* body_a fell asleep */
+    LFEM_EVENT_WAKE = 3,               /* body_a woke */
+    LFEM_EVENT_ATTACHMENT_BROKEN = 4,  /* attachment (now stale) broke; body_a, body_b: its body
+                                          and target */
+    LFEM_EVENT_TYPE_FORCE32 = 0x7fffffff
+} lfem_event_type;
+
+typedef struct lfem_event {
+    lfem_event_type type;
+    uint32_t padding;
+    lfem_body body_a, body_b;      /* contact: the pair, body_a the lower slot; sleep, wake:
+                                      body_a (body_b null) */
+    lfem_attachment attachment;    /* LFEM_EVENT_ATTACHMENT_BROKEN; else null */
+    double normal_impulse;         /* N s: contact events, the pair's summed normal impulse over
+                                      the call (both ways: nodes of each on faces of the other);
+                                      broken: the attachment's impulse over its last sub-step */
+    double max_force;              /* N: contact events, the largest summed normal force of the
+                                      pair at a sub-step of the call; broken: the force that
+                                      broke it */
+} lfem_event;
+
+/* Copy the events of the last step into out[capacity], in a fixed order (contact events by
+ * pair, then sleep and wake events by body, then broken attachments). Same capacity rules as
+ * lfem_world_query_contacts. */
+LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* out, uint32_t capacity,
+                                           uint32_t* count);
 
 /* ---------------------------------------------------------------------------------------- */
 /* Meshes: builders and Gmsh import                                                           */

@@ -109,13 +109,16 @@ namespace Lfem
         public double ContactTolerance; // default 1e-3
         public uint MaxSubsteps;        // default 1000000
         public byte AllowUnstableStep;  // 1 = skip the up-front stability check, default 0
+        public byte EnableSleep;        // 1 = bodies at rest fall asleep, default 0
 #pragma warning disable 0169, 0649 // set by lfem_world_def_default, never by C#
-        private byte padding0, padding1, padding2;
+        private byte padding1, padding2;
         private uint internalValue;
         private uint padding3;
 #pragma warning restore 0169, 0649
         public double MassScalingStep;  // s; 0 (default) = off: tets that would need a shorter
                                         // sub-step get added mass (see lfem_world_def)
+        public double SleepVelocity;    // m/s, default 0.01
+        public double SleepTime;        // s, default 0.5
 
         /// <summary>The defaults (lfem_world_def_default).</summary>
         public static WorldDef Default { get { return Native.lfem_world_def_default(); } }
@@ -149,6 +152,53 @@ namespace Lfem
         private uint padding;
 #pragma warning restore 0169
         public double MinJacobian;      // the smallest volume ratio J of the tets (1 without any)
+    }
+
+    /// <summary>An attachment handle (lfem_attachment): a value.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Attachment : IEquatable<Attachment>
+    {
+        public uint Index;
+        public uint Generation;
+        public bool Equals(Attachment o) { return Index == o.Index && Generation == o.Generation; }
+        public override bool Equals(object o) { return o is Attachment && Equals((Attachment)o); }
+        public override int GetHashCode() { return (int)(Index * 2654435761u ^ Generation); }
+    }
+
+    /// <summary>lfem_attachment_def (what the native call takes).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct AttachmentDef
+    {
+        public Body Body;
+        public Body Target;       // Body.Null: the caller's frame
+        public IntPtr Nodes;
+        public uint NodeCount;
+        public uint InternalValue;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 7)] public double[] Frame;
+        public double BreakForce;
+    }
+
+    public enum EventType : int
+    {
+        ContactBegin = 0, // a pair began to touch during the step
+        ContactEnd = 1,   // a pair that touched stopped
+        Sleep = 2,        // BodyA fell asleep
+        Wake = 3,         // BodyA woke
+        AttachmentBroken = 4,
+    }
+
+    /// <summary>lfem_event: one event of the last step.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Event
+    {
+        public EventType Type;
+#pragma warning disable 0169 // C padding
+        private uint padding;
+#pragma warning restore 0169
+        public Body BodyA, BodyB;
+        public Attachment Attachment;
+        public double NormalImpulse;  // N s, a pair's over the step
+        public double MaxForce;       // N
     }
 
     /// <summary>lfem_warning: how often, when last, for which body.</summary>
@@ -231,8 +281,12 @@ namespace Lfem
         public IntPtr UserData;       // returned by World.GetUserData
 #pragma warning disable 0169, 0649 // set by lfem_body_def_default, never by C#
         private uint internalValue;
-        private uint padding;
 #pragma warning restore 0169, 0649
+        public byte EnableSleep;      // 1 (default) = may fall asleep when the world allows it
+        public byte SelfContact;      // 1 = the surface collides with itself (deformable only), default 0
+#pragma warning disable 0169 // C padding
+        private byte padding0, padding1;
+#pragma warning restore 0169
 
         /// <summary>The defaults (lfem_body_def_default).</summary>
         public static BodyDef Default { get { return Native.lfem_body_def_default(); } }
@@ -446,6 +500,77 @@ namespace Lfem
         }
 
         public void ResetProfile() { LfemException.Check(Native.lfem_world_reset_profile(handle)); }
+
+        /// <summary>Hold nodes of a deformable body at their offsets in a target body's frame
+        /// (rigid, kinematic or static).</summary>
+        public Attachment Attach(Body body, uint[] nodes, Body target, double breakForce = 0)
+        {
+            return CreateAttachment(body, nodes, target, new double[] { 0, 0, 0, 1, 0, 0, 0 }, breakForce);
+        }
+
+        /// <summary>Hold nodes at their offsets in a frame the caller moves (centre, quaternion
+        /// w x y z at creation).</summary>
+        public Attachment AttachToFrame(Body body, uint[] nodes, double[] frame, double breakForce = 0)
+        {
+            if (frame == null || frame.Length != 7) throw new ArgumentException("frame must hold 7 numbers", "frame");
+            return CreateAttachment(body, nodes, Body.Null, frame, breakForce);
+        }
+
+        Attachment CreateAttachment(Body body, uint[] nodes, Body target, double[] frame, double breakForce)
+        {
+            if (nodes == null) throw new ArgumentNullException("nodes");
+            AttachmentDef d = Native.lfem_attachment_def_default();
+            GCHandle pin = GCHandle.Alloc(nodes, GCHandleType.Pinned);
+            try
+            {
+                d.Body = body;
+                d.Target = target;
+                d.Nodes = pin.AddrOfPinnedObject();
+                d.NodeCount = (uint)nodes.Length;
+                d.Frame = (double[])frame.Clone();
+                d.BreakForce = breakForce;
+                Attachment a;
+                LfemException.Check(Native.lfem_attachment_create(handle, ref d, out a));
+                return a;
+            }
+            finally { pin.Free(); }
+        }
+
+        public void DestroyAttachment(Attachment a) { LfemException.Check(Native.lfem_attachment_destroy(handle, a)); }
+        public bool IsValid(Attachment a) { return Native.lfem_attachment_is_valid(handle, a) == 1; }
+
+        /// <summary>Where the caller's frame is to be at the end of the next step.</summary>
+        public void SetAttachmentFrame(Attachment a, double[] frame)
+        {
+            if (frame == null || frame.Length != 7) throw new ArgumentException("frame must hold 7 numbers", "frame");
+            LfemException.Check(Native.lfem_attachment_set_frame(handle, a, frame));
+        }
+
+        /// <summary>The total force (N) on the attachment's nodes at the last sub-step.</summary>
+        public Vec3 GetAttachmentForce(Attachment a)
+        {
+            Vec3 f; LfemException.Check(Native.lfem_attachment_get_force(handle, a, out f)); return f;
+        }
+
+        public void Wake(Body body) { LfemException.Check(Native.lfem_body_wake(handle, body)); }
+
+        /// <summary>Whether a body is awake (LfemException for a bad handle).</summary>
+        public bool IsAwake(Body body)
+        {
+            int r = Native.lfem_body_is_awake(handle, body);
+            if (r < 0) throw new LfemException(Status.InvalidHandle, "body handle is stale or of another world");
+            return r == 1;
+        }
+
+        /// <summary>The events of the last step.</summary>
+        public Event[] GetEvents()
+        {
+            uint n;
+            Native.lfem_world_get_events(handle, null, 0, out n);
+            Event[] e = new Event[n];
+            LfemException.Check(Native.lfem_world_get_events(handle, e, n, out n));
+            return e;
+        }
 
         /// <summary>One warning counter (lfem_world_get_warning).</summary>
         public Warning GetWarning(WarningKind kind)
@@ -923,6 +1048,15 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_inversion(WorldHandle world, Body body, out uint invertedTets, out double minJacobian, out double invertedFor);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_warning(WorldHandle world, WarningKind kind, out Warning warning);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_clear_warnings(WorldHandle world);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_wake(WorldHandle world, Body body);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern int lfem_body_is_awake(WorldHandle world, Body body);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern AttachmentDef lfem_attachment_def_default();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_attachment_create(WorldHandle world, ref AttachmentDef def, out Attachment attachment);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_attachment_destroy(WorldHandle world, Attachment attachment);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern int lfem_attachment_is_valid(WorldHandle world, Attachment attachment);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_attachment_set_frame(WorldHandle world, Attachment attachment, double[] frame);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_attachment_get_force(WorldHandle world, Attachment attachment, out Vec3 force);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_get_events(WorldHandle world, [Out] Event[] events, uint capacity, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_momentum(WorldHandle world, Body body, out Vec3 linear, out Vec3 angular);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_positions(WorldHandle world, Body body, [Out] Vec3[] positions, uint nodeCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_velocities(WorldHandle world, Body body, [Out] Vec3[] velocities, uint nodeCapacity);

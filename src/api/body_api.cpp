@@ -9,6 +9,7 @@
 
 #include "api/definitions.h"
 #include "api/handles.h"
+#include "api/node_lists.h"
 #include "fem/internal_forces.h"
 
 using namespace lfem;
@@ -34,6 +35,10 @@ void check_body_def(const lfem_body_def& d) {
     require(std::isfinite(d.friction) && d.friction >= 0.0, "def->friction must be finite and >= 0");
     require_finite(d.linear_velocity, 3, "def->linear_velocity");
     require_finite(d.angular_velocity, 3, "def->angular_velocity");
+    require(d.self_contact <= 1, "def->self_contact must be 0 or 1, got " + std::to_string(int(d.self_contact)));
+    require(d.enable_sleep <= 1, "def->enable_sleep must be 0 or 1, got " + std::to_string(int(d.enable_sleep)));
+    require(d.self_contact == 0 || d.type == LFEM_BODY_DEFORMABLE,
+            "def->self_contact needs a deformable body (the others keep their shape)");
 }
 
 }  // namespace lfem::api
@@ -44,19 +49,6 @@ void require_capacity(uint32_t capacity, uint32_t needed, const char* what) {
     if (capacity < needed)
         throw Error(LFEM_BUFFER_TOO_SMALL, std::string(what) + " capacity " + std::to_string(capacity) +
                                                " is below the " + std::to_string(needed) + " needed");
-}
-
-// A list of node indices: in range and without repeats (O(count + nodes)).
-void check_node_list(const Body& b, const uint32_t* nodes, uint32_t count) {
-    require(count == 0 || nodes != nullptr, "nodes is NULL");
-    std::vector<uint8_t> seen(b.ref.node_count(), 0);
-    for (uint32_t i = 0; i < count; ++i) {
-        require(nodes[i] < b.ref.node_count(), "nodes[" + std::to_string(i) + "] = " +
-                                                   std::to_string(nodes[i]) + " is out of range (" +
-                                                   std::to_string(b.ref.node_count()) + " nodes)");
-        require(!seen[nodes[i]], "node " + std::to_string(nodes[i]) + " is listed twice");
-        seen[nodes[i]] = 1;
-    }
 }
 
 // A query of one value of a body: the handle, then the output pointer, then the value.
@@ -101,14 +93,6 @@ void require_deformable(const Body& b, const char* what) {
     require(b.is_deformable(), std::string(what) + " needs a deformable body");
 }
 
-// A checked list of the caller's node indices in the body's internal numbering.
-std::vector<uint32_t> internal_nodes(const Body& b, const uint32_t* nodes, uint32_t count) {
-    check_node_list(b, nodes, count);
-    std::vector<uint32_t> internal(count);
-    for (uint32_t i = 0; i < count; ++i) internal[i] = b.ref.numbering.node(nodes[i]);
-    return internal;
-}
-
 // Fixing, prescribing (at `velocity`) or releasing nodes of a deformable body.
 lfem_status set_node_mode(const char* function, lfem_world* world, lfem_body body, const uint32_t* nodes,
                           uint32_t count, NodeMode mode, const char* what, const double* velocity = nullptr) {
@@ -141,6 +125,7 @@ LFEM_API lfem_body_def lfem_body_def_default(void) {
     d.category_bits = 1u;
     d.mask_bits = 0xFFFFFFFFu;
     d.user_data = nullptr;
+    d.enable_sleep = 1;
     d.internal_value = body_def_cookie;
     return d;
 }
@@ -329,7 +314,7 @@ LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body b
         require_pointer(out, "out");
         const Mat3 R = load_quaternion(b.state.global.rotation).toRotationMatrix();
         for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) out[3 * r + c] = (b.is_rigid() || b.is_paper()) ? R(r, c) : (r == c);
+            for (int c = 0; c < 3; ++c) out[3 * r + c] = (b.is_rigid() || b.is_paper() || b.is_kinematic()) ? R(r, c) : (r == c);
     });
 }
 

@@ -17,6 +17,7 @@ namespace lfem::api {
 constexpr uint32_t world_def_cookie = 0x4C46574Du;  // "LFWM"
 constexpr uint32_t body_def_cookie = 0x4C46424Du;   // "LFBM"
 constexpr uint32_t shape_def_cookie = 0x4C465348u;  // "LFSH"
+constexpr uint32_t attachment_def_cookie = 0x4C464154u;  // "LFAT"
 
 inline World& world_of(lfem_world* w) {
     require_pointer(w, "world");

@@ -33,6 +33,9 @@ void check_world_def(const lfem_world_def& d) {
     require(d.allow_unstable_step <= 1, "def->allow_unstable_step must be 0 or 1");
     require(std::isfinite(d.mass_scaling_step) && d.mass_scaling_step >= 0.0,
             "def->mass_scaling_step must be finite and >= 0 s (0 = no mass scaling)");
+    require(d.enable_sleep <= 1, "def->enable_sleep must be 0 or 1");
+    require(std::isfinite(d.sleep_velocity) && d.sleep_velocity >= 0.0, "def->sleep_velocity must be finite and >= 0 m/s");
+    require(std::isfinite(d.sleep_time) && d.sleep_time >= 0.0, "def->sleep_time must be finite and >= 0 s");
 }
 
 }  // namespace lfem::api
@@ -81,6 +84,9 @@ LFEM_API lfem_world_def lfem_world_def_default(void) {
     d.contact_tolerance = 1e-3;
     d.max_substeps = 1000000;
     d.allow_unstable_step = 0;
+    d.enable_sleep = 0;
+    d.sleep_velocity = 0.01;
+    d.sleep_time = 0.5;
     d.internal_value = world_def_cookie;
     return d;
 }

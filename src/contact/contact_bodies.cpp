@@ -6,6 +6,7 @@ void ContactBodies::clear(uint32_t slot_count) {
     bodies_.clear();
     body_of_slot_.assign(slot_count, UINT32_MAX);
     movable_ = 0;
+    self_contact_ = 0;
 }
 
 void ContactBodies::add(const ContactBodyInput& in) {
@@ -19,6 +20,7 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.node_triangle_begin = in.surface->node_triangle_begin.data();
     cb.node_triangles = in.surface->node_triangles.data();
     cb.static_bvh = in.type == LFEM_BODY_STATIC ? in.static_bvh : nullptr;
+    cb.face_normals = in.type == LFEM_BODY_STATIC ? in.face_normals : nullptr;
     cb.triangles = in.surface->triangles.data();
     cb.triangle_count = in.surface->triangle_count();
     const std::vector<uint32_t>& slaves = in.type == LFEM_BODY_DEFORMABLE ? *in.every_node
@@ -35,6 +37,7 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.friction = in.friction;
     cb.category = in.category;
     cb.mask = in.mask;
+    cb.self_contact = in.self_contact && in.type == LFEM_BODY_DEFORMABLE && cb.triangle_count > 0;
     cb.edge_length = in.surface->edge_length;
     cb.shapes = in.shapes;
     cb.shape_count = in.shape_count;
@@ -43,6 +46,7 @@ void ContactBodies::add(const ContactBodyInput& in) {
     body_of_slot_[in.slot] = uint32_t(bodies_.size());
     bodies_.push_back(cb);
     movable_ += dynamic;
+    self_contact_ += cb.self_contact;
 }
 
 }  // namespace lfem

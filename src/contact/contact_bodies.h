@@ -18,6 +18,7 @@ struct ContactBodyInput {
     uint32_t slot = 0;                   // the body's slot in the world
     uint64_t identity = 0;               // changes whenever the body's geometry does
     const TriangleBvh* static_bvh = nullptr;  // static bodies: the tree of their triangles
+    const double* face_normals = nullptr;     // static bodies: their unit face normals
     lfem_body_type type = LFEM_BODY_STATIC;
     const Surface* surface = nullptr;    // its boundary (triangles, slave candidates)
     const std::vector<uint32_t>* every_node = nullptr;  // 0 .. node_count - 1 (deformable bodies)
@@ -29,6 +30,7 @@ struct ContactBodyInput {
     RigidResponse* rigid = nullptr;      // rigid bodies' response
     double friction = 0;
     uint32_t category = 1, mask = ~0u;
+    bool self_contact = false;           // deformable bodies: the surface collides with itself
     const RigidShape* shapes = nullptr;  // static and kinematic bodies
     uint32_t shape_count = 0;
     const double* shape_pose = nullptr;        // 7 per shape, end of the step
@@ -50,13 +52,14 @@ public:
     // Index in bodies() of the body in a world slot (UINT32_MAX: not in contact).
     const std::vector<uint32_t>& body_of_slot() const { return body_of_slot_; }
     const ContactBody& of_slot(uint32_t slot) const { return bodies_[body_of_slot_[slot]]; }
-    // Contact has work to do: two bodies, one of them moved by forces.
-    bool may_touch() const { return movable_ > 0 && bodies_.size() > 1; }
+    // Contact has work to do: two bodies, one of them moved by forces, or a body that meets
+    // itself.
+    bool may_touch() const { return movable_ > 0 && (bodies_.size() > 1 || self_contact_ > 0); }
 
 private:
     std::vector<ContactBody> bodies_;
     std::vector<uint32_t> body_of_slot_;
-    uint32_t movable_ = 0;
+    uint32_t movable_ = 0, self_contact_ = 0;
 };
 
 }  // namespace lfem

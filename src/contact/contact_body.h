@@ -38,6 +38,8 @@ struct ContactBody {
     const uint32_t* node_triangle_begin = nullptr;  // per node: where its triangles start
     const uint32_t* node_triangles = nullptr;       // (+1 at the end), ascending
     const TriangleBvh* static_bvh = nullptr;  // a static body's tree, built when its mesh was added
+    const double* face_normals = nullptr;     // a static body's unit face normals (3 per triangle,
+                                              // zero: collapsed), made when its mesh was added
     const double* x_start = nullptr;   // 3 per node: positions at the start of the step, x^n
     const double* v_last = nullptr;    // 3 per node: velocity over the last step (deformable
                                        // bodies); nullptr = (x - x_start) / h, this step's
@@ -47,6 +49,7 @@ struct ContactBody {
     RigidResponse* rigid = nullptr;    // a rigid body: its nodes move together (x holds x*)
     double friction = 0;               // Coulomb coefficient of the body's surface
     uint32_t category = 1, mask = ~0u; // collision filter
+    bool self_contact = false;         // its boundary nodes meet its own triangles too
     double edge_length = 0;            // mean boundary edge length (m): sets the tolerances
     const RigidShape* shapes = nullptr; // rigid shapes (static and kinematic bodies)
     uint32_t shape_count = 0;
@@ -64,6 +67,17 @@ inline bool is_movable(const ContactBody& b) { return b.inv_mass != nullptr || b
 inline bool catches_deep_nodes(const ContactBody& b, bool scan_overlaps) {
     return scan_overlaps || b.inv_mass == nullptr;
 }
+
+// The same for a node of `a` against `b`: a body's own nodes lie behind its own faces, so a
+// body never finds them deep inside itself.
+inline bool catches_deep_nodes(const ContactBody& a, const ContactBody& b, bool scan_overlaps) {
+    return &a != &b && catches_deep_nodes(b, scan_overlaps);
+}
+
+// Node p of a self-contact body against one of its own triangles: only a boundary node, and
+// never a triangle around it or next to those (sharing a node with one of them), which it
+// touches by construction. (node_face.cpp)
+bool own_triangle_in_reach(const ContactBody& a, uint32_t p, const uint32_t* triangle);
 
 // Two bodies are checked against each other only if each one's category is in the other's
 // mask, and at least one of them can move.

@@ -126,8 +126,10 @@ void find_partners(const std::vector<ContactBody>& bodies, ContactCandidates& c)
         if (a.node_count > 0) {
             c.found.clear();
             c.body_grid.query(c.slave_box[ai], c.found);
+            // Itself too when it has self-contact (whatever its filter says of bodies like it).
             for (uint32_t bi : c.found)
-                if (bi != ai && bodies[bi].triangle_count > 0 && bodies_may_touch(a, bodies[bi])) c.partners.push_back(bi);
+                if (bi == ai ? a.self_contact : bodies[bi].triangle_count > 0 && bodies_may_touch(a, bodies[bi]))
+                    c.partners.push_back(bi);
         }
         c.partner_begin.push_back(uint32_t(c.partners.size()));
     }
@@ -171,11 +173,15 @@ void search_block(const std::vector<ContactBody>& bodies, const std::vector<uint
         for (uint32_t q = c.partner_begin[ai]; q < c.partner_begin[ai + 1]; ++q) {
             const uint32_t bi = c.partners[q];
             const std::size_t from = triangles.size();
-            const double grow =
-                triangle_growth(contact_length(a, bodies[bi]), c.offset_allowed, catches_deep_nodes(bodies[bi], c.scanned));
             const ContactBody& b = bodies[bi];
+            const bool self = bi == ai;
+            if (self && a.node_triangle_begin[p + 1] == a.node_triangle_begin[p]) continue;  // interior
+            const double grow = triangle_growth(contact_length(a, b), c.offset_allowed, catches_deep_nodes(a, b, c.scanned));
             c.tree_of(bodies, bi).query(point_box(x, c.budget[ai] + c.budget[bi] + grow), b.x, b.triangles, 0.0,
-                                        [&](uint32_t t) { triangles.push_back(uint64_t(bi) << 32 | t); });
+                                        [&](uint32_t t) {
+                                            if (!self || own_triangle_in_reach(a, p, b.triangles + 3 * std::size_t(t)))
+                                                triangles.push_back(uint64_t(bi) << 32 | t);
+                                        });
             std::sort(triangles.begin() + from, triangles.end());  // partners ascend, so does the list
             for (std::size_t k = from; k < triangles.size(); ++k)
                 static_box.push_back(bodies[bi].moves ? empty_box() : triangle_step_box(bodies[bi], uint32_t(triangles[k]), 0.0));

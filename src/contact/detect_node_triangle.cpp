@@ -78,11 +78,12 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     double allowance = 0.0, grow = 0.0;
     bool first_touch = false;
     uint32_t grow_body = UINT32_MAX;
+    const Vec3* normal = nullptr;
     for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
         const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
         const ContactBody& b = in.bodies[bi];
         if (bi != grow_body)
-            grow = triangle_growth(contact_length(a, b), in.max_offset, catches_deep_nodes(b, in.scan_overlaps)),
+            grow = triangle_growth(contact_length(a, b), in.max_offset, catches_deep_nodes(a, b, in.scan_overlaps)),
             grow_body = bi;
         // A static triangle's box is the one the search kept; a moving one's is made anew.
         Aabb reach = b.moves ? triangle_step_box(b, t, grow) : c.static_box[k];
@@ -97,9 +98,10 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             const ContactRecord* last = previous.find(a.slot, p, b.slot);
             block.last.push_back(last);
             allowance = 1.25 * kept_offset(last) + kResidualDepth * contact_length(a, b);
-            first_touch = catches_deep_nodes(b, in.scan_overlaps) && last == nullptr;
+            first_touch = catches_deep_nodes(a, b, in.scan_overlaps) && last == nullptr;
         }
-        test_node_triangle(a, p, normal_of(in, g, slave_normals, ready), b, t, allowance, block.best.back(),
+        if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
+        test_node_triangle(a, p, *normal, b, t, allowance, block.best.back(),
                            first_touch ? &block.deep.back() : nullptr);
     }
     // An overlap met for the first time: accepted when nothing of the other body lies between

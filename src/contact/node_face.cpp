@@ -31,13 +31,17 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
                         const ContactBody& b, uint32_t t, double depth_allowance, NodeCandidate& best,
                         NodeCandidate* deep) {
     const uint32_t* tri = &b.triangles[3 * t];
-    if (a.slot == b.slot) return;  // self-contact is not handled here
     const Vec3 pa = position(b.x, tri[0]), pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
-    const Vec3 qa = position(b.x_start, tri[0]), qb = position(b.x_start, tri[1]), qc = position(b.x_start, tri[2]);
-    const Vec3 n_end = (pb - pa).cross(pc - pa), n_start = (qb - qa).cross(qc - qa);
-    const double area2 = n_end.norm(), area2_start = n_start.norm();
-    if (!(area2 > 0.0) || !(area2_start > 0.0)) return;  // a collapsed face has no normal
-    const Vec3 n = n_end / area2;
+    Vec3 n;
+    if (b.face_normals) {  // a static body's, made once
+        n = position(b.face_normals, t);
+        if (n.squaredNorm() == 0.0) return;  // a collapsed face has no normal
+    } else {
+        const Vec3 n_end = (pb - pa).cross(pc - pa);
+        const double area2 = n_end.norm();
+        if (!(area2 > 0.0)) return;
+        n = n_end / area2;
+    }
     // Surfaces in contact face each other. A face whose normal points the same way as the
     // node's own surface normal is the far side of an edge the node sits on (a cube's corner
     // node resting on another cube's top face also lies in the plane of its side face): taking
@@ -50,17 +54,43 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     const double l = contact_length(a, b);
     if (gap > kCaptureBand * l) return;
     if (gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return;
-    const double start_gap = (n_start / area2_start).dot(x_start - qa);
+    // A body's own face is met only by a part of its surface that comes at it from outside:
+    // facing it, at any depth (a node behind a face of its own body is inside the body).
+    if (&a == &b && !(n.dot(node_normal) < 0.0)) return;
+    // A static face is where it was at the start (the same bits), so its start normal is n.
+    const bool still = !b.moves;
+    const Vec3 qa = still ? pa : position(b.x_start, tri[0]);
+    double start_gap;
+    if (still) {
+        start_gap = n.dot(x_start - qa);
+    } else {
+        const Vec3 n_start = (position(b.x_start, tri[1]) - qa).cross(position(b.x_start, tri[2]) - qa);
+        const double area2_start = n_start.norm();
+        if (!(area2_start > 0.0)) return;
+        start_gap = (n_start / area2_start).dot(x_start - qa);
+    }
     NodeCandidate* slot = &best;
     if (start_gap < -depth_allowance) {
         // Deeper than the pair was left: only a possible initial overlap (checked later).
         if (start_gap < -kInitialDepth * l || !deep) return;
         slot = deep;
     }
+    NodeCandidate& c = *slot;
+    if (c.found && gap <= c.gap) return;  // keep the face penetrated least
     double w[3];
     if (start_gap >= 0.0 && gap < 0.0) {
         // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
-        // with the triangle moved by the same fraction of its own step.
+        // with the triangle moved by the same fraction of its own step. Against a static face
+        // the weights are affine along the path: outside at both ends by more than the edge
+        // tolerance (and a margin for rounding), outside in between.
+        if (still) {
+            double w_start[3], w_end[3];
+            barycentric(x_start, pa, pb, pc, w_start);
+            barycentric(x_end, pa, pb, pc, w_end);
+            for (int k = 0; k < 3; ++k)
+                if (w_start[k] < -kEdgeTolerance - 1e-9 && w_end[k] < -kEdgeTolerance - 1e-9) return;
+        }
+        const Vec3 qb = still ? pb : position(b.x_start, tri[1]), qc = still ? pc : position(b.x_start, tri[2]);
         const double s = start_gap / (start_gap - gap);
         barycentric(x_start + s * (x_end - x_start), qa + s * (pa - qa), qb + s * (pb - qb),
                     qc + s * (pc - qc), w);
@@ -69,8 +99,6 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     }
     for (double wi : w)
         if (!(wi >= -kEdgeTolerance)) return;
-    NodeCandidate& c = *slot;
-    if (c.found && gap <= c.gap) return;  // keep the face penetrated least
     c.found = true;
     c.triangle = t;
     c.shape = UINT32_MAX;
@@ -120,6 +148,18 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
     // The same material point of the shape at the start of the step.
     best.point_start = pose_start.center +
                        pose_start.rotation * (pose_end.rotation.conjugate() * (best.point_end - pose_end.center));
+}
+
+bool own_triangle_in_reach(const ContactBody& a, uint32_t p, const uint32_t* triangle) {
+    const uint32_t begin = a.node_triangle_begin[p], end = a.node_triangle_begin[p + 1];
+    if (begin == end) return false;  // an interior node
+    for (uint32_t k = begin; k < end; ++k) {
+        const uint32_t* around = &a.triangles[3 * std::size_t(a.node_triangles[k])];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                if (around[i] == triangle[j]) return false;
+    }
+    return true;
 }
 
 // The constraint of node p of `a` against the candidate face or shape of `b`, warm-started

@@ -5,49 +5,12 @@
 #include <cmath>
 
 #include "common/thread_pool.h"
+#include "contact/constraint_point.h"
+#include "contact/link_constraint.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
 namespace {
-
-// One of the four points of a constraint (the node, or a triangle node): a free node that the
-// solve moves directly, or a point of a rigid body, moved through the body's centre and
-// rotation corrections (its position is evaluated from them when asked).
-struct PointRef {
-    double* x = nullptr;         // free node: its position (x*, corrected in place)
-    const double* x0 = nullptr;  // position at the start of the step
-    double w = 0;                // free node: 1/mhat
-    RigidResponse* rigid = nullptr;
-    Vec3 base = Vec3::Zero();    // rigid point: its predicted position
-    Vec3 arm = Vec3::Zero();     // rigid point: predicted position minus predicted centre
-
-    Vec3 position() const {
-        if (rigid) return base + rigid->dc + rigid->dtheta.cross(arm);
-        return Vec3(x[0], x[1], x[2]);
-    }
-    // Inverse effective mass along unit direction n.
-    double response(const Vec3& n) const {
-        if (rigid) {
-            const Vec3 rn = arm.cross(n);
-            return rigid->inv_mass + rn.dot(rigid->inv_inertia * rn);
-        }
-        return w;
-    }
-    // Apply the force increment d (N) to this point; returns how far it moved.
-    double push(const Vec3& d) {
-        if (rigid) {
-            const Vec3 before = position();
-            rigid->dc += rigid->inv_mass * d;
-            rigid->dtheta += rigid->inv_inertia * arm.cross(d);
-            return (position() - before).cwiseAbs().maxCoeff();
-        }
-        // An immovable point (static, kinematic or fixed) is not written at all: the contact
-        // groups solved side by side may share it (a static floor's nodes).
-        if (w == 0.0) return 0.0;
-        for (int k = 0; k < 3; ++k) x[k] += w * d[k];
-        return w * d.cwiseAbs().maxCoeff();
-    }
-};
 
 // The pieces of one constraint the sweeps need, resolved once.
 struct Pair {
@@ -57,20 +20,6 @@ struct Pair {
     double H;      // the pair's scalar block of G Mhat^-1 G^T along the normal
     double mu;
 };
-
-PointRef point_of(const ContactBody& b, uint32_t i) {
-    PointRef p;
-    p.x = b.x + 3 * std::size_t(i);
-    p.x0 = b.x_start + 3 * std::size_t(i);
-    if (b.rigid) {
-        p.rigid = b.rigid;
-        p.base = Vec3(p.x[0], p.x[1], p.x[2]);
-        p.arm = p.base - b.rigid->center;
-    } else {
-        p.w = b.inv_mass ? b.inv_mass[i] : 0.0;
-    }
-    return p;
-}
 
 // Move the pair's points by Mhat^-1 G_j^T d: the node by +d, triangle node k by -N_k d.
 // Linear momentum is kept exactly. Returns the largest move.
@@ -105,8 +54,14 @@ double last_velocity(const ContactBody& b, uint32_t i, int k, double h) {
 // predicted motion, which under a resting load is mostly the sag that contact undoes. At least
 // 1e-9 of the finest boundary edge, for when nothing moves.
 double stopping_tolerance(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                          const std::vector<ContactRecord>& records, double relative_tolerance, double h) {
+                          const std::vector<ContactRecord>& records, const std::vector<LinkRecord>& links,
+                          double relative_tolerance, double h) {
     double motion = 0.0, length = HUGE_VAL;
+    for (const LinkRecord& l : links) {  // a held node: its own motion against its target's
+        const ContactBody& a = bodies[body_of_slot[l.body_a]];
+        for (int d = 0; d < 3; ++d) motion = std::max(motion, std::fabs(last_velocity(a, l.node, d, h)) * h);
+        length = std::min(length, a.edge_length);
+    }
     for (const ContactRecord& r : records) {
         const ContactBody& a = bodies[body_of_slot[r.body_a]];
         const ContactBody& b = bodies[body_of_slot[r.body_b]];
@@ -139,10 +94,19 @@ struct GroupResult {
 
 // Projected Gauss-Seidel over one group's pairs (indices `order`, in list order): the warm
 // start, then sweeps until one moves no point by more than `tolerance`.
+// A group's links: links[order[0 .. count)] with their pairs.
+struct GroupLinks {
+    std::vector<LinkRecord>& links;
+    std::vector<LinkPair>& pairs;
+    const uint32_t* order;
+    uint32_t count;
+};
+
 void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, const uint32_t* order,
-                 uint32_t count, uint32_t max_iterations, double tolerance, GroupResult& out) {
+                 uint32_t count, const GroupLinks& held, uint32_t max_iterations, double tolerance, GroupResult& out) {
     const auto group_start = std::chrono::steady_clock::now();
     ContactSolveResult& result = out.solve;
+    for (uint32_t k = 0; k < held.count; ++k) warm_start_link(held.links[held.order[k]], held.pairs[held.order[k]]);
     // Warm start: the multipliers the records carry in (last step's, for the same node and
     // body) are applied first, so a resting contact starts converged.
     for (uint32_t k = 0; k < count; ++k) {
@@ -182,6 +146,8 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
             largest = std::max(largest, apply(q, (lambda_n - r.lambda_n) * n));
             r.lambda_n = lambda_n;
         }
+        for (uint32_t k = 0; k < held.count; ++k)
+            largest = std::max(largest, update_link(held.links[held.order[k]], held.pairs[held.order[k]]));
         if (any_friction) {
             const auto start = std::chrono::steady_clock::now();
             for (uint32_t k = 0; k < count; ++k) {
@@ -267,7 +233,9 @@ void make_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32
 // The solve's arrays, kept from sub-step to sub-step for their capacity.
 struct ContactSolveScratch::Arrays {
     std::vector<Pair> pairs;
+    std::vector<LinkPair> link_pairs;
     std::vector<uint32_t> parent, group_of_root, group_of_pair, group_begin, order, next;
+    std::vector<uint32_t> group_of_link, link_begin, link_order;
     std::vector<GroupResult> results;
 };
 
@@ -276,38 +244,49 @@ ContactSolveScratch::~ContactSolveScratch() = default;
 
 namespace {
 
+// The members of each group in list order (a counting sort): order[begin[g] .. begin[g+1]).
+void sort_by_group(const std::vector<uint32_t>& group_of, uint32_t groups, std::vector<uint32_t>& begin,
+                   std::vector<uint32_t>& order, std::vector<uint32_t>& next) {
+    begin.assign(groups + 1, 0);
+    order.resize(group_of.size());
+    for (uint32_t g : group_of) ++begin[g + 1];
+    for (uint32_t g = 0; g < groups; ++g) begin[g + 1] += begin[g];
+    next.assign(begin.begin(), begin.end() - 1);
+    for (std::size_t j = 0; j < group_of.size(); ++j) order[next[group_of[j]]++] = uint32_t(j);
+}
+
 uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                     const std::vector<ContactRecord>& records, ContactSolveScratch::Arrays& s) {
+                     const std::vector<ContactRecord>& records, const std::vector<LinkRecord>& links,
+                     ContactSolveScratch::Arrays& s) {
     const uint32_t nb = uint32_t(bodies.size());
     std::vector<uint32_t>& parent = s.parent;
     parent.resize(nb);
     for (uint32_t i = 0; i < nb; ++i) parent[i] = i;
-    for (const ContactRecord& r : records) {
-        const uint32_t a = body_of_slot[r.body_a], b = body_of_slot[r.body_b];
+    auto link_bodies = [&](uint32_t a, uint32_t b) {
         if (is_movable(bodies[a]) && is_movable(bodies[b])) parent[root_of(parent, a)] = root_of(parent, b);
-    }
-    // Group numbers in order of first appearance in the list; a pair's group is that of its
-    // movable body (the node's, or else the triangle's).
+    };
+    for (const ContactRecord& r : records) link_bodies(body_of_slot[r.body_a], body_of_slot[r.body_b]);
+    for (const LinkRecord& l : links)
+        if (l.body_b != UINT32_MAX) link_bodies(body_of_slot[l.body_a], body_of_slot[l.body_b]);
+    // Group numbers in order of first appearance in the list, then in the links; a pair's group
+    // is that of its movable body (the node's, or else the triangle's).
     std::vector<uint32_t>& group_of_root = s.group_of_root;
-    std::vector<uint32_t>& group_of_pair = s.group_of_pair;
     group_of_root.assign(nb, UINT32_MAX);
-    group_of_pair.resize(records.size());
     uint32_t groups = 0;
-    for (std::size_t j = 0; j < records.size(); ++j) {
-        const uint32_t a = body_of_slot[records[j].body_a], b = body_of_slot[records[j].body_b];
-        const uint32_t root = root_of(parent, is_movable(bodies[a]) ? a : b);
+    auto group_of = [&](uint32_t a, uint32_t b) {
+        const uint32_t root = root_of(parent, is_movable(bodies[a]) || b == UINT32_MAX ? a : b);
         if (group_of_root[root] == UINT32_MAX) group_of_root[root] = groups++;
-        group_of_pair[j] = group_of_root[root];
-    }
-    // The pairs of each group, in list order (a counting sort).
-    std::vector<uint32_t>& begin = s.group_begin;
-    std::vector<uint32_t>& order = s.order;
-    begin.assign(groups + 1, 0);
-    order.resize(records.size());
-    for (uint32_t g : group_of_pair) ++begin[g + 1];
-    for (uint32_t g = 0; g < groups; ++g) begin[g + 1] += begin[g];
-    s.next.assign(begin.begin(), begin.end() - 1);
-    for (std::size_t j = 0; j < records.size(); ++j) order[s.next[group_of_pair[j]]++] = uint32_t(j);
+        return group_of_root[root];
+    };
+    s.group_of_pair.resize(records.size());
+    for (std::size_t j = 0; j < records.size(); ++j)
+        s.group_of_pair[j] = group_of(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b]);
+    s.group_of_link.resize(links.size());
+    for (std::size_t j = 0; j < links.size(); ++j)
+        s.group_of_link[j] = group_of(body_of_slot[links[j].body_a],
+                                      links[j].body_b == UINT32_MAX ? UINT32_MAX : body_of_slot[links[j].body_b]);
+    sort_by_group(s.group_of_pair, groups, s.group_begin, s.order, s.next);
+    sort_by_group(s.group_of_link, groups, s.link_begin, s.link_order, s.next);
     return groups;
 }
 
@@ -315,24 +294,27 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
 
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
-                                             std::vector<ContactRecord>& records,
+                                             std::vector<ContactRecord>& records, std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
                                              double h, ContactSolveScratch& scratch, lfem_profile& profile,
                                              ThreadPool* pool) {
     // The whole solve is timed as the normal part; the friction passes' share of it is moved
     // to the friction part at the end.
     const auto solve_start = std::chrono::steady_clock::now();
-    const double tolerance = stopping_tolerance(bodies, body_of_slot, records, relative_tolerance, h);
+    const double tolerance = stopping_tolerance(bodies, body_of_slot, records, links, relative_tolerance, h);
     ContactSolveScratch::Arrays& s = scratch.arrays();
     std::vector<Pair>& pairs = s.pairs;
     make_pairs(bodies, body_of_slot, records, pairs);
-    const uint32_t groups = group_pairs(bodies, body_of_slot, records, s);
+    make_link_pairs(bodies, body_of_slot, links, s.link_pairs);
+    const uint32_t groups = group_pairs(bodies, body_of_slot, records, links, s);
     const std::vector<uint32_t>& begin = s.group_begin;
     const std::vector<uint32_t>& order = s.order;
     std::vector<GroupResult>& results = s.results;
     results.assign(groups, GroupResult{});
     parallel_for(pool, groups, [&](uint32_t g) {
-        solve_group(records, pairs, order.data() + begin[g], begin[g + 1] - begin[g], max_iterations,
+        const GroupLinks held{links, s.link_pairs, s.link_order.data() + s.link_begin[g],
+                              s.link_begin[g + 1] - s.link_begin[g]};
+        solve_group(records, pairs, order.data() + begin[g], begin[g + 1] - begin[g], held, max_iterations,
                     tolerance, results[g]);
     });
 

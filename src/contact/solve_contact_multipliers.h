@@ -12,6 +12,7 @@
 #include "common/thread_pool.h"
 #include "contact/contact_body.h"
 #include "contact/contact_record.h"
+#include "contact/link_constraint.h"
 #include "lfem.h"
 
 namespace lfem {
@@ -46,11 +47,13 @@ struct ContactSolveResult {
 // the step, times h), or 1e-9 of the finest boundary edge when nothing moves (resting
 // contact). Pairs linked through no movable body form groups that converge on their own, side
 // by side on the pool (results independent of the thread count). The result gives the
-// iterations and residual of the slowest group. Adds its time to profile.normal_solve and,
+// iterations and residual of the slowest group. The attachments' links (link_constraint.h)
+// are solved in the same sweeps, each in the group of its bodies; they carry their multipliers
+// in and out like the records. Adds its time to profile.normal_solve and,
 // when a pair has friction, profile.friction.
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
-                                             std::vector<ContactRecord>& records,
+                                             std::vector<ContactRecord>& records, std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
                                              double h, ContactSolveScratch& scratch, lfem_profile& profile,
                                              ThreadPool* pool);

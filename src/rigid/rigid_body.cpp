@@ -93,7 +93,7 @@ double commit_rigid(const RigidBodyView& b, double h, const Vec3& dc, const Vec3
     return rigid_kinetic_energy(b, m) - before;
 }
 
-void move_kinematic(const Vec3& lin, const Vec3& ang, double h, double center[3], Span<double> x,
+void move_kinematic(const Vec3& lin, const Vec3& ang, double h, double center[3], double rotation[4], Span<double> x,
                     Span<double> shape_poses) {
     const Vec3 c_old(center);
     const Vec3 c_new = c_old + h * lin;
@@ -111,6 +111,7 @@ void move_kinematic(const Vec3& lin, const Vec3& ang, double h, double center[3]
         store_quaternion(q, &shape_poses[j + 3]);
     }
     for (int k = 0; k < 3; ++k) center[k] = c_new[k];
+    store_quaternion((turn * load_quaternion(rotation)).normalized(), rotation);
 }
 
 }  // namespace lfem

@@ -41,8 +41,10 @@ Vec3 rigid_synchronized_velocity(const RigidBodyView& body, const GlobalMotion& 
 
 // A kinematic body moves rigidly: its centre by v h, its nodes (3 per node) and the
 // placements of its shapes (7 per shape: centre, quaternion w, x, y, z) turned by omega h
-// about the centre.
-void move_kinematic(const Vec3& linear, const Vec3& angular, double h, double center[3], Span<double> x,
+// about the centre, and its rotation since it was created (a quaternion, for what is attached
+// to it) by the same turn.
+void move_kinematic(const Vec3& linear, const Vec3& angular, double h, double center[3], double rotation[4],
+                    Span<double> x,
                     Span<double> shape_poses);
 
 // Kinetic energy 1/2 M V^2 + 1/2 L . omega (last step's values), and the angular velocity.

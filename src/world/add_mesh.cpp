@@ -201,8 +201,20 @@ void derive_reference_data(const Body& body, BodyReference& ref) {
     if (body.is_deformable())
         for (uint32_t i = 0; i < ref.node_count(); ++i) ref.every_node.push_back(i);
     ref.bvh = TriangleBvh{};
-    if (body.def.type == LFEM_BODY_STATIC)  // never moves: its tree is built once, here
-        ref.bvh.build(ref.X.data(), ref.surface.triangles.data(), ref.surface.triangle_count());
+    ref.face_normals.clear();
+    if (body.def.type != LFEM_BODY_STATIC) return;
+    // Never moves: its tree and its faces' normals are made once, here (as contact would make
+    // them at every sub-step: the same bits).
+    ref.bvh.build(ref.X.data(), ref.surface.triangles.data(), ref.surface.triangle_count());
+    ref.face_normals.assign(3 * std::size_t(ref.surface.triangle_count()), 0.0);
+    for (uint32_t t = 0; t < ref.surface.triangle_count(); ++t) {
+        const uint32_t* tri = &ref.surface.triangles[3 * std::size_t(t)];
+        const Vec3 pa(&ref.X[3 * std::size_t(tri[0])]), pb(&ref.X[3 * std::size_t(tri[1])]), pc(&ref.X[3 * std::size_t(tri[2])]);
+        const Vec3 n = (pb - pa).cross(pc - pa);
+        const double area2 = n.norm();
+        if (area2 > 0.0)
+            for (int k = 0; k < 3; ++k) ref.face_normals[3 * std::size_t(t) + k] = (n / area2)[k];
+    }
 }
 
 void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_count, const uint32_t* tets,

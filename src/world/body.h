@@ -42,6 +42,8 @@ struct BodyReference {
     ElementColouring colouring;     // blocks of tets for the parallel element loop (derived
                                     // from tets: rebuilt, not saved, by checkpoints)
     std::vector<uint32_t> every_node;  // deformable bodies: 0 .. node_count - 1, the contact slaves
+    std::vector<double> face_normals; // static bodies: each boundary triangle's unit outward
+                                      // normal (3 each; zero for a collapsed one), derived
     TriangleBvh bvh;                // static bodies: the tree of the boundary triangles, built
                                     // when the mesh is added (derived, like the colouring)
 
@@ -69,6 +71,8 @@ struct BodyState {
     double inverted_since = -1;    // s: when the body's tets last began to be inverted (-1: none are)
     double stiffening = 1;         // neo-Hookean: how much stiffer the stiffest tet is at x than
                                    // at rest (>= 1; neo_hookean_tangent.h); 1 for the others
+    double sleep_timer = 0;        // s: how long every node has moved slower than sleep_velocity
+    uint32_t asleep = 0;           // 1: not stepped until it wakes (lfem_world_def.enable_sleep)
     GlobalMotion global;           // paper model: frame rotation and L of eq. (2); rigid: the
                                    // whole motion; kinematic: the pivot (center)
     std::vector<double> shape_pose;  // 7 per rigid shape: its current placement
@@ -91,6 +95,12 @@ struct Body {
     bool is_rigid() const { return def.type == LFEM_BODY_RIGID; }
     bool is_kinematic() const { return def.type == LFEM_BODY_KINEMATIC; }
     bool is_dynamic() const { return is_deformable() || is_rigid(); }  // moved by forces
+    bool is_static() const { return def.type == LFEM_BODY_STATIC; }
+    bool moves_kinematically() const {
+        const double* v = def.linear_velocity;
+        const double* w = def.angular_velocity;
+        return is_kinematic() && (v[0] != 0 || v[1] != 0 || v[2] != 0 || w[0] != 0 || w[1] != 0 || w[2] != 0);
+    }
     bool is_paper() const { return is_deformable() && def.model == LFEM_MODEL_PAPER; }
     bool has_mesh() const { return !ref.X.empty(); }  // tets, or a static triangle surface
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }

@@ -13,13 +13,20 @@ namespace {
 // never match a slot's generation in this one: it is detected like a stale handle.
 std::atomic<uint32_t> g_next_generation{1};
 
+}  // namespace
+
 uint32_t next_generation() {
     uint32_t g = g_next_generation.fetch_add(1, std::memory_order_relaxed);
     if (g == 0) g = g_next_generation.fetch_add(1, std::memory_order_relaxed);  // wrapped
     return g;
 }
 
-}  // namespace
+void keep_generations_above(uint32_t highest) {
+    uint32_t next = g_next_generation.load(std::memory_order_relaxed);
+    while (next <= highest &&
+           !g_next_generation.compare_exchange_weak(next, highest + 1, std::memory_order_relaxed)) {
+    }
+}
 
 lfem_body BodyRegistry::create(const lfem_body_def& def) {
     uint32_t index;
@@ -71,10 +78,7 @@ void BodyRegistry::restore(std::vector<Body>&& slots, std::vector<uint32_t>&& fr
     for (const Body& b : slots) highest = std::max(highest, b.generation);
     slots_ = std::move(slots);
     free_slots_ = std::move(free_slots);
-    uint32_t next = g_next_generation.load(std::memory_order_relaxed);
-    while (next <= highest &&
-           !g_next_generation.compare_exchange_weak(next, highest + 1, std::memory_order_relaxed)) {
-    }
+    keep_generations_above(highest);
 }
 
 }  // namespace lfem

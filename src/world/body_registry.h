@@ -11,6 +11,12 @@
 
 namespace lfem {
 
+// Handles' generations come from one process-wide counter (bodies and attachments alike), so a
+// handle of another world can never match a slot here. keep_generations_above(g): after a
+// checkpoint is loaded, no generation up to g is handed out again.
+uint32_t next_generation();
+void keep_generations_above(uint32_t highest);
+
 class BodyRegistry {
 public:
     // A new body (generation from the process-wide counter) in a free slot or a new one.

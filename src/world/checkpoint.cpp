@@ -22,11 +22,12 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 6;  // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 7;  // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
-                                        // 5: inverted tets and the warnings
-                                        // 6: 10-node tets (nodes per tet, quadrature volumes,
+                                        // 5: inverted tets and the warnings; 6: attachments,
+                                        // sleeping, the touching pairs
+                                        // 7: 10-node tets (nodes per tet, quadrature volumes,
                                         // 6-node faces)
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
@@ -34,9 +35,10 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 624,  // colouring, node-triangle lists, tree: derived
+static_assert(sizeof(BodyReference) == 648,  // colouring, node-triangle lists, tree: derived
               "BodyReference changed: update the checkpoint");
-static_assert(sizeof(BodyState) == 296, "BodyState changed: update the checkpoint");
+static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
+static_assert(sizeof(Attachment) == 240, "Attachment changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
@@ -128,6 +130,14 @@ void counter_fields(A& a, C& c) {
         a(w->count), a(w->last_time), a(w->last_slot), a(w->last_generation);
 }
 
+template <class A, class T>
+void attachment_fields(A& a, T& t) {
+    a(t.generation);
+    if (t.generation == 0) return;  // a free slot
+    a(t.body), a(t.body_generation), a(t.target), a(t.target_generation), a(t.nodes), a(t.offsets), a(t.lambda);
+    a(t.frame_start), a(t.frame_end), a(t.break_force), a(t.force);
+}
+
 template <class A, class C>
 void contact_fields(A& a, C& c) {
     a(c.body_a), a(c.node), a(c.body_b), a(c.triangle), a(c.shape), a(c.point_start);
@@ -165,7 +175,8 @@ void body_fields(A& a, B& b) {
     a(r.numbering.node_of_api), a(r.numbering.api_of_node), a(r.numbering.api_of_tet);
     auto& s = b.state;
     a(s.x), a(s.v_half), a(s.elastic), a(s.tet_rotation), a(s.contact_force), a(s.h_last);
-    a(s.strain_energy), a(s.inverted_tets), a(s.min_jacobian), a(s.inverted_since), a(s.stiffening), a(s.global.rotation), a(s.global.angular_momentum), a(s.global.center);
+    a(s.strain_energy), a(s.inverted_tets), a(s.min_jacobian), a(s.inverted_since), a(s.stiffening), a(s.sleep_timer);
+    a(s.asleep), a(s.global.rotation), a(s.global.angular_momentum), a(s.global.center);
     a(s.global.velocity);
     a(s.shape_pose);
     a(b.node_mode), a(b.prescribed_velocity), a(b.node_force);
@@ -188,6 +199,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     const BodyState& s = b.state;
     require(b.def.type >= LFEM_BODY_DEFORMABLE && b.def.type <= LFEM_BODY_RIGID, "bad body type");
     require(b.def.model >= LFEM_MODEL_PAPER && b.def.model <= LFEM_MODEL_LINEAR, "bad model");
+    require(b.def.self_contact <= 1 && (b.def.self_contact == 0 || b.is_deformable()), "bad self-contact flag");
     require(r.X.size() % 3 == 0, "bad reference positions");
     require(r.nodes_per_tet == 4 || r.nodes_per_tet == 10, "bad nodes per tet");
     const bool quadratic = r.nodes_per_tet == 10;
@@ -254,6 +266,27 @@ void check_image(const WorldImage& im, const std::string& path) {
             in_range = in_range && c.shape < b.shapes.size();
         if (!in_range) fail(path, "a contact index is out of range");
     }
+    auto live = [&](uint32_t slot, uint32_t generation) {
+        return slot < im.bodies.size() && im.bodies[slot].generation != 0 && im.bodies[slot].generation == generation;
+    };
+    const Attachments& all = im.state.attachments;
+    for (const Attachment& t : all.slots) {
+        if (t.generation == 0) continue;
+        if (!live(t.body, t.body_generation) || !im.bodies[t.body].is_deformable())
+            fail(path, "an attachment names a missing body");
+        if (t.target != kFrameTarget && (!live(t.target, t.target_generation) || im.bodies[t.target].is_deformable()))
+            fail(path, "an attachment names a missing target");
+        bool ok = !t.nodes.empty() && t.offsets.size() == 3 * t.nodes.size() && t.lambda.size() == t.offsets.size();
+        for (uint32_t n : t.nodes) ok = ok && n < im.bodies[t.body].ref.node_count();
+        for (const std::vector<double>* v : {&t.offsets, &t.lambda})
+            for (double x : *v) ok = ok && std::isfinite(x);
+        if (!ok) fail(path, "an attachment's nodes or offsets are inconsistent");
+    }
+    for (uint32_t f : all.free_slots)
+        if (f >= all.slots.size() || all.slots[f].generation != 0) fail(path, "bad free attachment list");
+    for (uint64_t key : im.state.touching)
+        if (uint32_t(key >> 32) >= im.bodies.size() || uint32_t(key) >= im.bodies.size())
+            fail(path, "a touching pair names a missing body");
 }
 
 void put_u32(std::string& s, uint32_t v) { s.append(reinterpret_cast<const char*>(&v), 4); }
@@ -280,6 +313,11 @@ void save_checkpoint(const World& world, const std::string& path) {
     w(world.bodies().free_slots());
     w(uint64_t(world.state().contacts.size()));
     for (const ContactRecord& c : world.state().contacts) contact_fields(w, c);
+    const Attachments& attachments = world.state().attachments;
+    w(uint64_t(attachments.slots.size()));
+    for (const Attachment& t : attachments.slots) attachment_fields(w, t);
+    w(attachments.free_slots);
+    w(world.state().touching);
 
     std::string file(kMagic, sizeof kMagic);
     put_u32(file, kFormatVersion);
@@ -350,6 +388,13 @@ WorldImage read_checkpoint(const std::string& path) {
     if (contacts > size) fail(path, "truncated (contact count)");
     im.state.contacts.resize(std::size_t(contacts));
     for (ContactRecord& c : im.state.contacts) contact_fields(r, c);
+    uint64_t attachments = 0;
+    r(attachments);
+    if (attachments > size) fail(path, "truncated (attachment count)");
+    im.state.attachments.slots.resize(std::size_t(attachments));
+    for (Attachment& t : im.state.attachments.slots) attachment_fields(r, t);
+    r(im.state.attachments.free_slots);
+    r(im.state.touching);
     if (!r.at_end()) fail(path, "has bytes after its last record");
     check_image(im, path);
     return im;

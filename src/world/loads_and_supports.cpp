@@ -8,8 +8,10 @@
 
 namespace lfem {
 
+// Each change wakes the body first (wake() changes nothing if it fails).
 void World::set_velocities(lfem_body handle, const double* v) {
     Body& body = bodies_.get(handle);
+    wake(handle.index);
     const uint32_t n = body.ref.node_count();
     double before = 0.0, after = 0.0;
     if (body.is_deformable()) {
@@ -36,6 +38,7 @@ void World::set_velocities(lfem_body handle, const double* v) {
 void World::set_node_mode(lfem_body handle, const uint32_t* nodes, uint32_t count, NodeMode mode,
                           const double velocity[3]) {
     Body& body = bodies_.get(handle);
+    wake(handle.index);
     if (mode == NodeMode::prescribed && body.prescribed_velocity.empty())
         body.prescribed_velocity.assign(3 * std::size_t(body.ref.node_count()), 0.0);
     for (uint32_t i = 0; i < count; ++i) {
@@ -47,17 +50,21 @@ void World::set_node_mode(lfem_body handle, const uint32_t* nodes, uint32_t coun
 
 void World::set_node_forces(lfem_body handle, const uint32_t* nodes, uint32_t count, const double* forces) {
     Body& body = bodies_.get(handle);
+    wake(handle.index);
     if (body.node_force.empty()) body.node_force.assign(3 * std::size_t(body.ref.node_count()), 0.0);
     for (uint32_t i = 0; i < count; ++i)
         std::copy_n(&forces[3 * std::size_t(i)], 3, &body.node_force[3 * std::size_t(nodes[i])]);
 }
 
 void World::clear_node_forces(lfem_body handle) {
+    bodies_.get(handle);
+    wake(handle.index);
     std::vector<double>().swap(bodies_.get(handle).node_force);  // unused features hold no memory
 }
 
 void World::set_kinematic_velocity(lfem_body handle, const double linear[3], const double angular[3]) {
     Body& body = bodies_.get(handle);
+    wake_touching(handle.index);
     for (int k = 0; k < 3; ++k) {
         body.def.linear_velocity[k] = linear[k];
         body.def.angular_velocity[k] = angular[k];

@@ -11,14 +11,30 @@ namespace lfem {
 double World::stable_step() const {
     double h = std::numeric_limits<double>::infinity();
     bodies_.for_each([&](const Body& b, uint32_t) {
-        if (!b.is_deformable() || !b.has_mesh()) return;
-        // Neo-Hookean stiffness grows with deformation (a crushed tet is stiffer): the limit
-        // at the current nodes. The reference limit already carries the 2 % margin on
-        // omega^2 of its Lanczos estimate; only stiffening beyond it shortens the step. The
-        // other models' stiffness does not depend on the state.
-        // The estimate comes with the elastic forces at x (internal_forces.cpp).
+        if (!b.is_deformable() || !b.has_mesh() || b.state.asleep) return;
+        // Neo-Hookean stiffness grows with deformation, and every model's below J = 0.2 (the
+        // volume barrier): the limit at the current nodes. The reference limit already carries
+        // the 2 % margin on omega^2 of its Lanczos estimate; only stiffening beyond it shortens
+        // the step. The estimate comes with the elastic forces at x (internal_forces.cpp).
         const double stiffening = b.state.stiffening / 1.02;
         h = std::min(h, b.ref.stable_step / std::sqrt(std::max(stiffening, 1.0)));
+    });
+    return h;
+}
+
+double World::self_contact_step() const {
+    double h = std::numeric_limits<double>::infinity();
+    bodies_.for_each([&](const Body& b, uint32_t) {
+        if (!b.def.self_contact || !b.is_deformable() || !b.has_mesh() || b.state.asleep) return;
+        const std::vector<uint32_t>& nodes = b.ref.surface.nodes;
+        const double* v = b.state.v_half.data();
+        Vec3 mean = Vec3::Zero();
+        for (uint32_t i : nodes) mean += Vec3(v + 3 * std::size_t(i));
+        mean /= double(std::max<std::size_t>(nodes.size(), 1));
+        double fastest = 0.0;
+        for (uint32_t i : nodes) fastest = std::max(fastest, (Vec3(v + 3 * std::size_t(i)) - mean).norm());
+        // Two parts of the body close at up to twice the fastest's speed about the mean.
+        if (fastest > 0.0) h = std::min(h, kSelfContactMotion * b.ref.surface.edge_length / (2.0 * fastest));
     });
     return h;
 }
@@ -94,25 +110,27 @@ void World::body_momentum(const Body& b, Vec3& P, Vec3& L) const {
     }
 }
 
+void World::add_kinetic_energy(const Body& b, double& sum) const {
+    if (!b.is_dynamic() || !b.has_mesh()) return;
+    if (b.is_rigid()) {
+        sum += rigid_kinetic_energy(rigid_view(b), b.state.global);
+        return;
+    }
+    std::vector<double> v(b.state.v_half.size());
+    synchronized_velocities(b, v.data());
+    for (uint32_t i = 0; i < b.ref.node_count(); ++i) sum += 0.5 * b.ref.mass[i] * Vec3(&v[3 * i]).squaredNorm();
+}
+
 WorldTotals World::totals() const {
     WorldTotals t;
-    std::vector<double> v;
     bodies_.for_each([&](const Body& b, uint32_t) {
         t.added_mass += b.ref.added_mass;
         if (!b.is_dynamic() || !b.has_mesh()) return;
         Vec3 P, L;
-        if (b.is_rigid()) {
-            t.kinetic_energy += rigid_kinetic_energy(rigid_view(b), b.state.global);
-            body_momentum(b, P, L);
-            t.linear_momentum += P, t.angular_momentum += L;
-            return;
-        }
-        v.resize(b.state.v_half.size());
-        synchronized_velocities(b, v.data());
-        for (uint32_t i = 0; i < b.ref.node_count(); ++i)
-            t.kinetic_energy += 0.5 * b.ref.mass[i] * Vec3(&v[3 * i]).squaredNorm();
+        add_kinetic_energy(b, t.kinetic_energy);  // node by node into the total
         body_momentum(b, P, L);
         t.linear_momentum += P, t.angular_momentum += L;
+        if (b.is_rigid()) return;
         t.strain_energy += b.state.strain_energy;
         t.inverted_tets += b.state.inverted_tets;
         t.min_jacobian = std::min(t.min_jacobian, b.state.min_jacobian);

@@ -34,6 +34,21 @@ struct Attempt {
     bool failed() const { return blew_up_at != 0 || outran_at != 0; }
 };
 
+// The message of a call that could not be redone (its world already rolled back).
+[[noreturn]] void fail_unstable(const Attempt& a, uint32_t substeps, double h, int attempt, double wanted,
+                                uint32_t max_substeps) {
+    const std::string where = std::to_string(a.blew_up_at ? a.blew_up_at : a.outran_at) + " of " +
+                              std::to_string(substeps) + " (step " + seconds(h) + ", stable limit " +
+                              seconds(a.limit_seen) + ", after " + std::to_string(attempt) +
+                              " retries with more sub-steps)";
+    throw Error(LFEM_UNSTABLE, (a.blew_up_at ? "the state blew up at sub-step " + where
+                                             : "a body stiffened (or a self-contact body sped) beyond the "
+                                               "sub-step at sub-step " +
+                                                   where + "; the next retry would need " + number(wanted) +
+                                                   " sub-steps (max_substeps " + std::to_string(max_substeps) + ")") +
+                                   "; the world was rolled back to its state before this call");
+}
+
 }  // namespace
 
 // Everything a call may change: each body's state, the world's counters and contacts, the
@@ -74,7 +89,7 @@ uint32_t World::substeps_for(double dt, double limit) const {
 // a blow-up: m c_d^2 * 1e-12, the energy of a uniform strain of 1e-6.
 double World::blow_up_energy_scale(double& start_energy) {
     std::vector<double> body_energy(bodies_.slot_count(), 0.0);
-    parallel_for(pool_.get(), bodies_.slot_count(), [&](uint32_t j) {
+    parallel_for(stages_.pool, bodies_.slot_count(), [&](uint32_t j) {  // (the last sub-step's choice)
         const Body& b = bodies_.slot(j);
         if (b.generation == 0 || !b.is_dynamic() || !b.has_mesh()) return;
         double e = 0.0;
@@ -95,14 +110,18 @@ double World::blow_up_energy_scale(double& start_energy) {
 }
 
 void World::step(double dt) {
-    const double limit = stable_step();
+    // The automatic step also keeps self-contact bodies' parts from closing too fast per
+    // sub-step; a fixed time_step is checked against the stable limit alone.
+    const bool automatic = def_.time_step == 0.0;
+    const auto step_limit = [&] { return automatic ? std::min(stable_step(), self_contact_step()) : stable_step(); };
+    const double limit = step_limit();
     uint32_t substeps = substeps_for(dt, limit);
 
     // The snapshot: body by body on the pool (a copy of every node and tet array: with one
     // sub-step a call, as much memory traffic as a fifth of the step).
     Snapshot saved;
     saved.bodies.resize(bodies_.slot_count());
-    parallel_for(pool_.get(), bodies_.slot_count(), [&](uint32_t i) { saved.bodies[i] = bodies_.slot(i).state; });
+    parallel_for(stages_.pool, bodies_.slot_count(), [&](uint32_t i) { saved.bodies[i] = bodies_.slot(i).state; });
     saved.state = state_;
     saved.profile = profile_;
     auto roll_back = [&] {
@@ -120,20 +139,22 @@ void World::step(double dt) {
     // multiplies the energy every step (by about 47 at 1.5x the limit, 6 at 1.1x), so it passes
     // that bound within a few steps of becoming visible. Under the automatic step the limit is
     // re-checked after every sub-step (the neo-Hookean limit follows the current shape).
-    const bool automatic = def_.time_step == 0.0;
     const auto run = [&](double h) {
         Attempt a;
         a.limit_seen = limit;
         double work = 0.0, work_flow = 0.0;
+        begin_call_events();
         for (uint32_t k = 0; k < substeps && !a.failed(); ++k) {
             double kinetic = 0.0, strain = 0.0, step_work = 0.0, limit_now = a.limit_seen;
+            frame_fraction_ = double(k + 1) / substeps;  // the caller's frames end the call in place
             try {
                 substep(h, kinetic, strain, step_work);
-                if (automatic) limit_now = stable_step();
+                if (automatic) limit_now = step_limit();
             } catch (...) {
                 // Whatever failed inside (out of memory in detection, say), the caller gets the
                 // world as it was before the call, and the failure's own status.
                 roll_back();
+                in_call_ = false;
                 throw;
             }
             work += step_work;
@@ -152,6 +173,7 @@ void World::step(double dt) {
     // sub-steps. A fixed time_step is the caller's choice: no retry, and a blow-up fails the
     // call at once.
     constexpr int kMaxRetries = 4;
+    in_call_ = true;
     for (int attempt = 0;; ++attempt) {
         const double h = dt / substeps;
         const Attempt a = run(h);
@@ -159,27 +181,36 @@ void World::step(double dt) {
         const double wanted = std::max(2.0 * substeps, std::ceil(dt / (def_.step_safety * a.limit_seen)));
         if (!automatic || attempt == kMaxRetries || !(wanted <= double(def_.max_substeps))) {
             roll_back();
-            const std::string where = std::to_string(a.blew_up_at ? a.blew_up_at : a.outran_at) + " of " +
-                                      std::to_string(substeps) + " (step " + seconds(h) + ", stable limit " +
-                                      seconds(a.limit_seen) + ", after " + std::to_string(attempt) +
-                                      " retries with more sub-steps)";
-            throw Error(LFEM_UNSTABLE, (a.blew_up_at ? "the state blew up at sub-step " + where
-                                                     : "a body stiffened beyond the sub-step at sub-step " + where +
-                                                           "; the next retry would need " + number(wanted) +
-                                                           " sub-steps (max_substeps " +
-                                                           std::to_string(def_.max_substeps) + ")") +
-                                           "; the world was rolled back to its state before this call");
+            in_call_ = false;
+            fail_unstable(a, substeps, h, attempt, wanted, def_.max_substeps);
         }
         try {  // back to the snapshot, keeping it for a later failure (copies may allocate)
             for (uint32_t i = 0; i < bodies_.slot_count(); ++i) bodies_.slot(i).state = saved.bodies[i];
             state_ = saved.state;
         } catch (...) {
             roll_back();
+            in_call_ = false;
             throw;
         }
         substeps = uint32_t(wanted);
     }
     state_.counters.substeps_last_call = substeps;
+    try {  // what follows a call allocates before it changes anything it cannot roll back
+        finish_call(dt);
+    } catch (...) {
+        roll_back();
+        in_call_ = false;
+        throw;
+    }
+    in_call_ = false;
+}
+
+// After a call's sub-steps: the caller's frames reach where they were set, bodies at rest fall
+// asleep, and the call's events are handed out.
+void World::finish_call(double dt) {
+    finish_attachment_frames();
+    update_sleep(dt);
+    finish_call_events();
 }
 
 }  // namespace lfem

@@ -10,11 +10,21 @@
 namespace lfem {
 
 void World::set_gravity(const double g[3]) {
+    pending_events_.reserve(pending_events_.size() + bodies_.slot_count());  // waking cannot fail below
+    for (uint32_t i = 0; i < bodies_.slot_count(); ++i) wake(i);
     for (int k = 0; k < 3; ++k) def_.gravity[k] = g[k];
 }
 
 void World::destroy_body(lfem_body h) {
+    bodies_.get(h);  // the handle first
+    // The only allocation, before any change: room for its attachments' slots.
+    state_.attachments.free_slots.reserve(state_.attachments.free_slots.size() + state_.attachments.slots.size());
     bodies_.destroy(h);
+    drop_attachments_of(h.index);
+    std::vector<uint64_t>& touching = state_.touching;  // its pairs end silently
+    touching.erase(std::remove_if(touching.begin(), touching.end(),
+                                  [&](uint64_t key) { return uint32_t(key >> 32) == h.index || uint32_t(key) == h.index; }),
+                   touching.end());
     // The body's contacts go with it: a query must not read its freed nodes, and a later body
     // in the same slot must not be warm-started from them (found by fuzz_api).
     std::vector<ContactRecord>& contacts = state_.contacts;
@@ -28,6 +38,9 @@ void World::restore(WorldImage&& image) {
     def_ = image.def;
     bodies_.restore(std::move(image.bodies), std::move(image.free_slots));
     state_ = std::move(image.state);
+    uint32_t highest = 0;  // attachment handles of the file stay unique too
+    for (const Attachment& a : state_.attachments.slots) highest = std::max(highest, a.generation);
+    keep_generations_above(highest);
 }
 
 }  // namespace lfem

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "common/thread_pool.h"
@@ -17,12 +18,30 @@
 #include "contact/solve_contact_multipliers.h"
 #include "lfem.h"
 #include "world/body.h"
+#include "contact/link_constraint.h"
 #include "world/body_registry.h"
 #include "world/world_state.h"
 
 namespace lfem {
 
 struct WorldImage;
+
+// The deformable tets below which a sub-step runs on the calling thread alone.
+constexpr uint64_t kPoolWork = 2048;
+
+// One event of a call (lfem_event), with the world's handles.
+struct StepEvent {
+    lfem_event_type type = LFEM_EVENT_CONTACT_BEGIN;
+    lfem_body a{}, b{};
+    lfem_attachment attachment{};
+    double normal_impulse = 0;  // N s
+    double max_force = 0;       // N
+};
+
+// How far (in boundary edges) two parts of a self-contact body may close in one sub-step of
+// the automatic step. Found by the bar-over-a-rod scene (tests/physics/test_self_contact.cpp):
+// its tips meet at 5 m/s; locked edges appeared at 0.6 of an edge per sub-step, none at 0.4.
+constexpr double kSelfContactMotion = 0.25;
 
 // What the moving bodies add up to at the current time (synchronized velocities).
 struct WorldTotals {
@@ -75,10 +94,34 @@ public:
     void clear_node_forces(lfem_body body);
     void set_kinematic_velocity(lfem_body body, const double linear[3], const double angular[3]);
 
+    // ---- attachments (attachments.cpp); node indices internal, checked by the caller
+    lfem_attachment create_attachment(lfem_body body, const std::vector<uint32_t>& nodes, lfem_body target,
+                                      const double frame[7], double break_force);
+    void destroy_attachment(lfem_attachment attachment);
+    bool is_valid(lfem_attachment attachment) const;
+    // Throws Error(LFEM_INVALID_HANDLE) for a bad handle.
+    const Attachment& attachment(lfem_attachment attachment) const;
+    void set_attachment_frame(lfem_attachment attachment, const double frame[7]);
+
+    // ---- sleeping (sleep.cpp)
+    void wake_body(lfem_body body) {
+        this->body(body);  // the handle first
+        wake(body.index);
+    }
+    bool is_awake(const Body& b) const { return b.state.asleep == 0; }
+
+    // ---- events of the last call (events.cpp)
+    const std::vector<StepEvent>& events() const { return events_; }
+
     // ---- stepping (step.cpp, substep.cpp)
     // Stable limit 2/omega_max over the deformable bodies, neo-Hookean ones at their current
     // shape (from the stiffening their last force computation estimated); +inf without any.
     double stable_step() const;
+    // The automatic step's bound for bodies with self-contact: their parts may close by at most
+    // kSelfContactMotion of an edge per sub-step (node-to-face contact catches a node that
+    // crosses a face; two parts meeting edge-first with more motion per step than that can
+    // lock their edges past each other before any node crosses). +inf without such a body.
+    double self_contact_step() const;
     // Advance by dt (see lfem_world_step; under the automatic step, retried with more
     // sub-steps when a body outruns its sub-step or blows up). Throws Error:
     // LFEM_INVALID_ARGUMENT when refused up front, LFEM_UNSTABLE after rolling back to the
@@ -87,6 +130,8 @@ public:
 
     // ---- what can be read (statistics.cpp)
     WorldTotals totals() const;
+    // Adds the kinetic energy of one moving body (synchronized velocities) to sum, node by node.
+    void add_kinetic_energy(const Body& body, double& sum) const;
     // Linear momentum and angular momentum about the origin of one body.
     void body_momentum(const Body& body, Vec3& linear, Vec3& angular) const;
     // Synchronized velocities of a body at the current time, 3 per node.
@@ -133,12 +178,14 @@ private:
         // The deformable bodies again, by how their loops run: one after another with the pool
         // for their own loops, or side by side on the pool, one body per task.
         std::vector<uint32_t> on_pool, side_by_side;
+        ThreadPool* pool = nullptr;  // the sub-step's pool: none for a world too small to share
     };
     struct Snapshot;
 
     // step.cpp: a call of lfem_world_step.
     uint32_t substeps_for(double dt, double limit) const;
     double blow_up_energy_scale(double& start_energy);
+    void finish_call(double dt);
     // substep.cpp: the pipeline of src/DESIGN.md section 1.
     void substep(double h, double& kinetic, double& strain, double& work);
     void plan_stages();
@@ -153,6 +200,20 @@ private:
     void compute_element_forces();
     void add_up_energy(double h, double& kinetic, double& strain, double& work);
     void count_warnings(double h);
+    // attachments.cpp
+    void build_links(double fraction);
+    void take_link_forces(double h);
+    void finish_attachment_frames();
+    void drop_attachments_of(uint32_t slot);
+    // sleep.cpp
+    void wake(uint32_t slot);
+    void wake_touching(uint32_t slot);
+    void wake_touched_sleepers();
+    void update_sleep(double dt);
+    // events.cpp
+    void begin_call_events();
+    void tally_contact_pairs(double h);
+    void finish_call_events();
 
     lfem_world_def def_;
     BodyRegistry bodies_;
@@ -162,9 +223,22 @@ private:
     std::vector<StepScratch> scratch_;
     StageLists stages_;
     ContactBodies contact_bodies_;
-    std::vector<ContactRecord> detected_;
+    std::vector<ContactRecord> detected_, frozen_;  // frozen_: pairs among sleeping bodies
     FallenIn fallen_;           // by the sub-step's detection
     bool unconverged_ = false;  // the sub-step's contact solve used every sweep
+    std::vector<LinkRecord> links_;  // the attachments' links of the sub-step
+    double frame_fraction_ = 1;      // how far through the call the sub-step ends
+    // Events: of the last call; gathered during the call (contact pairs' tallies, broken
+    // attachments, sleep and wake); wake events of calls between steps, for the next call.
+    struct PairTally {
+        double impulse = 0, max_force = 0;
+        uint64_t last_substep = 0;
+    };
+    std::vector<StepEvent> events_, broken_, sleep_events_, pending_events_;
+    std::unordered_map<uint64_t, PairTally> pair_tally_;
+    std::vector<std::pair<uint64_t, double>> substep_pairs_;
+    uint64_t substep_serial_ = 0;
+    bool in_call_ = false;
     DetectionScratch detection_;
     ContactSolveScratch solve_scratch_;
     std::unique_ptr<ThreadPool> pool_;  // the step's parallel loops

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/contact_record.h"
+#include "world/attachments.h"
 
 namespace lfem {
 
@@ -54,6 +55,10 @@ struct WorldState {
     // Pairs found by the last sub-step, in a fixed order (body_a, node, body_b); those with
     // active() are the contacts.
     std::vector<ContactRecord> contacts;
+    Attachments attachments;
+    // The pairs of bodies that touched at the end of the last call (lower slot << 32 | higher
+    // slot, ascending): where contact events begin and end.
+    std::vector<uint64_t> touching;
 };
 
 }  // namespace lfem

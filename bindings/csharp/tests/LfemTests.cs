@@ -87,10 +87,11 @@ public static class LfemTests
         Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(Model))), "sizeof(lfem_model)");
         Layout<Vec3>(24, "Z", 16);
         Layout<Body>(8, "Index", 0, "Generation", 4);
-        Layout<WorldDef>(80, "Gravity", 0, "TimeStep", 24, "StepSafety", 32, "ContactIterations", 40,
+        Layout<WorldDef>(96, "Gravity", 0, "TimeStep", 24, "StepSafety", 32, "ContactIterations", 40,
                          "ThreadCount", 44,
                          "ContactTolerance", 48, "MaxSubsteps", 56, "AllowUnstableStep", 60, "internalValue", 64,
-                         "MassScalingStep", 72);
+                         "MassScalingStep", 72, "EnableSleep", 61, "SleepVelocity", 80, "SleepTime", 88);
+        Layout<Event>(48, "BodyA", 8, "BodyB", 16, "Attachment", 24, "NormalImpulse", 32, "MaxForce", 40);
         Layout<WorldStats>(184, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
                            "KineticEnergy", 40, "EnergyError", 72, "LinearMomentum", 80, "AngularMomentum", 104,
                            "ContactCount", 128, "SolverIterations", 132, "SolverResidual", 136, "MaxPenetration", 144,
@@ -103,7 +104,7 @@ public static class LfemTests
                         "CandidateSearches", 184);
         Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
-                        "UserData", 104, "internalValue", 112);
+                        "UserData", 104, "internalValue", 112, "EnableSleep", 116, "SelfContact", 117);
         Layout<Contact>(128, "BodyA", 0, "BodyB", 8, "Node", 16, "TriangleA", 20, "TriangleC", 28, "Barycentric1", 32,
                         "Barycentric2", 40, "Position", 48, "Normal", 72, "Force", 96, "Sliding", 120, "Shape", 124);
         Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(ShapeType))), "sizeof(lfem_shape_type)");
@@ -598,6 +599,79 @@ public static class LfemTests
             foreach (WarningKind k in new[] { WarningKind.InvertedTets, WarningKind.StaysInverted, WarningKind.FallenIn,
                                               WarningKind.Unconverged })
                 Equal(0ul, world.GetWarning(k).Count, "cleared " + k);
+        }
+    }
+
+    public static void TestSelfContactIsForDeformableBodiesOnly()
+    {
+        using (World world = new World())
+        {
+            BodyDef d = BodyDef.Default;
+            Equal((byte)0, d.SelfContact, "self-contact default");
+            d.SelfContact = 1;
+            d.Type = BodyType.Static;
+            try
+            {
+                world.CreateBody(d);
+                Check(false, "a static body with self-contact was accepted");
+            }
+            catch (LfemException e)
+            {
+                Equal(Status.InvalidArgument, e.Status, "status");
+                Check(e.Message.Contains("self_contact"), "message names the field: " + e.Message);
+            }
+            d.Type = BodyType.Deformable;
+            world.CreateBody(d);
+        }
+    }
+
+    public static void TestABarHangsFromAFrameAndAResttingBlockSleeps()
+    {
+        // A bar held at its top nodes by a frame that never moves carries its weight; a block
+        // settling on a plane begins one contact, falls asleep, and stepping it asleep moves
+        // no node.
+        WorldDef def = WorldDef.Default;
+        def.EnableSleep = 1;
+        using (World world = new World(def))
+        using (Mesh mesh = Mesh.Box(new Vec3(0.03, 0.03, 0.3), 1, 1, 10))
+        using (Mesh blockMesh = Mesh.Box(new Vec3(0.1, 0.1, 0.1), 2, 2, 2))
+        {
+            mesh.Translate(new Vec3(-0.015, -0.015, 0.2));
+            BodyDef d = BodyDef.Default;
+            d.YoungModulus = 2e5;
+            d.Damping = 10;
+            d.EnableSleep = 0;
+            Body bar = world.CreateBody(d);
+            world.AddMesh(bar, mesh);
+            uint[] top = world.FindNodesInBox(bar, new Vec3(-1, -1, 0.4999), new Vec3(1, 1, 0.5001));
+            Attachment held = world.AttachToFrame(bar, top, new double[] { 0, 0, 0, 1, 0, 0, 0 });
+            BodyDef fd = BodyDef.Default;
+            fd.Type = BodyType.Static;
+            Body floor = world.CreateBody(fd);
+            world.AddShape(floor, ShapeDef.Default);
+            blockMesh.Translate(new Vec3(0.3, 0, 0.0005));
+            BodyDef bd = BodyDef.Default;
+            bd.Damping = 20;
+            Body block = world.CreateBody(bd);
+            world.AddMesh(block, blockMesh);
+            int begins = 0, sleeps = 0;
+            for (int i = 0; i < 180; ++i)
+            {
+                world.Step(1.0 / 60);
+                foreach (Event e in world.GetEvents())
+                {
+                    if (e.Type == EventType.ContactBegin) ++begins;
+                    if (e.Type == EventType.Sleep) { ++sleeps; Check(e.BodyA == block, "the block slept"); }
+                }
+            }
+            Equal(1, begins, "contact begins");
+            Equal(1, sleeps, "sleeps");
+            Check(!world.IsAwake(block), "block asleep");
+            Check(world.IsAwake(bar), "bar awake");
+            double m = world.Mass(bar);
+            Close(m * G, world.GetAttachmentForce(held).Z, 1e-6 * m * G, "the frame carries the bar's weight");
+            world.DestroyAttachment(held);
+            Check(!world.IsValid(held), "destroyed");
         }
     }
 

@@ -41,13 +41,14 @@ from ._errors import InvalidArgumentError, LfemError, Status
 from ._native import c_string as _c_string
 from ._native import lib as native
 from ._native import library_path
-from ._structs import (CONTACT_DTYPE, NO_SHAPE, Body, BodyDef, BodyType, Contact, Model,
-                       PhaseTime, Profile, ShapeDef, ShapeType, Warning, WarningKind, WorldDef,
-                       WorldStats)
+from ._structs import (CONTACT_DTYPE, NO_SHAPE, Attachment, Body, BodyDef, BodyType, Contact, Event,
+                       EventType, Model, PhaseTime, Profile, ShapeDef, ShapeType, Warning,
+                       WarningKind, WorldDef, WorldStats)
 from ._version import __version__
 
 __all__ = [
     "__version__", "Status", "BodyType", "Model", "ShapeType", "WarningKind", "Warning", "LfemError",
+    "Attachment", "Event", "EventType",
     "InvalidArgumentError", "WorldDef", "WorldStats", "PhaseTime", "Profile", "Body", "BodyDef",
     "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeDef", "World", "Mesh", "VtkSeries", "version",
     "version_string", "status_string", "last_error", "library_path", "native", "VERSION_MAJOR",
@@ -399,6 +400,70 @@ class World:
             native.lfem_body_find_nodes_in_box(self.handle, body, _dptr(lo), _dptr(hi),
                                                _uptr(out), out.size, ctypes.byref(count))
         return out[:count.value]
+
+    # -- attachments, sleeping, events --
+
+    def attach(self, body: Body, nodes: npt.ArrayLike, target: Optional[Body] = None,
+               frame: npt.ArrayLike = (0, 0, 0, 1, 0, 0, 0), break_force: float = 0.0) -> Attachment:
+        """Hold nodes of a deformable body at their offsets in the frame of target (a rigid,
+        kinematic or static body), or, when target is None, of a frame the caller moves
+        (centre and quaternion w x y z at creation; see set_attachment_frame)."""
+        n = _convert.indices(nodes, "nodes")
+        d = native.lfem_attachment_def_default()
+        d.body = _body(body)
+        d.target = _body(target) if target is not None else Body()
+        d.nodes = _uptr(n)
+        d.node_count = n.size
+        f = np.asarray(frame, dtype=np.float64).reshape(-1)
+        if f.size != 7:
+            raise InvalidArgumentError("frame must hold 7 numbers")
+        for k in range(7):
+            d.frame[k] = float(f[k])
+        d.break_force = _convert.real(break_force, "break_force")
+        out = Attachment()
+        native.lfem_attachment_create(self.handle, ctypes.byref(d), ctypes.byref(out))
+        return out
+
+    def destroy_attachment(self, attachment: Attachment) -> None:
+        native.lfem_attachment_destroy(self.handle, attachment)
+
+    def attachment_is_valid(self, attachment: Attachment) -> bool:
+        return bool(native.lfem_attachment_is_valid(self.handle, attachment))
+
+    def set_attachment_frame(self, attachment: Attachment, frame: npt.ArrayLike) -> None:
+        """Where the caller's frame is to be at the end of the next step."""
+        f = np.ascontiguousarray(frame, dtype=np.float64).reshape(-1)
+        if f.size != 7:
+            raise InvalidArgumentError("frame must hold 7 numbers")
+        native.lfem_attachment_set_frame(self.handle, attachment, _dptr(f))
+
+    def attachment_force(self, attachment: Attachment) -> np.ndarray:
+        """The total force (N) on the attachment's nodes at the last sub-step."""
+        out = np.zeros(3)
+        native.lfem_attachment_get_force(self.handle, attachment, _dptr(out))
+        return out
+
+    def wake(self, body: Body) -> None:
+        native.lfem_body_wake(self.handle, _body(body))
+
+    def is_awake(self, body: Body) -> bool:
+        r = native.lfem_body_is_awake(self.handle, _body(body))
+        if r < 0:
+            raise _errors.error(Status.INVALID_HANDLE, "body handle is stale or of another world")
+        return r == 1
+
+    def events(self) -> list:
+        """The events of the last step (a list of Event)."""
+        count = ctypes.c_uint32()
+        try:
+            native.lfem_world_get_events(self.handle, None, 0, ctypes.byref(count))
+        except LfemError as e:
+            if e.status != Status.BUFFER_TOO_SMALL:
+                raise
+        out = (Event * max(count.value, 1))()
+        if count.value:
+            native.lfem_world_get_events(self.handle, out, count.value, ctypes.byref(count))
+        return list(out[:count.value])
 
     # -- loads and supports --
 

@@ -7,7 +7,8 @@ import ctypes
 from typing import Any
 
 from . import _errors, _library, _structs
-from ._structs import Body, BodyDef, Profile, ShapeDef, Warning, WorldDef, WorldStats
+from ._structs import (Attachment, AttachmentDef, Body, BodyDef, Event, Profile, ShapeDef, Warning, WorldDef,
+                       WorldStats)
 
 lib, library_path = _library.load()
 
@@ -61,6 +62,15 @@ _declare("lfem_world_get_profile", _st, _vp, _p(Profile))
 _declare("lfem_world_reset_profile", _st, _vp)
 _declare("lfem_world_get_warning", _st, _vp, _enum, _p(Warning))
 _declare("lfem_world_clear_warnings", _st, _vp)
+_declare("lfem_world_get_events", _st, _vp, _p(Event), _u32, _up)
+_declare("lfem_attachment_def_default", AttachmentDef)
+_declare("lfem_attachment_create", _st, _vp, _p(AttachmentDef), _p(Attachment))
+_declare("lfem_attachment_destroy", _st, _vp, Attachment)
+_declare("lfem_attachment_is_valid", ctypes.c_int, _vp, Attachment)
+_declare("lfem_attachment_set_frame", _st, _vp, Attachment, _dp)
+_declare("lfem_attachment_get_force", _st, _vp, Attachment, _dp)
+_declare("lfem_body_wake", _st, _vp, Body)
+_declare("lfem_body_is_awake", ctypes.c_int, _vp, Body)
 
 _declare("lfem_body_def_default", BodyDef)
 _declare("lfem_body_create", _st, _vp, _p(BodyDef), _p(Body))

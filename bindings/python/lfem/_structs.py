@@ -157,10 +157,13 @@ class WorldDef(_Definition):
         ("contact_tolerance", ctypes.c_double),
         ("max_substeps", ctypes.c_uint32),
         ("allow_unstable_step", ctypes.c_uint8),
-        ("_padding", ctypes.c_uint8 * 3),
+        ("enable_sleep", ctypes.c_uint8),     # 1 = bodies at rest fall asleep, default 0
+        ("_padding", ctypes.c_uint8 * 2),
         ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
         ("_padding2", ctypes.c_uint32),
         ("mass_scaling_step", ctypes.c_double),  # s, 0 = off (default): see lfem_world_def
+        ("sleep_velocity", ctypes.c_double),  # m/s, default 0.01
+        ("sleep_time", ctypes.c_double),      # s, default 0.5
     ]
 
 
@@ -182,7 +185,9 @@ class BodyDef(_Definition):
         ("mask_bits", ctypes.c_uint32),       # default all bits
         ("user_data", ctypes.c_void_p),
         ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
-        ("_padding", ctypes.c_uint32),
+        ("enable_sleep", ctypes.c_uint8),     # 1 (default) = may fall asleep when the world allows
+        ("self_contact", ctypes.c_uint8),     # 1 = the surface collides with itself (deformable)
+        ("_padding", ctypes.c_uint8 * 2),
     ]
     _enums = ("type", "model")
     type = _enum_property("_type", BodyType)
@@ -280,6 +285,52 @@ class Body(ctypes.Structure):
 
     def __repr__(self) -> str:
         return "Body(index=%d, generation=%d)" % (self.index, self.generation)
+
+
+class Attachment(ctypes.Structure):
+    """An attachment handle (lfem_attachment), a value."""
+
+    _fields_ = [("index", ctypes.c_uint32), ("generation", ctypes.c_uint32)]
+
+    def __eq__(self, other: object) -> bool:
+        return (isinstance(other, Attachment) and self.index == other.index
+                and self.generation == other.generation)
+
+    def __hash__(self) -> int:
+        return hash((self.index, self.generation))
+
+
+class AttachmentDef(ctypes.Structure):
+    """lfem_attachment_def (filled by World.attach)."""
+
+    _fields_ = [
+        ("body", Body), ("target", Body), ("nodes", ctypes.POINTER(ctypes.c_uint32)),
+        ("node_count", ctypes.c_uint32), ("_internal_value", ctypes.c_uint32),
+        ("frame", ctypes.c_double * 7), ("break_force", ctypes.c_double),
+    ]
+
+
+class EventType(enum.IntEnum):
+    """lfem_event_type."""
+
+    CONTACT_BEGIN = 0       # a pair began to touch during the step
+    CONTACT_END = 1         # a pair that touched stopped
+    SLEEP = 2               # body_a fell asleep
+    WAKE = 3                # body_a woke
+    ATTACHMENT_BROKEN = 4   # attachment broke (now stale)
+
+
+class Event(ctypes.Structure):
+    """lfem_event: one event of the last step."""
+
+    _fields_ = [
+        ("_type", ctypes.c_int), ("_padding", ctypes.c_uint32), ("body_a", Body), ("body_b", Body),
+        ("attachment", Attachment), ("normal_impulse", ctypes.c_double), ("max_force", ctypes.c_double),
+    ]
+
+    @property
+    def type(self) -> "EventType":
+        return EventType(self._type)
 
 
 class Warning(ctypes.Structure):

@@ -46,11 +46,14 @@ class Layout(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(ctypes.c_void_p), 8)
         self.assertEqual(ctypes.sizeof(ctypes.c_int), 4)  # enums
         self.check(lfem.Body, 8, {"index": 0, "generation": 4})
-        self.check(lfem.WorldDef, 80, {
+        self.check(lfem.Event, 48, {"body_a": 8, "body_b": 16, "attachment": 24, "normal_impulse": 32,
+                                    "max_force": 40})
+        self.check(lfem.WorldDef, 96, {
             "gravity": 0, "time_step": 24, "step_safety": 32, "contact_iterations": 40,
             "thread_count": 44,
             "contact_tolerance": 48, "max_substeps": 56, "allow_unstable_step": 60,
-            "_internal_value": 64, "mass_scaling_step": 72})
+            "_internal_value": 64, "mass_scaling_step": 72, "enable_sleep": 61, "sleep_velocity": 80,
+            "sleep_time": 88})
         self.check(lfem.Warning, 24, {"count": 0, "last_time": 8, "last_body": 16})
         self.check(lfem.WorldStats, 184, {
             "steps": 8, "step_size": 16, "stable_step": 24, "substeps_last_call": 32,
@@ -67,7 +70,8 @@ class Layout(unittest.TestCase):
         self.check(lfem.BodyDef, 120, {
             "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
-            "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112})
+            "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112,
+            "enable_sleep": 116, "self_contact": 117})
         self.check(lfem.Contact, 128, {
             "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
             "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124})
@@ -213,6 +217,44 @@ class Physics(unittest.TestCase):
             world.clear_warnings()
             for kind in lfem.WarningKind:
                 self.assertEqual(world.warning(kind).count, 0)
+
+    def test_a_bar_hangs_from_a_frame_and_a_resting_block_sleeps(self):
+        # A bar held at its top nodes by a frame that never moves carries its weight; a block
+        # settling on a plane begins one contact and falls asleep.
+        with lfem.World(lfem.WorldDef(enable_sleep=1)) as world:
+            mesh = lfem.Mesh.box((0.03, 0.03, 0.3), (1, 1, 10))
+            mesh.translate((-0.015, -0.015, 0.2))
+            bar = world.create_body(lfem.BodyDef(young_modulus=2e5, damping=10, enable_sleep=0))
+            world.add_mesh(bar, mesh)
+            top = world.find_nodes_in_box(bar, (-1, -1, 0.4999), (1, 1, 0.5001))
+            held = world.attach(bar, top)
+            floor = world.create_body(lfem.BodyDef(type=lfem.BodyType.STATIC))
+            world.add_shape(floor, lfem.ShapeDef())
+            block_mesh = lfem.Mesh.box((0.1, 0.1, 0.1), (2, 2, 2))
+            block_mesh.translate((0.3, 0, 0.0005))
+            block = world.create_body(lfem.BodyDef(damping=20))
+            world.add_mesh(block, block_mesh)
+            begins = sleeps = 0
+            for _ in range(180):
+                world.step(1 / 60)
+                for e in world.events():
+                    begins += e.type == lfem.EventType.CONTACT_BEGIN
+                    sleeps += e.type == lfem.EventType.SLEEP
+            self.assertEqual((begins, sleeps), (1, 1))
+            self.assertFalse(world.is_awake(block))
+            self.assertTrue(world.is_awake(bar))
+            m = world.mass(bar)
+            self.assertAlmostEqual(world.attachment_force(held)[2], m * G, delta=1e-6 * m * G)
+            world.destroy_attachment(held)
+            self.assertFalse(world.attachment_is_valid(held))
+
+    def test_self_contact_is_for_deformable_bodies_only(self):
+        with lfem.World() as world:
+            self.assertEqual(lfem.BodyDef().self_contact, 0)
+            with self.assertRaises(lfem.InvalidArgumentError) as caught:
+                world.create_body(lfem.BodyDef(type=lfem.BodyType.STATIC, self_contact=1))
+            self.assertIn("self_contact", str(caught.exception))
+            world.create_body(lfem.BodyDef(self_contact=1))
 
     def test_falling_block_follows_free_fall(self):
         # Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each

@@ -83,10 +83,13 @@ pub struct lfem_world_def {
     pub contact_tolerance: c_double,
     pub max_substeps: u32,
     pub allow_unstable_step: u8,
-    pub padding: [u8; 3],
+    pub enable_sleep: u8,
+    pub padding: [u8; 2],
     pub internal_value: u32,
     pub padding2: u32,
     pub mass_scaling_step: c_double,
+    pub sleep_velocity: c_double,
+    pub sleep_time: c_double,
 }
 
 /// Statistics of a world (lfem_world_stats): time, energies and momenta of the moving
@@ -137,6 +140,48 @@ pub struct lfem_world_stats {
     pub padding: u32,
     /// The smallest volume ratio J of their tets after the last sub-step (1 without any).
     pub min_jacobian: c_double,
+}
+
+/// An attachment handle (lfem_attachment).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct lfem_attachment {
+    pub index: u32,
+    pub generation: u32,
+}
+
+/// How an attachment is set up (lfem_attachment_def).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct lfem_attachment_def {
+    pub body: lfem_body,
+    pub target: lfem_body,
+    pub nodes: *const u32,
+    pub node_count: u32,
+    pub internal_value: u32,
+    pub frame: [c_double; 7],
+    pub break_force: c_double,
+}
+
+/// The kinds of event (lfem_event_type).
+pub type lfem_event_type = c_int;
+pub const LFEM_EVENT_CONTACT_BEGIN: lfem_event_type = 0;
+pub const LFEM_EVENT_CONTACT_END: lfem_event_type = 1;
+pub const LFEM_EVENT_SLEEP: lfem_event_type = 2;
+pub const LFEM_EVENT_WAKE: lfem_event_type = 3;
+pub const LFEM_EVENT_ATTACHMENT_BROKEN: lfem_event_type = 4;
+
+/// One event of the last step (lfem_event).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_event {
+    pub type_: lfem_event_type,
+    pub padding: u32,
+    pub body_a: lfem_body,
+    pub body_b: lfem_body,
+    pub attachment: lfem_attachment,
+    pub normal_impulse: c_double,
+    pub max_force: c_double,
 }
 
 /// The kinds of warning (lfem_warning_kind).
@@ -228,7 +273,9 @@ pub struct lfem_body_def {
     pub mask_bits: u32,
     pub user_data: *mut c_void,
     pub internal_value: u32,
-    pub padding: u32,
+    pub enable_sleep: u8,
+    pub self_contact: u8,
+    pub padding: [u8; 2],
 }
 
 #[repr(C)]
@@ -269,7 +316,11 @@ const _: () = assert!(size_of::<lfem_body_type>() == 4);
 const _: () = assert!(size_of::<lfem_model>() == 4);
 const _: () = assert!(size_of::<lfem_shape_type>() == 4);
 const _: () = assert!(size_of::<lfem_body>() == 8);
-const _: () = assert!(size_of::<lfem_world_def>() == 80);
+const _: () = assert!(size_of::<lfem_world_def>() == 96);
+const _: () = assert!(size_of::<lfem_attachment>() == 8);
+const _: () = assert!(size_of::<lfem_event>() == 48);
+#[cfg(target_pointer_width = "64")]
+const _: () = assert!(size_of::<lfem_attachment_def>() == 96);
 const _: () = assert!(size_of::<lfem_world_stats>() == 184);
 const _: () = assert!(size_of::<lfem_warning_kind>() == 4);
 const _: () = assert!(size_of::<lfem_warning>() == 24);
@@ -353,6 +404,32 @@ extern "C" {
         out: *mut lfem_warning,
     ) -> lfem_status;
     pub fn lfem_world_clear_warnings(world: *mut lfem_world) -> lfem_status;
+    pub fn lfem_body_wake(world: *mut lfem_world, body: lfem_body) -> lfem_status;
+    pub fn lfem_body_is_awake(world: *const lfem_world, body: lfem_body) -> c_int;
+    pub fn lfem_attachment_def_default() -> lfem_attachment_def;
+    pub fn lfem_attachment_create(
+        world: *mut lfem_world,
+        def: *const lfem_attachment_def,
+        out: *mut lfem_attachment,
+    ) -> lfem_status;
+    pub fn lfem_attachment_destroy(world: *mut lfem_world, attachment: lfem_attachment) -> lfem_status;
+    pub fn lfem_attachment_is_valid(world: *const lfem_world, attachment: lfem_attachment) -> c_int;
+    pub fn lfem_attachment_set_frame(
+        world: *mut lfem_world,
+        attachment: lfem_attachment,
+        frame: *const c_double,
+    ) -> lfem_status;
+    pub fn lfem_attachment_get_force(
+        world: *const lfem_world,
+        attachment: lfem_attachment,
+        force: *mut c_double,
+    ) -> lfem_status;
+    pub fn lfem_world_get_events(
+        world: *const lfem_world,
+        out: *mut lfem_event,
+        capacity: u32,
+        count: *mut u32,
+    ) -> lfem_status;
     pub fn lfem_body_get_momentum(
         world: *const lfem_world,
         body: lfem_body,

@@ -17,7 +17,7 @@ macro_rules! offset {
 #[test]
 fn sizes_match_c() {
     assert_eq!(size_of::<lfem_body>(), 8);
-    assert_eq!(size_of::<lfem_world_def>(), 80);
+    assert_eq!(size_of::<lfem_world_def>(), 96);
     assert_eq!(size_of::<lfem_world_stats>(), 184);
     assert_eq!(size_of::<lfem_warning>(), 24);
     assert_eq!(size_of::<lfem_body_def>(), 120);
@@ -83,6 +83,19 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_body_def, angular_velocity), 72);
     assert_eq!(offset!(lfem_body_def, category_bits), 96);
     assert_eq!(offset!(lfem_body_def, mask_bits), 100);
+    assert_eq!(offset!(lfem_body_def, enable_sleep), 116);
+    assert_eq!(offset!(lfem_body_def, self_contact), 117);
+    assert_eq!(offset!(lfem_world_def, enable_sleep), 61);
+    assert_eq!(offset!(lfem_world_def, sleep_velocity), 80);
+    assert_eq!(offset!(lfem_world_def, sleep_time), 88);
+    assert_eq!(offset!(lfem_attachment_def, target), 8);
+    assert_eq!(offset!(lfem_attachment_def, nodes), 16);
+    assert_eq!(offset!(lfem_attachment_def, frame), 32);
+    assert_eq!(offset!(lfem_attachment_def, break_force), 88);
+    assert_eq!(offset!(lfem_event, body_a), 8);
+    assert_eq!(offset!(lfem_event, attachment), 24);
+    assert_eq!(offset!(lfem_event, normal_impulse), 32);
+    assert_eq!(offset!(lfem_event, max_force), 40);
     assert_eq!(offset!(lfem_body_def, user_data), 104);
     assert_eq!(offset!(lfem_body_def, internal_value), 112);
 

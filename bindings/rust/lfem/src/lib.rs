@@ -230,6 +230,13 @@ pub struct WorldDef {
     /// s; 0 (default) = off. Mass scaling: tets that would need a shorter sub-step get added
     /// mass, so that the automatic step is at least this (see `lfem_world_def`).
     pub mass_scaling_step: f64,
+    /// Bodies at rest fall asleep (see `sleep_velocity`), default false.
+    pub enable_sleep: bool,
+    /// m/s, default 0.01: a body whose every node moved slower than this for `sleep_time`
+    /// (and everything touching it) falls asleep.
+    pub sleep_velocity: f64,
+    /// s, default 0.5.
+    pub sleep_time: f64,
     internal_value: u32,
 }
 
@@ -247,6 +254,9 @@ impl Default for WorldDef {
             max_substeps: d.max_substeps,
             allow_unstable_step: d.allow_unstable_step != 0,
             mass_scaling_step: d.mass_scaling_step,
+            enable_sleep: d.enable_sleep != 0,
+            sleep_velocity: d.sleep_velocity,
+            sleep_time: d.sleep_time,
             internal_value: d.internal_value,
         }
     }
@@ -263,10 +273,13 @@ impl WorldDef {
             contact_tolerance: self.contact_tolerance,
             max_substeps: self.max_substeps,
             allow_unstable_step: u8::from(self.allow_unstable_step),
-            padding: [0; 3],
+            enable_sleep: u8::from(self.enable_sleep),
+            padding: [0; 2],
             internal_value: self.internal_value,
             padding2: 0,
             mass_scaling_step: self.mass_scaling_step,
+            sleep_velocity: self.sleep_velocity,
+            sleep_time: self.sleep_time,
         }
     }
 }
@@ -322,6 +335,10 @@ pub struct BodyDef {
     pub category_bits: u32,
     /// Collision filter: what it collides with, default all bits.
     pub mask_bits: u32,
+    /// The body's surface collides with itself (deformable bodies only), default false.
+    pub self_contact: bool,
+    /// May fall asleep when the world allows it, default true.
+    pub enable_sleep: bool,
     internal_value: u32,
 }
 
@@ -351,6 +368,8 @@ impl Default for BodyDef {
             angular_velocity: d.angular_velocity,
             category_bits: d.category_bits,
             mask_bits: d.mask_bits,
+            self_contact: d.self_contact != 0,
+            enable_sleep: d.enable_sleep != 0,
             internal_value: d.internal_value,
         }
     }
@@ -382,7 +401,9 @@ impl BodyDef {
             mask_bits: self.mask_bits,
             user_data: ptr::null_mut(),
             internal_value: self.internal_value,
-            padding: 0,
+            enable_sleep: u8::from(self.enable_sleep),
+            self_contact: u8::from(self.self_contact),
+            padding: [0; 2],
         }
     }
 }
@@ -579,6 +600,63 @@ pub struct Warning {
     pub last_body: Body,
 }
 
+/// An attachment handle (lfem_attachment): a value, valid while the attachment lives.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Attachment {
+    /// The slot of the attachment in its world.
+    pub index: u32,
+    /// Counts the attachments that held the slot.
+    pub generation: u32,
+}
+
+impl Attachment {
+    fn raw(self) -> sys::lfem_attachment {
+        sys::lfem_attachment { index: self.index, generation: self.generation }
+    }
+}
+
+/// What an attachment holds its nodes to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AttachTo {
+    /// A rigid, kinematic or static body.
+    Body(Body),
+    /// A frame the caller moves ([`World::set_attachment_frame`]): centre and unit quaternion
+    /// (w, x, y, z) at creation.
+    Frame([f64; 7]),
+}
+
+/// What an event of the last step is (lfem_event_type).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum EventType {
+    /// A pair of bodies began to touch during the step.
+    ContactBegin,
+    /// A pair that touched stopped.
+    ContactEnd,
+    /// `body_a` fell asleep.
+    Sleep,
+    /// `body_a` woke.
+    Wake,
+    /// `attachment` broke (its handle is stale now).
+    AttachmentBroken,
+}
+
+/// One event of the last step (lfem_event).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Event {
+    /// What happened.
+    pub event_type: EventType,
+    /// The pair (lower slot first), or the body that slept or woke, or the broken attachment's body.
+    pub body_a: Body,
+    /// The other body of a pair, the broken attachment's target; else [`Body::NULL`].
+    pub body_b: Body,
+    /// The broken attachment; else the null handle.
+    pub attachment: Attachment,
+    /// N s: a contact pair's summed normal impulse over the step.
+    pub normal_impulse: f64,
+    /// N: a pair's largest summed normal force at a sub-step; the force that broke an attachment.
+    pub max_force: f64,
+}
+
 /// A body's inverted tets after the last sub-step (lfem_body_get_inversion).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Inversion {
@@ -711,6 +789,95 @@ impl World {
     pub fn reset_profile(&mut self) -> Result<()> {
         // SAFETY: live world.
         check(unsafe { sys::lfem_world_reset_profile(self.ptr_mut()) })
+    }
+
+    /// Hold `nodes` of the deformable `body` at their current offsets in the frame of `target`;
+    /// it breaks above `break_force` N (0: never).
+    pub fn create_attachment(&mut self, body: Body, nodes: &[u32], target: AttachTo, break_force: f64) -> Result<Attachment> {
+        // SAFETY: returns a value.
+        let mut def = unsafe { sys::lfem_attachment_def_default() };
+        def.body = body.raw();
+        def.nodes = nodes.as_ptr();
+        def.node_count = to_u32(nodes.len(), "node count")?;
+        match target {
+            AttachTo::Body(b) => def.target = b.raw(),
+            AttachTo::Frame(f) => def.frame = f,
+        }
+        def.break_force = break_force;
+        let mut out = sys::lfem_attachment::default();
+        // SAFETY: live world; def points at node_count indices for the duration of the call.
+        check(unsafe { sys::lfem_attachment_create(self.ptr_mut(), &def, &mut out) })?;
+        Ok(Attachment { index: out.index, generation: out.generation })
+    }
+
+    /// Destroy an attachment.
+    pub fn destroy_attachment(&mut self, attachment: Attachment) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_attachment_destroy(self.ptr_mut(), attachment.raw()) })
+    }
+
+    /// Whether the handle names a live attachment of this world.
+    pub fn is_attachment_valid(&self, attachment: Attachment) -> bool {
+        // SAFETY: live world.
+        unsafe { sys::lfem_attachment_is_valid(self.ptr(), attachment.raw()) == 1 }
+    }
+
+    /// Where the caller's frame of an attachment is to be at the end of the next step.
+    pub fn set_attachment_frame(&mut self, attachment: Attachment, frame: [f64; 7]) -> Result<()> {
+        // SAFETY: live world, 7 doubles.
+        check(unsafe { sys::lfem_attachment_set_frame(self.ptr_mut(), attachment.raw(), frame.as_ptr()) })
+    }
+
+    /// The total force (N) the attachment put on its nodes at the last sub-step.
+    pub fn attachment_force(&self, attachment: Attachment) -> Result<[f64; 3]> {
+        let mut out = [0.0; 3];
+        // SAFETY: live world, 3 doubles.
+        check(unsafe { sys::lfem_attachment_get_force(self.ptr(), attachment.raw(), out.as_mut_ptr()) })?;
+        Ok(out)
+    }
+
+    /// Wake a sleeping body.
+    pub fn wake(&mut self, body: Body) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_wake(self.ptr_mut(), body.raw()) })
+    }
+
+    /// Whether a body is awake (`Err` for a bad handle).
+    pub fn is_awake(&self, body: Body) -> Result<bool> {
+        // SAFETY: live world.
+        match unsafe { sys::lfem_body_is_awake(self.ptr(), body.raw()) } {
+            1 => Ok(true),
+            0 => Ok(false),
+            _ => Err(Error { status: Status::InvalidHandle, message: "body handle is stale or of another world".into() }),
+        }
+    }
+
+    /// The events of the last step.
+    pub fn events(&self) -> Result<Vec<Event>> {
+        let mut count = 0u32;
+        // SAFETY: live world; capacity 0 asks for the count (BUFFER_TOO_SMALL when there are some).
+        let _ = unsafe { sys::lfem_world_get_events(self.ptr(), ptr::null_mut(), 0, &mut count) };
+        let mut raw = vec![sys::lfem_event::default(); count as usize];
+        // SAFETY: room for count events.
+        check(unsafe { sys::lfem_world_get_events(self.ptr(), raw.as_mut_ptr(), count, &mut count) })?;
+        let body = |b: sys::lfem_body| Body { index: b.index, generation: b.generation };
+        Ok(raw
+            .iter()
+            .map(|e| Event {
+                event_type: match e.type_ {
+                    sys::LFEM_EVENT_CONTACT_BEGIN => EventType::ContactBegin,
+                    sys::LFEM_EVENT_CONTACT_END => EventType::ContactEnd,
+                    sys::LFEM_EVENT_SLEEP => EventType::Sleep,
+                    sys::LFEM_EVENT_WAKE => EventType::Wake,
+                    _ => EventType::AttachmentBroken,
+                },
+                body_a: body(e.body_a),
+                body_b: body(e.body_b),
+                attachment: Attachment { index: e.attachment.index, generation: e.attachment.generation },
+                normal_impulse: e.normal_impulse,
+                max_force: e.max_force,
+            })
+            .collect())
     }
 
     /// One warning counter.

@@ -1,6 +1,6 @@
 //! Real simulations through the safe API, checked against closed forms, plus error handling,
 //! handle invalidation, buffers and contacts.
-use lfem::{Body, BodyDef, BodyType, Contact, Mesh, Model, ShapeDef, ShapeType, Status, WarningKind, World, WorldDef};
+use lfem::{AttachTo, Body, BodyDef, BodyType, Contact, EventType, Mesh, Model, ShapeDef, ShapeType, Status, WarningKind, World, WorldDef};
 
 const G: f64 = 9.81;
 
@@ -503,4 +503,78 @@ fn a_block_held_inside_out_is_reported_once_per_spell() {
         let w = world.warning(kind).unwrap();
         assert_eq!((w.count, w.last_time, w.last_body), (0, 0.0, Body::NULL));
     }
+}
+
+#[test]
+fn self_contact_is_for_deformable_bodies_only() {
+    // The flag reaches lfem: a static body asking for it is refused, a deformable one keeps it.
+    let mut world = World::new(&WorldDef::default()).unwrap();
+    let mut d = BodyDef::default();
+    assert!(!d.self_contact);
+    d.self_contact = true;
+    d.body_type = BodyType::Static;
+    let err = world.create_body(&d).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().contains("self_contact"), "message: {}", err.message());
+    d.body_type = BodyType::Deformable;
+    world.create_body(&d).unwrap();
+}
+
+#[test]
+fn a_bar_hangs_from_a_frame_and_a_resting_block_sleeps_with_events() {
+    // A bar held at its top nodes by a frame that never moves carries its weight (the
+    // attachment's force is m g at rest); a block settling on a plane begins one contact, then
+    // falls asleep (events), and stepping it asleep changes no position.
+    let mut def = WorldDef::default();
+    def.enable_sleep = true;
+    let mut world = World::new(&def).unwrap();
+    let mut mesh = Mesh::new_box([0.03, 0.03, 0.3], [1, 1, 10]).unwrap();
+    mesh.translate([-0.015, -0.015, 0.2]).unwrap();
+    let mut d = BodyDef::default();
+    d.young_modulus = 2e5;
+    d.damping = 10.0;
+    d.enable_sleep = false;
+    let bar = world.create_body(&d).unwrap();
+    world.add_mesh(bar, &mesh).unwrap();
+    let top = world.find_nodes_in_box(bar, [-1.0, -1.0, 0.4999], [1.0, 1.0, 0.5001]).unwrap();
+    let held = world.create_attachment(bar, &top, AttachTo::Frame([0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]), 0.0).unwrap();
+    let mut floor_def = BodyDef::default();
+    floor_def.body_type = BodyType::Static;
+    let floor = world.create_body(&floor_def).unwrap();
+    world.add_shape(floor, &ShapeDef::default()).unwrap();
+    let mut block_mesh = Mesh::new_box([0.1, 0.1, 0.1], [2, 2, 2]).unwrap();
+    block_mesh.translate([0.3, 0.0, 0.0005]).unwrap();
+    let mut bd = BodyDef::default();
+    bd.damping = 20.0;
+    let block = world.create_body(&bd).unwrap();
+    world.add_mesh(block, &block_mesh).unwrap();
+    let (mut begins, mut sleeps) = (0, 0);
+    for _ in 0..180 {
+        world.step(1.0 / 60.0).unwrap();
+        for e in world.events().unwrap() {
+            match e.event_type {
+                EventType::ContactBegin => begins += 1,
+                EventType::Sleep => {
+                    assert_eq!(e.body_a, block);
+                    sleeps += 1
+                }
+                _ => {}
+            }
+        }
+    }
+    assert_eq!((begins, sleeps), (1, 1));
+    assert!(!world.is_awake(block).unwrap());
+    assert!(world.is_awake(bar).unwrap());
+    let mass = world.mass(bar).unwrap();
+    let f = world.attachment_force(held).unwrap();
+    // At rest (damping 10 for 3 s) the held nodes carry the weight to well within 1e-6.
+    assert!(close(f[2], mass * G, 1e-6 * mass * G), "force {:?}, m g {}", f, mass * G);
+    let x = world.positions(block).unwrap();
+    world.step(1.0 / 60.0).unwrap();
+    assert_eq!(world.positions(block).unwrap(), x);
+    world.wake(block).unwrap();
+    assert!(world.is_awake(block).unwrap());
+    world.destroy_attachment(held).unwrap();
+    assert!(!world.is_attachment_valid(held));
+    assert_eq!(world.attachment_force(held).unwrap_err().status(), Status::InvalidHandle);
 }

@@ -1,0 +1,119 @@
+// C shim of attachments, sleeping and events: validates, translates node numbers and handles,
+// and leaves the work to lfem::World.
+#include <cmath>
+#include <string>
+
+#include "api/handles.h"
+#include "api/node_lists.h"
+
+using namespace lfem;
+using namespace lfem::api;
+
+namespace {
+
+bool is_null(lfem_body b) { return b.index == 0 && b.generation == 0; }
+
+// A frame as the caller gives it: a finite centre and a quaternion that can be normalised.
+void check_frame(const double* frame, const char* what) {
+    require_pointer(frame, what);
+    require_finite(frame, 7, what);
+    const double q2 = frame[3] * frame[3] + frame[4] * frame[4] + frame[5] * frame[5] + frame[6] * frame[6];
+    require(q2 > 1e-12, std::string(what) + "'s quaternion (elements 3..6) must not be zero");
+}
+
+lfem_event event_as_c(const StepEvent& e) {
+    lfem_event out{};
+    out.type = e.type;
+    out.body_a = e.a;
+    out.body_b = e.b;
+    out.attachment = e.attachment;
+    out.normal_impulse = e.normal_impulse;
+    out.max_force = e.max_force;
+    return out;
+}
+
+}  // namespace
+
+extern "C" {
+
+LFEM_API lfem_attachment_def lfem_attachment_def_default(void) {
+    lfem_attachment_def d{};
+    d.frame[3] = 1.0;
+    d.internal_value = attachment_def_cookie;
+    return d;
+}
+
+LFEM_API lfem_status lfem_attachment_create(lfem_world* world, const lfem_attachment_def* def, lfem_attachment* out) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        require_pointer(def, "def");
+        require_pointer(out, "out");
+        require(def->internal_value == attachment_def_cookie, "def was not initialised by lfem_attachment_def_default()");
+        const Body& b = w.body(def->body);
+        require(def->node_count >= 1, "def->node_count must be >= 1");
+        require(is_null(def->target) || w.is_valid(def->target),
+                "def->target {" + std::to_string(def->target.index) + ", " + std::to_string(def->target.generation) +
+                    "} is stale or of another world (the null handle means the caller's frame)");
+        if (is_null(def->target)) check_frame(def->frame, "def->frame");
+        require(std::isfinite(def->break_force) && def->break_force >= 0.0,
+                "def->break_force must be finite and >= 0 N (0 = never breaks)");
+        const std::vector<uint32_t> nodes = internal_nodes(b, def->nodes, def->node_count);
+        double frame[7];
+        for (int k = 0; k < 7; ++k) frame[k] = def->frame[k];
+        *out = w.create_attachment(def->body, nodes, def->target, frame, def->break_force);
+    });
+}
+
+LFEM_API lfem_status lfem_attachment_destroy(lfem_world* world, lfem_attachment attachment) {
+    return guard(__func__, [&] { world_of(world).destroy_attachment(attachment); });
+}
+
+LFEM_API int lfem_attachment_is_valid(const lfem_world* world, lfem_attachment attachment) {
+    return world != nullptr && world->world.is_valid(attachment) ? 1 : 0;
+}
+
+LFEM_API lfem_status lfem_attachment_set_frame(lfem_world* world, lfem_attachment attachment, const double frame[7]) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.attachment(attachment);  // the handle first
+        check_frame(frame, "frame");
+        w.set_attachment_frame(attachment, frame);
+    });
+}
+
+LFEM_API lfem_status lfem_attachment_get_force(const lfem_world* world, lfem_attachment attachment, double force[3]) {
+    return guard(__func__, [&] {
+        const Attachment& a = world_of(world).attachment(attachment);
+        require_pointer(force, "force");
+        for (int k = 0; k < 3; ++k) force[k] = a.force[k];
+    });
+}
+
+LFEM_API lfem_status lfem_body_wake(lfem_world* world, lfem_body body) {
+    return guard(__func__, [&] { world_of(world).wake_body(body); });
+}
+
+LFEM_API int lfem_body_is_awake(const lfem_world* world, lfem_body body) {
+    if (world == nullptr || !world->world.is_valid(body)) return -1;
+    return world->world.is_awake(world->world.body(body)) ? 1 : 0;
+}
+
+LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* out, uint32_t capacity,
+                                           uint32_t* count) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        require_pointer(count, "count");
+        const std::vector<StepEvent>& events = w.events();
+        require(capacity == 0 || out != nullptr, "out is NULL with capacity " + std::to_string(capacity));
+        const uint32_t n = uint32_t(events.size());
+        if (n > capacity) {
+            *count = n;
+            throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) + " is below the " +
+                                                   std::to_string(n) + " events of the last step");
+        }
+        for (uint32_t i = 0; i < n; ++i) out[i] = event_as_c(events[i]);
+        *count = n;
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,69 @@
+// The points a constraint of the multiplier solve moves: a free node, moved directly by
+// Mhat^-1 G^T lambda, or a point of a rigid body, moved through the body's centre and rotation
+// corrections. Shared by contact pairs (solve_contact_multipliers.cpp) and attachment links
+// (link_constraint.cpp).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "common/math.h"
+#include "contact/contact_body.h"
+
+namespace lfem {
+
+// One of the four points of a constraint (the node, or a triangle node): a free node that the
+// solve moves directly, or a point of a rigid body, moved through the body's centre and
+// rotation corrections (its position is evaluated from them when asked).
+struct PointRef {
+    double* x = nullptr;         // free node: its position (x*, corrected in place)
+    const double* x0 = nullptr;  // position at the start of the step
+    double w = 0;                // free node: 1/mhat
+    RigidResponse* rigid = nullptr;
+    Vec3 base = Vec3::Zero();    // rigid point: its predicted position
+    Vec3 arm = Vec3::Zero();     // rigid point: predicted position minus predicted centre
+
+    Vec3 position() const {
+        if (rigid) return base + rigid->dc + rigid->dtheta.cross(arm);
+        return Vec3(x[0], x[1], x[2]);
+    }
+    // Inverse effective mass along unit direction n.
+    double response(const Vec3& n) const {
+        if (rigid) {
+            const Vec3 rn = arm.cross(n);
+            return rigid->inv_mass + rn.dot(rigid->inv_inertia * rn);
+        }
+        return w;
+    }
+    // Apply the force increment d (N) to this point; returns how far it moved.
+    double push(const Vec3& d) {
+        if (rigid) {
+            const Vec3 before = position();
+            rigid->dc += rigid->inv_mass * d;
+            rigid->dtheta += rigid->inv_inertia * arm.cross(d);
+            return (position() - before).cwiseAbs().maxCoeff();
+        }
+        // An immovable point (static, kinematic or fixed) is not written at all: the contact
+        // groups solved side by side may share it (a static floor's nodes).
+        if (w == 0.0) return 0.0;
+        for (int k = 0; k < 3; ++k) x[k] += w * d[k];
+        return w * d.cwiseAbs().maxCoeff();
+    }
+};
+
+// A node of body b as a constraint point.
+inline PointRef point_of(const ContactBody& b, uint32_t i) {
+    PointRef p;
+    p.x = b.x + 3 * std::size_t(i);
+    p.x0 = b.x_start + 3 * std::size_t(i);
+    if (b.rigid) {
+        p.rigid = b.rigid;
+        p.base = Vec3(p.x[0], p.x[1], p.x[2]);
+        p.arm = p.base - b.rigid->center;
+    } else {
+        p.w = b.inv_mass ? b.inv_mass[i] : 0.0;
+    }
+    return p;
+}
+
+}  // namespace lfem

@@ -1,0 +1,46 @@
+#include "contact/link_constraint.h"
+
+#include <algorithm>
+
+namespace lfem {
+
+void make_link_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
+                     std::vector<LinkRecord>& links, std::vector<LinkPair>& pairs) {
+    pairs.assign(links.size(), LinkPair{});
+    for (std::size_t k = 0; k < links.size(); ++k) {
+        LinkRecord& l = links[k];
+        LinkPair& p = pairs[k];
+        p.node = point_of(bodies[body_of_slot[l.body_a]], l.node);
+        const Vec3 target(l.target);
+        if (l.body_b != UINT32_MAX && bodies[body_of_slot[l.body_b]].rigid) {
+            RigidResponse* rigid = bodies[body_of_slot[l.body_b]].rigid;
+            p.target.rigid = rigid;
+            p.target.base = target;
+            p.target.arm = target - rigid->center;
+        } else {
+            p.target.x = l.target;  // fixed in the solve: never written (w = 0)
+        }
+    }
+}
+
+void warm_start_link(const LinkRecord& link, LinkPair& pair) {
+    const Vec3 lambda(link.lambda);
+    pair.node.push(lambda);
+    pair.target.push(-lambda);
+}
+
+double update_link(LinkRecord& link, LinkPair& pair) {
+    double largest = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        const Vec3 e = Vec3::Unit(d);
+        const double H = pair.node.response(e) + pair.target.response(e);
+        if (!(H > 0.0)) continue;  // both ends immovable along d
+        const double r = pair.node.position()[d] - pair.target.position()[d];
+        const double step = -r / H;
+        link.lambda[d] += step;
+        largest = std::max({largest, pair.node.push(step * e), pair.target.push(-step * e)});
+    }
+    return largest;
+}
+
+}  // namespace lfem

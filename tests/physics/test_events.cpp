@@ -1,0 +1,139 @@
+// Contact events (issue 17): begin and end per pair of bodies, fetched after a step, with the
+// pair's normal impulse and largest force. The impulse is checked against the cube's change of
+// momentum (Newton's second law over the calls of the contact).
+#include <cmath>
+#include <cstdio>
+
+#include "physics/lfem_test_util.h"
+
+using namespace lfem_test;
+
+namespace {
+
+std::vector<lfem_event> events_of(lfem_world* w) {
+    uint32_t count = 0;
+    const lfem_status asked = lfem_world_get_events(w, nullptr, 0, &count);
+    EXPECT_EQ(asked, count ? LFEM_BUFFER_TOO_SMALL : LFEM_OK);
+    std::vector<lfem_event> out(count);
+    EXPECT_EQ(lfem_world_get_events(w, out.data(), count, &count), LFEM_OK);
+    return out;
+}
+
+double momentum_z(lfem_world* w, lfem_body b) {
+    double P[3];
+    EXPECT_EQ(lfem_body_get_momentum(w, b, P, nullptr), LFEM_OK);
+    return P[2];
+}
+
+}  // namespace
+
+// A stiff cube (E = 1e7 Pa, 2 cm) dropped at 1 m/s on a static block bounces: one begin, one
+// end (and nothing in between). Over the calls from the one before the touch to the one that
+// ends it, the floor's impulse on the cube is its change of momentum plus what gravity took:
+// impulse = dP_z + m g t. The events carry the impulse of the calls they happen in; when the
+// touch lasts several calls the calls in between carry none, so the test covers the touch
+// with calls short enough to begin and end it in one call or two adjacent ones.
+TEST(Events, ABouncingCubeBeginsAndEndsOneContactWithTheImpulseItsMomentumShows) {
+    World w;
+    Mesh floor, cube;
+    make_box_mesh(floor, 0.2, 0.2, 0.05, 2, 2, 1, -0.1, -0.1, -0.05);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    fd.friction = 0;
+    const lfem_body f = add_body(w, fd, floor);
+    make_box_mesh(cube, 0.02, 0.02, 0.02, 2, 2, 2, -0.01, -0.01, 0.001);
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 1e7;
+    d.friction = 0;
+    d.linear_velocity[2] = -1.0;
+    const lfem_body c = add_body(w, d, cube);
+    double mass = 0;
+    lfem_body_get_mass(w, c, &mass);
+    const double dt = 1e-3;
+    int begins = 0, ends = 0, begin_call = -1, end_call = -1;
+    double impulse = 0, largest = 0, P_before = 0, P_after = 0, t_begin = 0, t_end = 0;
+    for (int call = 0; call < 40 && ends == 0; ++call) {
+        const double P = momentum_z(w, c), t = stats(w).time;
+        ASSERT_EQ(lfem_world_step(w, dt), LFEM_OK) << lfem_last_error();
+        for (const lfem_event& e : events_of(w)) {
+            ASSERT_TRUE(e.type == LFEM_EVENT_CONTACT_BEGIN || e.type == LFEM_EVENT_CONTACT_END) << e.type;
+            // The pair, the lower slot first.
+            EXPECT_EQ(e.body_a.index, std::min(f.index, c.index));
+            EXPECT_EQ(e.body_b.index, std::max(f.index, c.index));
+            if (e.type == LFEM_EVENT_CONTACT_BEGIN) {
+                ++begins, begin_call = call, P_before = P, t_begin = t;
+                impulse += e.normal_impulse;
+            } else {
+                ++ends, end_call = call, t_end = stats(w).time;
+                if (end_call != begin_call) impulse += e.normal_impulse;  // the same call's once
+            }
+            largest = std::max(largest, e.max_force);
+        }
+        P_after = momentum_z(w, c);
+    }
+    ASSERT_EQ(begins, 1);
+    ASSERT_EQ(ends, 1);
+    ASSERT_LE(end_call - begin_call, 1) << "the touch outlasted two calls: shorten dt";
+    const double expected = (P_after - P_before) + mass * 9.81 * (t_end - t_begin);
+    std::printf("bounce: begin in call %d, end in call %d, impulse %.6g N s against dP + m g t = %.6g N s "
+                "(m v = %.6g), largest force %.4g N\n",
+                begin_call, end_call, impulse, expected, mass * 1.0, largest);
+    // The impulse is what the solve applied; the momentum is read from the synchronized
+    // velocities, whose difference over the same calls is exactly that impulse plus gravity's
+    // up to round-off of the velocity sums (1e-12 of m v).
+    EXPECT_NEAR(impulse, expected, 1e-9 * mass);
+    EXPECT_GT(impulse, 1.0 * mass);   // at least the momentum it came with
+    EXPECT_LT(impulse, 2.01 * mass);  // at most a perfect bounce (plus gravity's share)
+    EXPECT_GE(largest * dt * 2, impulse);  // the peak is at least the mean over the calls
+}
+
+// A cube resting on the floor: one begin, then no events while it rests, and an end when it is
+// lifted away (destroying a body ends its pairs silently).
+TEST(Events, AResTingContactBeginsOnceAndEndsWhenTheCubeLeaves) {
+    World w;
+    Mesh floor, cube;
+    make_box_mesh(floor, 0.4, 0.4, 0.05, 2, 2, 1, -0.2, -0.2, -0.05);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    add_body(w, fd, floor);
+    make_box_mesh(cube, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0005);
+    lfem_body_def d = lfem_body_def_default();
+    d.damping = 20;
+    const lfem_body c = add_body(w, d, cube);
+    int begins = 0, ends = 0;
+    for (int call = 0; call < 60; ++call) {
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+        for (const lfem_event& e : events_of(w)) begins += e.type == LFEM_EVENT_CONTACT_BEGIN, ends += e.type == LFEM_EVENT_CONTACT_END;
+    }
+    EXPECT_EQ(begins, 1);
+    EXPECT_EQ(ends, 0);
+    // Thrown up at 2 m/s: it leaves the floor within the call.
+    std::vector<double> v(3 * cube.nodes(), 0.0);
+    for (uint32_t i = 0; i < cube.nodes(); ++i) v[3 * i + 2] = 2.0;
+    ASSERT_EQ(lfem_body_set_velocities(w, c, v.data(), cube.nodes()), LFEM_OK);
+    ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    const std::vector<lfem_event> last = events_of(w);
+    ASSERT_EQ(last.size(), 1u);
+    EXPECT_EQ(last[0].type, LFEM_EVENT_CONTACT_END);
+}
+
+TEST(Events, TooSmallBuffersAndNullsAreRefused) {
+    World w;
+    Mesh floor, cube;
+    make_box_mesh(floor, 0.4, 0.4, 0.05, 2, 2, 1, -0.2, -0.2, -0.05);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    add_body(w, fd, floor);
+    make_box_mesh(cube, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0005);
+    add_body(w, lfem_body_def_default(), cube);
+    ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    uint32_t count = 99;
+    lfem_event one{};
+    EXPECT_EQ(lfem_world_get_events(w, nullptr, 0, &count), LFEM_BUFFER_TOO_SMALL);
+    EXPECT_EQ(count, 1u);
+    EXPECT_EQ(lfem_world_get_events(w, &one, 1, nullptr), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_world_get_events(w, nullptr, 1, &count), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_world_get_events(nullptr, &one, 1, &count), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_world_get_events(w, &one, 1, &count), LFEM_OK);
+    EXPECT_EQ(one.type, LFEM_EVENT_CONTACT_BEGIN);
+}
