@@ -9,6 +9,7 @@
 #include "common/cpu_dispatch.h"
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
+#include "fem/quadratic_forces.h"
 #include "fem/tet_element.h"
 #include "fem/volume_barrier.h"
 
@@ -355,6 +356,7 @@ ElasticResult elastic_forces(const ElementMesh& mesh, const ElasticState& state,
 
 ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& material,
                                      const ElasticState& state, ThreadPool* pool) {
+    if (mesh.nodes_per_tet == kQuadraticTetNodes) return compute_quadratic_elastic_forces(mesh, material, state, pool);
     const Lame lame = material.lame;
     switch (material.model) {
         case LFEM_MODEL_LINEAR:
@@ -380,6 +382,7 @@ ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& ma
 
 void apply_reference_stiffness(const ElementMesh& mesh, const Lame& lame, const double* u,
                                double* y, ThreadPool* pool) {
+    if (mesh.nodes_per_tet == kQuadraticTetNodes) return apply_quadratic_reference_stiffness(mesh, lame, u, y, pool);
     // The linear kernel on the edges of u gives -K u.
     element_loop<false>(mesh, u, y, pool, HookeModel{lame});
     for (std::size_t i = 0; i < 3 * std::size_t(mesh.node_count()); ++i) y[i] = -y[i];
@@ -387,6 +390,8 @@ void apply_reference_stiffness(const ElementMesh& mesh, const Lame& lame, const 
 
 void compute_von_mises(const ElementMesh& mesh, const Material& material, const double* x,
                        const float* tet_rotation, const double* frame, double* out) {
+    if (mesh.nodes_per_tet == kQuadraticTetNodes)
+        return compute_quadratic_von_mises(mesh, material, x, tet_rotation, frame, out);
     const double* X = mesh.X.data();
     const Mat3 R_body = material.model == LFEM_MODEL_PAPER ? Mat3(load_quaternion(frame).toRotationMatrix())
                                                            : Mat3::Identity();

@@ -75,9 +75,10 @@ public:
     const BodyRegistry& bodies() const { return bodies_; }
 
     // ---- mesh ingestion (add_mesh.cpp); each all or nothing
-    // Appends a checked tet mesh to a body (see lfem_body_add_mesh).
+    // Appends a checked tet mesh to a body (see lfem_body_add_mesh): tets of nodes_per_tet nodes,
+    // 4 or 10 (lfem_body_add_quadratic_mesh), the same for every mesh of a body.
     void add_mesh(lfem_body body, const double* positions, uint32_t node_count, const uint32_t* tets,
-                  uint32_t tet_count);
+                  uint32_t tet_count, uint32_t nodes_per_tet = 4);
     // Gives a static or kinematic body a surface of triangles (no tets, no mass), e.g. terrain.
     void add_triangle_mesh(lfem_body body, const double* positions, uint32_t node_count,
                            const uint32_t* triangles, uint32_t triangle_count);
