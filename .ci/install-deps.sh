@@ -38,6 +38,15 @@ PACKAGES=(
   # fuzzing (tests/fuzz/run.sh): clang with libFuzzer and the sanitizer runtimes
   clang-14
   libclang-rt-14-dev
+  # the other targets (tests/platforms.sh): Windows x64 cross-built with MinGW-w64 (posix
+  # threads, for std::thread) and run under Wine (wine64: console programs need no display);
+  # ARM64 Linux cross-built and run under qemu-user, against Debian's arm64 libccd through
+  # multiarch (a package named PKG:ARCH makes this script add the architecture ARCH first)
+  g++-mingw-w64-x86-64-posix
+  wine64
+  g++-aarch64-linux-gnu
+  qemu-user
+  libccd-dev:arm64
 )
 
 export DEBIAN_FRONTEND=noninteractive
@@ -79,6 +88,7 @@ else
   echo "$me: error: installing them needs root or sudo (passwordless when not on a terminal);" \
        "run this script as root, or install them yourself:" >&2
   echo "  apt-get update && apt-get install -y ${missing[*]}" >&2
+  echo "(a package named PKG:ARCH needs dpkg --add-architecture ARCH before that)" >&2
   exit 1
 fi
 
@@ -92,6 +102,16 @@ run() {
     exit 1
   fi
 }
+
+# Multiarch: a missing PKG:ARCH needs ARCH among dpkg's architectures before apt-get update.
+for pkg in "${missing[@]}"; do
+  [[ "$pkg" == *:* ]] || continue
+  arch=${pkg##*:}
+  if [[ "$arch" != "$(dpkg --print-architecture)" ]] &&
+     ! dpkg --print-foreign-architectures | grep -qx "$arch"; then
+    run dpkg --add-architecture "$arch"
+  fi
+done
 
 # --no-install-recommends keeps fresh images lean; every package listed above builds and runs
 # without its recommends (list a recommended package explicitly if it is ever needed).

@@ -12,7 +12,16 @@
 #
 # The Rust crates are not installed: cargo takes them by path or from a registry, and their
 # build script finds this installed library through lfem.pc.
-option(LFEM_INSTALL_BINDINGS "cmake --install also installs the Python package and the C# bindings" ON)
+# Off by default in a cross build: these rules follow the host (its python3's site folder,
+# mono's dllmap to the ELF SONAME); for Windows, Lfem.cs and the Python package load lfem.dll
+# from beside the program.
+if(CMAKE_CROSSCOMPILING)
+  set(lfem_install_bindings_default OFF)
+else()
+  set(lfem_install_bindings_default ON)
+endif()
+option(LFEM_INSTALL_BINDINGS "cmake --install also installs the Python package and the C# bindings"
+       ${lfem_install_bindings_default})
 if(NOT LFEM_INSTALL_BINDINGS)
   return()
 endif()

@@ -1,5 +1,6 @@
 /* What the paper's scenes (hammer_table, cup_wall, bar_impact) share: the error check, a wall
- * clock, and where their output files go. Header only (static inline), C99 + POSIX. */
+ * clock, and where their output files go. Header only (static inline), C99 + POSIX (on
+ * Windows, MinGW-w64's clock_gettime and _mkdir). */
 #ifndef LFEM_EXAMPLES_SCENE_COMMON_H
 #define LFEM_EXAMPLES_SCENE_COMMON_H
 
@@ -9,6 +10,12 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#ifdef _WIN32
+#include <direct.h> /* _mkdir */
+#define scene_mkdir(folder) _mkdir(folder)
+#else
+#define scene_mkdir(folder) mkdir(folder, 0755)
+#endif
 
 #include "lfem.h"
 
@@ -41,7 +48,7 @@ static inline int scene_make_output_folder(const char* pvd_path) {
     }
     memcpy(folder, pvd_path, n);
     folder[n] = '\0';
-    if (mkdir(folder, 0755) != 0 && errno != EEXIST) {
+    if (scene_mkdir(folder) != 0 && errno != EEXIST) {
         fprintf(stderr, "cannot create the folder %s: %s\n", folder, strerror(errno));
         return -1;
     }

@@ -361,6 +361,19 @@ LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body,
                                         const double* positions, uint32_t node_count,
                                         const uint32_t* tets, uint32_t tet_count);
 
+/* Add a mesh of 10-node (quadratic) tets, as lfem_body_add_mesh otherwise: tets holds 10 node
+ * indices per tet, its corners c0..c3 first (det[c1-c0, c2-c0, c3-c0] > 0), then the mid-edge
+ * nodes of the edges (c0,c1), (c1,c2), (c0,c2), (c0,c3), (c1,c3), (c2,c3), VTK's order
+ * (lfem_mesh_load_gmsh turns Gmsh's type 11 into it). Tets that share an edge share its
+ * mid-edge node. Mid-edge nodes may lie off the straight edge (a curved element, as Gmsh puts
+ * them on a curved boundary) as long as the element does not fold over (det J > 0 at its 4
+ * quadrature points and corners). The element integrates its stiffness with 4 points and lumps
+ * its mass rho V / 32 to each corner and 7 rho V / 48 to each mid-edge node. All meshes of a
+ * body have tets of one kind; lfem_mesh_make_quadratic makes such a mesh of any linear one. */
+LFEM_API lfem_status lfem_body_add_quadratic_mesh(lfem_world* world, lfem_body body,
+                                                  const double* positions, uint32_t node_count,
+                                                  const uint32_t* tets, uint32_t tet_count);
+
 /* Give a static or kinematic body a surface of triangles instead of tets (terrain, a wall, a
  * ramp): 3 node indices per triangle, counter-clockwise seen from the side bodies touch (the
  * normal (b-a)x(c-a) points towards them). Only one mesh per such body. Its boundary
@@ -374,6 +387,9 @@ LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body
                                               uint32_t* out);
 LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body,
                                              uint32_t* out);
+/* Nodes per tet of the body: 4, 10 (quadratic tets), or 0 for a body without tets. */
+LFEM_API lfem_status lfem_body_get_nodes_per_tet(const lfem_world* world, lfem_body body,
+                                                 uint32_t* out);
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body,
                                              void** out);
 
@@ -385,7 +401,9 @@ LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body
 
 /* The body's inverted tets after the last sub-step (J = det F <= 0), the smallest volume
  * ratio J of its tets, and for how long (s) it has had inverted tets without a break (0 when
- * it has none). 0, 1, 0 for a body that is not deformable. Each output is nullable. */
+ * it has none). 0, 1, 0 for a body that is not deformable. A 10-node tet's J varies inside it:
+ * it counts as inverted when J <= 0 at one of its 4 quadrature points, and its J is the
+ * smallest at them. Each output is nullable. */
 LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body body, uint32_t* inverted_tets,
                                              double* min_jacobian, double* inverted_for);
 
@@ -437,14 +455,25 @@ LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body
 LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
                                               const double* velocities, uint32_t node_count);
 
-/* Boundary triangles (3 node indices each, counter-clockwise seen from outside). */
+/* Boundary triangles (3 node indices each, counter-clockwise seen from outside): the flat
+ * triangles contact uses, which for a body of 10-node tets are the 4 triangles of each 6-node
+ * face (corner, mid-edge nodes): (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca). */
 LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* world,
                                                            lfem_body body, uint32_t* out);
 LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, lfem_body body,
                                                       uint32_t* out,
                                                       uint32_t triangle_capacity);
 
-/* Von Mises equivalent of the Cauchy stress in each tet (Pa), into out[tet_capacity]. */
+/* The boundary as faces: for a body of 10-node tets its 6-node triangles (6 node indices each:
+ * corners a, b, c counter-clockwise seen from outside, then the mid-edge nodes of ab, bc, ca),
+ * for any other body its boundary triangles (3 each). face_capacity counts faces. */
+LFEM_API lfem_status lfem_body_get_boundary_face_count(const lfem_world* world, lfem_body body,
+                                                       uint32_t* out);
+LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_body body,
+                                                  uint32_t* out, uint32_t face_capacity);
+
+/* Von Mises equivalent of the Cauchy stress in each tet (Pa), into out[tet_capacity]; of a
+ * 10-node tet, of its mean stress over its quadrature points. */
 LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
                                                     double* out, uint32_t tet_capacity);
 
@@ -592,7 +621,8 @@ typedef struct lfem_contact {
     lfem_body body_a;        /* the body that owns the node */
     lfem_body body_b;        /* the body that owns the triangle */
     uint32_t node;           /* node index in body_a */
-    uint32_t triangle[3];    /* node indices a, b, c in body_b */
+    uint32_t triangle[3];    /* node indices a, b, c in body_b (for a body of 10-node tets,
+                                one of the 4 flat triangles of a 6-node face) */
     double barycentric[2];   /* t1, t2 */
     double position[3];      /* m, the contact point on the triangle */
     double normal[3];        /* unit, out of body_b's surface (towards body_a) */
@@ -777,7 +807,8 @@ LFEM_API lfem_status lfem_world_overlap_box(const lfem_world* world, const doubl
 /* Meshes: builders and Gmsh import                                                           */
 /* ---------------------------------------------------------------------------------------- */
 
-typedef struct lfem_mesh lfem_mesh; /* opaque: node positions and tets, owned by the caller */
+typedef struct lfem_mesh lfem_mesh; /* opaque: node positions and tets (4 or 10 nodes each),
+                                       owned by the caller */
 
 /* A box [0,size[0]] x [0,size[1]] x [0,size[2]] (m) of cells[0]*cells[1]*cells[2] hexahedra,
  * each split into 6 tets (all cells >= 1). */
@@ -801,10 +832,18 @@ LFEM_API lfem_status lfem_mesh_create_hammer(double handle_length, double handle
                                              double head_length, double head_width,
                                              double cell_size, lfem_mesh** out);
 
-/* Read the tetrahedra of a Gmsh .msh file (ASCII format 2.2 or 4.1); other cell types are
- * skipped, unused nodes dropped, negatively oriented tets reordered. A missing or malformed
- * file gives LFEM_IO_ERROR with the line number in the message. */
+/* Read the tetrahedra of a Gmsh .msh file (ASCII format 2.2 or 4.1): 4-node tets (element
+ * type 4) or 10-node tets (type 11, turned into lfem's node order, see
+ * lfem_body_add_quadratic_mesh), not both in one file; other cell types are skipped, unused
+ * nodes dropped, negatively oriented tets reordered. A missing or malformed file gives
+ * LFEM_IO_ERROR with the line number in the message. */
 LFEM_API lfem_status lfem_mesh_load_gmsh(const char* path, lfem_mesh** out);
+
+/* Turn a mesh of 4-node tets into 10-node (quadratic) tets: a node at the middle of every edge
+ * (numbered after the corners, which keep their indices), shared by the tets around the edge.
+ * Serves every builder and any linear mesh. LFEM_INVALID_ARGUMENT for a mesh that already has
+ * 10-node tets (the mesh is then unchanged). */
+LFEM_API lfem_status lfem_mesh_make_quadratic(lfem_mesh* mesh);
 
 /* Nullable. */
 LFEM_API void lfem_mesh_destroy(lfem_mesh* mesh);
@@ -812,7 +851,10 @@ LFEM_API void lfem_mesh_destroy(lfem_mesh* mesh);
 /* Read-only views, valid until the mesh is changed or destroyed. NULL / 0 for a NULL mesh. */
 LFEM_API uint32_t lfem_mesh_get_node_count(const lfem_mesh* mesh);
 LFEM_API uint32_t lfem_mesh_get_tet_count(const lfem_mesh* mesh);
+/* 4, or 10 for a mesh of quadratic tets (lfem_mesh_make_quadratic, a Gmsh file of type 11). */
+LFEM_API uint32_t lfem_mesh_get_nodes_per_tet(const lfem_mesh* mesh);
 LFEM_API const double* lfem_mesh_get_positions(const lfem_mesh* mesh);
+/* nodes_per_tet node indices per tet. */
 LFEM_API const uint32_t* lfem_mesh_get_tets(const lfem_mesh* mesh);
 
 /* Move a mesh by offset (m), or rotate it about the origin by angle (rad) around axis. */
@@ -830,7 +872,8 @@ typedef struct lfem_vtk_series lfem_vtk_series; /* opaque */
  * is reported (LFEM_IO_ERROR) by the first lfem_vtk_series_write_frame. */
 LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_series** out);
 /* Write every body of the world (positions, velocities, von Mises stress, body index) as the
- * next frame at the world's time, and rewrite the .pvd so it is valid after every frame. */
+ * next frame at the world's time, and rewrite the .pvd so it is valid after every frame. Tets
+ * are VTK_TETRA cells, 10-node tets VTK_QUADRATIC_TETRA (24). */
 LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series,
                                                  const lfem_world* world);
 /* Nullable. */

@@ -626,12 +626,19 @@ namespace Lfem
 
         public bool IsValid(Body body) { return Native.lfem_body_is_valid(handle, body) != 0; }
 
+        /// <summary>Add the tets of a mesh (copied): 4-node tets, or 10-node ones
+        /// (Mesh.MakeQuadratic, a Gmsh file of type 11) through lfem_body_add_quadratic_mesh.</summary>
         public void AddMesh(Body body, Mesh mesh)
         {
             if (mesh == null) throw new ArgumentNullException("mesh");
-            LfemException.Check(Native.lfem_body_add_mesh(handle, body, Native.lfem_mesh_get_positions(mesh.Handle),
-                Native.lfem_mesh_get_node_count(mesh.Handle), Native.lfem_mesh_get_tets(mesh.Handle),
-                Native.lfem_mesh_get_tet_count(mesh.Handle)));
+            if (mesh.NodesPerTet == 10)
+                LfemException.Check(Native.lfem_body_add_quadratic_mesh(handle, body, Native.lfem_mesh_get_positions(mesh.Handle),
+                    Native.lfem_mesh_get_node_count(mesh.Handle), Native.lfem_mesh_get_tets(mesh.Handle),
+                    Native.lfem_mesh_get_tet_count(mesh.Handle)));
+            else
+                LfemException.Check(Native.lfem_body_add_mesh(handle, body, Native.lfem_mesh_get_positions(mesh.Handle),
+                    Native.lfem_mesh_get_node_count(mesh.Handle), Native.lfem_mesh_get_tets(mesh.Handle),
+                    Native.lfem_mesh_get_tet_count(mesh.Handle)));
             GC.KeepAlive(mesh);
         }
 
@@ -643,6 +650,26 @@ namespace Lfem
             if (tets.Length % 4 != 0)
                 throw new ArgumentException("Lfem: tets.Length " + tets.Length + " is not a multiple of 4", "tets");
             LfemException.Check(Native.lfem_body_add_mesh(handle, body, positions, (uint)positions.Length, tets, (uint)(tets.Length / 4)));
+        }
+
+        /// <summary>Add nodes (m) and 10-node tets (10 node indices each, flat: the corners, then
+        /// the mid-edge nodes of the edges 01, 12, 02, 03, 13, 23) to a body.</summary>
+        public void AddQuadraticMesh(Body body, Vec3[] positions, uint[] tets)
+        {
+            if (positions == null) throw new ArgumentNullException("positions");
+            if (tets == null) throw new ArgumentNullException("tets");
+            if (tets.Length % 10 != 0)
+                throw new ArgumentException("Lfem: tets.Length " + tets.Length + " is not a multiple of 10", "tets");
+            LfemException.Check(Native.lfem_body_add_quadratic_mesh(handle, body, positions, (uint)positions.Length, tets,
+                                                                    (uint)(tets.Length / 10)));
+        }
+
+        /// <summary>Nodes per tet of a body: 4, 10 for quadratic tets, 0 without tets.</summary>
+        public int GetNodesPerTet(Body body)
+        {
+            uint n;
+            LfemException.Check(Native.lfem_body_get_nodes_per_tet(handle, body, out n));
+            return (int)n;
         }
 
         /// <summary>Give a static or kinematic body a rigid shape; points: the convex hull's
@@ -771,6 +798,20 @@ namespace Lfem
             uint[] t = new uint[3 * n];
             LfemException.Check(Native.lfem_body_get_boundary_triangles(handle, body, t, (uint)n));
             return t;
+        }
+
+        /// <summary>The boundary as faces (flat): 6 node indices per face for a body of 10-node
+        /// tets (corners a, b, c counter-clockwise from outside, then the mid-edge nodes of ab,
+        /// bc, ca), 3 (the boundary triangles) for any other body.</summary>
+        public uint[] GetBoundaryFaces(Body body)
+        {
+            int n = CountFor(Native.lfem_body_get_boundary_face_count, "lfem_body_get_boundary_face_count", body,
+                             "lfem_body_get_boundary_faces");
+            int width = CountFor(Native.lfem_body_get_nodes_per_tet, "lfem_body_get_nodes_per_tet", body,
+                                 "lfem_body_get_boundary_faces") == 10 ? 6 : 3;
+            uint[] f = new uint[width * n];
+            LfemException.Check(Native.lfem_body_get_boundary_faces(handle, body, f, (uint)n));
+            return f;
         }
 
         /// <summary>Von Mises stress (Pa), one per tet.</summary>
@@ -1055,7 +1096,8 @@ namespace Lfem
             return new Mesh(s, h);
         }
 
-        /// <summary>The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1).</summary>
+        /// <summary>The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1): 4-node ones, or
+        /// 10-node ones (type 11).</summary>
         public static Mesh LoadGmsh(string path)
         {
             MeshHandle h;
@@ -1065,6 +1107,12 @@ namespace Lfem
 
         public int NodeCount { get { return (int)Native.lfem_mesh_get_node_count(handle); } }
         public int TetCount { get { return (int)Native.lfem_mesh_get_tet_count(handle); } }
+        /// <summary>4, or 10 for quadratic tets.</summary>
+        public int NodesPerTet { get { return (int)Native.lfem_mesh_get_nodes_per_tet(handle); } }
+
+        /// <summary>Turn the 4-node tets into 10-node ones: a node at the middle of every edge,
+        /// numbered after the corners (see lfem_mesh_make_quadratic).</summary>
+        public void MakeQuadratic() { LfemException.Check(Native.lfem_mesh_make_quadratic(handle)); }
 
         /// <summary>A copy of the node positions (m).</summary>
         public Vec3[] GetPositions()
@@ -1077,10 +1125,10 @@ namespace Lfem
             return x;
         }
 
-        /// <summary>A copy of the tets, 4 node indices each (flat).</summary>
+        /// <summary>A copy of the tets, NodesPerTet node indices each (flat).</summary>
         public uint[] GetTets()
         {
-            int n = 4 * TetCount;
+            int n = NodesPerTet * TetCount;
             int[] raw = new int[n];
             if (n > 0) Marshal.Copy(Native.lfem_mesh_get_tets(handle), raw, 0, n);
             uint[] t = new uint[n];
@@ -1155,6 +1203,9 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern int lfem_body_is_valid(WorldHandle world, Body body);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_mesh(WorldHandle world, Body body, IntPtr positions, uint nodeCount, IntPtr tets, uint tetCount);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_mesh(WorldHandle world, Body body, [In] Vec3[] positions, uint nodeCount, [In] uint[] tets, uint tetCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_quadratic_mesh(WorldHandle world, Body body, IntPtr positions, uint nodeCount, IntPtr tets, uint tetCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_quadratic_mesh(WorldHandle world, Body body, [In] Vec3[] positions, uint nodeCount, [In] uint[] tets, uint tetCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_nodes_per_tet(WorldHandle world, Body body, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_node_count(WorldHandle world, Body body, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_tet_count(WorldHandle world, Body body, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_user_data(WorldHandle world, Body body, out IntPtr userData);
@@ -1179,6 +1230,8 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_velocities(WorldHandle world, Body body, [In] Vec3[] velocities, uint nodeCount);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_boundary_triangle_count(WorldHandle world, Body body, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_boundary_triangles(WorldHandle world, Body body, [Out] uint[] triangles, uint triangleCapacity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_boundary_face_count(WorldHandle world, Body body, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_boundary_faces(WorldHandle world, Body body, [Out] uint[] faces, uint faceCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_von_mises_stress(WorldHandle world, Body body, [Out] double[] stress, uint tetCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_rotation(WorldHandle world, Body body, [Out] double[] rotation);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_find_nodes_in_box(WorldHandle world, Body body, ref Vec3 lo, ref Vec3 hi, [Out] uint[] nodes, uint capacity, out uint count);
@@ -1216,6 +1269,8 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern void lfem_mesh_destroy(IntPtr mesh);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern uint lfem_mesh_get_node_count(MeshHandle mesh);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern uint lfem_mesh_get_tet_count(MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern uint lfem_mesh_get_nodes_per_tet(MeshHandle mesh);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_make_quadratic(MeshHandle mesh);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern IntPtr lfem_mesh_get_positions(MeshHandle mesh);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern IntPtr lfem_mesh_get_tets(MeshHandle mesh);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_translate(MeshHandle mesh, ref Vec3 offset);

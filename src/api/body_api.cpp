@@ -72,6 +72,23 @@ void check_mesh_arrays(const double* positions, uint32_t node_count, uint32_t mi
     require_finite(positions, 3 * std::size_t(node_count), "positions");
 }
 
+// A tet mesh of nodes_per_tet nodes a tet (4, or 10) for a body.
+lfem_status add_tet_mesh(const char* function, lfem_world* world, lfem_body body, const double* positions,
+                         uint32_t node_count, const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet) {
+    return guard(function, [&] {
+        World& w = world_of(world);
+        w.body(body);  // the handle first
+        check_mesh_arrays(positions, node_count, nodes_per_tet, tets, "tets", tet_count, "tet_count");
+        w.add_mesh(body, positions, node_count, tets, tet_count, nodes_per_tet);
+    });
+}
+
+// The boundary as faces: 6-node triangles of a body of 10-node tets, else the triangles.
+const std::vector<uint32_t>& boundary_faces(const Body& b) {
+    return b.ref.nodes_per_tet == 10 ? b.ref.surface.quadratic_faces : b.ref.surface.triangles;
+}
+std::size_t face_nodes(const Body& b) { return b.ref.nodes_per_tet == 10 ? 6 : 3; }
+
 void require_deformable(const Body& b, const char* what) {
     require(b.is_deformable(), std::string(what) + " needs a deformable body");
 }
@@ -133,12 +150,12 @@ LFEM_API int lfem_body_is_valid(const lfem_world* world, lfem_body body) {
 
 LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body, const double* positions,
                                         uint32_t node_count, const uint32_t* tets, uint32_t tet_count) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        w.body(body);  // the handle first
-        check_mesh_arrays(positions, node_count, 4, tets, "tets", tet_count, "tet_count");
-        w.add_mesh(body, positions, node_count, tets, tet_count);
-    });
+    return add_tet_mesh(__func__, world, body, positions, node_count, tets, tet_count, 4);
+}
+
+LFEM_API lfem_status lfem_body_add_quadratic_mesh(lfem_world* world, lfem_body body, const double* positions,
+                                                  uint32_t node_count, const uint32_t* tets, uint32_t tet_count) {
+    return add_tet_mesh(__func__, world, body, positions, node_count, tets, tet_count, 10);
 }
 
 LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body body, const double* positions,
@@ -158,6 +175,11 @@ LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body
 
 LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body, uint32_t* out) {
     return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.tet_count(); });
+}
+
+LFEM_API lfem_status lfem_body_get_nodes_per_tet(const lfem_world* world, lfem_body body, uint32_t* out) {
+    return read_body(__func__, world, body, out,
+                     [](const Body& b) { return b.ref.tet_count() ? b.ref.nodes_per_tet : uint32_t(0); });
 }
 
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body, void** out) {
@@ -251,6 +273,21 @@ LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, l
         const std::vector<uint32_t>& triangles = b.ref.surface.triangles;
         require_capacity(triangle_capacity, b.ref.surface.triangle_count(), "triangle");
         for (std::size_t j = 0; j < triangles.size(); ++j) out[j] = b.ref.numbering.api_node(triangles[j]);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_boundary_face_count(const lfem_world* world, lfem_body body, uint32_t* out) {
+    return read_body(__func__, world, body, out, [](const Body& b) { return uint32_t(boundary_faces(b).size() / face_nodes(b)); });
+}
+
+LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_body body, uint32_t* out,
+                                                  uint32_t face_capacity) {
+    return guard(__func__, [&] {
+        const Body& b = world_of(world).body(body);
+        require_pointer(out, "out");
+        const std::vector<uint32_t>& faces = boundary_faces(b);
+        require_capacity(face_capacity, uint32_t(faces.size() / face_nodes(b)), "face");
+        for (std::size_t j = 0; j < faces.size(); ++j) out[j] = b.ref.numbering.api_node(faces[j]);
     });
 }
 

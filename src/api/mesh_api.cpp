@@ -1,5 +1,5 @@
-// C entry points of the "Meshes" section of lfem.h: builders, Gmsh import, read-only views
-// and rigid motions of a caller-owned mesh. Each function checks its arguments, builds its
+// C entry points of the "Meshes" section of lfem.h: builders, Gmsh import, the conversion to
+// 10-node tets, read-only views and rigid motions of a caller-owned mesh. Each function checks its arguments, builds its
 // result on the side and touches the caller's mesh or *out only as its last step, so a failed
 // call changes nothing.
 #include <cmath>
@@ -13,6 +13,7 @@
 #include "mesh/gmsh_reader.h"
 #endif
 #include "mesh/mesh_builders.h"
+#include "mesh/quadratic_mesh.h"
 #include "mesh/tet_mesh.h"
 
 struct lfem_mesh {
@@ -106,6 +107,14 @@ LFEM_API lfem_status lfem_mesh_load_gmsh(const char* path, lfem_mesh** out) {
     });
 }
 
+LFEM_API lfem_status lfem_mesh_make_quadratic(lfem_mesh* mesh) {
+    return lfem::api::guard(__func__, [&] {
+        require_pointer(mesh, "mesh");
+        lfem::TetMesh quadratic = lfem::make_quadratic(mesh->mesh);
+        mesh->mesh = std::move(quadratic);
+    });
+}
+
 LFEM_API void lfem_mesh_destroy(lfem_mesh* mesh) { delete mesh; }
 
 LFEM_API uint32_t lfem_mesh_get_node_count(const lfem_mesh* mesh) {
@@ -114,6 +123,10 @@ LFEM_API uint32_t lfem_mesh_get_node_count(const lfem_mesh* mesh) {
 
 LFEM_API uint32_t lfem_mesh_get_tet_count(const lfem_mesh* mesh) {
     return mesh ? mesh->mesh.tet_count() : 0;
+}
+
+LFEM_API uint32_t lfem_mesh_get_nodes_per_tet(const lfem_mesh* mesh) {
+    return mesh ? mesh->mesh.nodes_per_tet : 0;
 }
 
 LFEM_API const double* lfem_mesh_get_positions(const lfem_mesh* mesh) {

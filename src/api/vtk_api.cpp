@@ -44,7 +44,7 @@ FrameArrays frame_arrays(const World& w, const Body& b) {
     out.stresses.resize(t);
     numbering.tets_to_api(stress.data(), t, out.stresses.data());
     out.tets.resize(b.ref.tets.size());
-    numbering.tet_nodes_to_api(b.ref.tets.data(), t, out.tets.data());
+    numbering.tet_nodes_to_api(b.ref.tets.data(), t, b.ref.nodes_per_tet, out.tets.data());
     return out;
 }
 
@@ -57,6 +57,7 @@ void write_frame(PvdSeries& series, const World& w) {
         VtkPiece p;
         p.node_count = b.ref.node_count();
         p.tet_count = b.ref.tet_count();
+        p.nodes_per_tet = b.ref.nodes_per_tet;
         p.body_index = index;
         pieces.push_back(p);
     });

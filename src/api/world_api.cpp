@@ -1,6 +1,7 @@
 // C shim of the world: validates, translates, and leaves the work to lfem::World.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
@@ -209,7 +210,11 @@ LFEM_API lfem_status lfem_world_get_warning(const lfem_world* world, lfem_warnin
         const Warnings& all = w.counters().warnings;
         const Warning* by_kind[] = {&all.inverted_tets, &all.stays_inverted, &all.fallen_in, &all.unconverged};
         static_assert(sizeof(by_kind) / sizeof(by_kind[0]) == LFEM_WARNING_KIND_COUNT, "a warning without its kind");
-        const int k = int(kind);
+        // A C caller may pass any int: read its bits, not an lfem_warning_kind that has no such
+        // value (undefined behaviour, which UBSan reports).
+        int k = 0;
+        static_assert(sizeof(kind) == sizeof(k), "lfem_warning_kind is an int");
+        std::memcpy(&k, &kind, sizeof k);
         require(k >= 0 && k < LFEM_WARNING_KIND_COUNT,
                 "kind must be an lfem_warning_kind below LFEM_WARNING_KIND_COUNT, got " + std::to_string(k));
         const Warning& x = *by_kind[k];

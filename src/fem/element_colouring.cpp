@@ -5,13 +5,14 @@
 namespace lfem {
 
 ElementColouring colour_element_blocks(const uint32_t* tets, uint32_t tet_count,
-                                       uint32_t node_count, uint32_t block_size) {
+                                       uint32_t node_count, uint32_t block_size, uint32_t nodes_per_tet) {
     ElementColouring out;
     out.block_size = block_size;
     const uint32_t nb = (tet_count + block_size - 1) / block_size;
     auto block_nodes = [&](uint32_t b, auto&& visit) {
         const uint32_t e1 = std::min(tet_count, (b + 1) * block_size);
-        for (uint32_t i = 4 * b * block_size; i < 4 * e1; ++i) visit(tets[i]);
+        for (std::size_t i = std::size_t(nodes_per_tet) * b * block_size; i < std::size_t(nodes_per_tet) * e1; ++i)
+            visit(tets[i]);
     };
     // Node -> blocks touching it (each block listed once per node), as compressed rows.
     std::vector<uint32_t> stamp(node_count, UINT32_MAX), start(std::size_t(node_count) + 1, 0);

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/thread_pool.h"
+
 namespace lfem {
 
 struct ElementColouring {
@@ -26,8 +28,21 @@ struct ElementColouring {
 // million-tet body has thousands of blocks to share between threads.
 constexpr uint32_t kElementBlockSize = 256;
 
-// Greedy colouring of the blocks in index order, O(tets + node-block incidences).
+// Greedy colouring of the blocks in index order, O(tets + node-block incidences); tets holds
+// nodes_per_tet node indices per tet (4, or 10 for quadratic tets).
 ElementColouring colour_element_blocks(const uint32_t* tets, uint32_t tet_count,
-                                       uint32_t node_count, uint32_t block_size = kElementBlockSize);
+                                       uint32_t node_count, uint32_t block_size = kElementBlockSize,
+                                       uint32_t nodes_per_tet = 4);
+
+// Runs block(b) for every block, colour after colour, the blocks of one colour side by side on
+// the pool (nullable): the element loop's order, the same for any thread count.
+template <class Block>
+void for_each_block_by_colour(const ElementColouring& colouring, ThreadPool* pool, const Block& block) {
+    for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
+        const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
+        parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c],
+                     [&](uint32_t i) { block(blocks[i]); });
+    }
+}
 
 }  // namespace lfem

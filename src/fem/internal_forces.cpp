@@ -6,8 +6,10 @@
 
 #include <Eigen/Geometry>
 
+#include "common/cpu_dispatch.h"
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
+#include "fem/quadratic_forces.h"
 #include "fem/tet_element.h"
 #include "fem/volume_barrier.h"
 
@@ -19,17 +21,6 @@ namespace {
 // turns into SIMD instructions. The gather of node positions and the scatter of forces stay
 // in tet order, so every node sums its contributions in the same order as a plain loop would.
 constexpr int kLanes = 8;
-
-// Not under the sanitizers: the clones' load-time resolvers (ifuncs) run before a sanitizer's
-// runtime is set up, and ThreadSanitizer crashes there.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__) && \
-    !defined(__SANITIZE_THREAD__)
-#define LFEM_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#define LFEM_INLINE __attribute__((always_inline)) inline
-#else
-#define LFEM_SIMD_CLONES
-#define LFEM_INLINE inline
-#endif
 
 struct Batch {
     int n;                    // live lanes (the rest are padding with zero volume)
@@ -227,12 +218,13 @@ struct LoopData {
 };
 
 // One block of tets: gather, kernel, scatter; returns the block's strain energy, its inverted
-// tets and smallest volume ratio (and, for a model with kTangent, its largest tangent estimate). Compiled for
-// AVX-512, AVX2 and baseline x86-64, chosen at load time by the CPU (GCC function clones). The
-// results are bitwise the same on each: this file is built with -ffp-contract=off (no a*b+c
-// fused into one rounding), so every clone rounds every operation alike.
+// tets and smallest volume ratio (and, for a model with kTangent, its largest tangent
+// estimate). The loop calls it through cpu_variant (common/cpu_dispatch.h): compiled for
+// AVX-512, AVX2 and the baseline, chosen by the CPU. The results are bitwise the same on each:
+// this file is built with -ffp-contract=off (no a*b+c fused into one rounding), so every
+// variant rounds alike.
 template <bool displacement_edges, class Model>
-LFEM_SIMD_CLONES BlockResult element_block(const LoopData& d, uint32_t block, const Model& model) {
+LFEM_INLINE BlockResult element_block(const LoopData& d, uint32_t block, const Model& model) {
     Batch b;
     BlockResult out;
     double energy = 0.0, worst = 0.0;
@@ -318,10 +310,11 @@ BlockResult element_loop(const ElementMesh& mesh, const double* x, double* f, Th
     const LoopData d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.volume.data(),
                      f, mesh.tet_count(), colouring.block_size};
     std::vector<BlockResult> per_block(colouring.block_count());
+    const auto block_forces = cpu_variant<&element_block<displacement_edges, Model>>(cpu_level());
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
         const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
         parallel_for(pool, colouring.colour_start[c + 1] - colouring.colour_start[c], [&](uint32_t i) {
-            per_block[blocks[i]] = element_block<displacement_edges>(d, blocks[i], model);
+            per_block[blocks[i]] = block_forces(d, blocks[i], model);
         });
     }
     BlockResult total;
@@ -363,6 +356,7 @@ ElasticResult elastic_forces(const ElementMesh& mesh, const ElasticState& state,
 
 ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& material,
                                      const ElasticState& state, ThreadPool* pool) {
+    if (mesh.nodes_per_tet == kQuadraticTetNodes) return compute_quadratic_elastic_forces(mesh, material, state, pool);
     const Lame lame = material.lame;
     switch (material.model) {
         case LFEM_MODEL_LINEAR:
@@ -388,6 +382,7 @@ ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& ma
 
 void apply_reference_stiffness(const ElementMesh& mesh, const Lame& lame, const double* u,
                                double* y, ThreadPool* pool) {
+    if (mesh.nodes_per_tet == kQuadraticTetNodes) return apply_quadratic_reference_stiffness(mesh, lame, u, y, pool);
     // The linear kernel on the edges of u gives -K u.
     element_loop<false>(mesh, u, y, pool, HookeModel{lame});
     for (std::size_t i = 0; i < 3 * std::size_t(mesh.node_count()); ++i) y[i] = -y[i];
@@ -395,6 +390,8 @@ void apply_reference_stiffness(const ElementMesh& mesh, const Lame& lame, const 
 
 void compute_von_mises(const ElementMesh& mesh, const Material& material, const double* x,
                        const float* tet_rotation, const double* frame, double* out) {
+    if (mesh.nodes_per_tet == kQuadraticTetNodes)
+        return compute_quadratic_von_mises(mesh, material, x, tet_rotation, frame, out);
     const double* X = mesh.X.data();
     const Mat3 R_body = material.model == LFEM_MODEL_PAPER ? Mat3(load_quaternion(frame).toRotationMatrix())
                                                            : Mat3::Identity();

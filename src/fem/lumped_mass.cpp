@@ -1,5 +1,6 @@
 #include "fem/lumped_mass.h"
 
+#include "fem/quadratic_tet.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
@@ -15,8 +16,35 @@ void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, u
     }
 }
 
+void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
+                                  double* Jq_inv, double* qp_volume, double* volume) {
+    for (uint32_t e = first; e < end; ++e) {
+        const uint32_t* t = &tets[kQuadraticTetNodes * std::size_t(e)];
+        const double* p[kQuadraticTetNodes];
+        for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) p[a] = X + 3 * std::size_t(t[a]);
+        double V = 0.0;
+        for (int q = 0; q < kQuadraturePoints; ++q) {
+            double J[9];
+            natural_jacobian(p, kQuadraticGradients.g[q], J);
+            const Mat3 Jm = load_row_major(J);
+            const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
+            Eigen::Map<Mat3> inverse(Jq_inv + 9 * k);
+            inverse = Jm.inverse();
+            qp_volume[k] = kQuadratureWeight * Jm.determinant();
+            V += qp_volume[k];
+        }
+        volume[e] = V;
+    }
+}
+
 void add_lumped_mass(const uint32_t* tets, const double* volume, uint32_t first, uint32_t end, double density,
-                     double* mass) {
+                     double* mass, uint32_t nodes_per_tet) {
+    if (nodes_per_tet == kQuadraticTetNodes) {
+        for (uint32_t e = first; e < end; ++e)  // eq. (1), the sub-tet lumping
+            for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
+                mass[tets[kQuadraticTetNodes * std::size_t(e) + a]] += density * volume[e] * lumped_share(nodes_per_tet, a);
+        return;
+    }
     for (uint32_t e = first; e < end; ++e)
         for (int a = 0; a < 4; ++a) mass[tets[4 * std::size_t(e) + a]] += density * volume[e] / 4.0;  // eq. (1)
 }

@@ -8,27 +8,56 @@
 
 #include "common/thread_pool.h"
 #include "fem/internal_forces.h"
+#include "fem/lumped_mass.h"
+#include "fem/quadratic_tet.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
 namespace {
 
+// The stiffness of tet e at rest, as blocks K_ab = sum_q V_q (lambda g_a g_b^T + mu g_b g_a^T +
+// mu (g_a . g_b) I), g = grad N at quadrature point q: one point for a linear tet (g the rows of
+// Dm^-1, node 0 minus their sum), four for a 10-node one (g = J_q^-T dN_a/dxi).
+struct ElementStiffness {
+    int nodes = 0;
+    Mat3 K[kQuadraticTetNodes * kQuadraticTetNodes];  // K[nodes * a + b]
+};
+
+ElementStiffness element_stiffness(const ElementMesh& ref, const Lame& lame, uint32_t e) {
+    ElementStiffness s;
+    const bool quadratic = ref.nodes_per_tet == kQuadraticTetNodes;
+    s.nodes = quadratic ? int(kQuadraticTetNodes) : 4;
+    for (int q = 0; q < (quadratic ? kQuadraturePoints : 1); ++q) {
+        Vec3 g[kQuadraticTetNodes];
+        double V = ref.volume[e];
+        if (quadratic) {
+            const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
+            const Eigen::Map<const Mat3> Jq_inv(&ref.Dm_inv[9 * k]);
+            for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) g[a] = Jq_inv.transpose() * Vec3(kQuadraticGradients.g[q][a]);
+            V = ref.qp_volume[k];
+        } else {
+            const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
+            for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
+            g[0] = -(g[1] + g[2] + g[3]);
+        }
+        for (int a = 0; a < s.nodes; ++a)
+            for (int b = 0; b < s.nodes; ++b) {
+                const Mat3 Kq = V * (lame.lambda * g[a] * g[b].transpose() + lame.mu * g[b] * g[a].transpose() +
+                                     lame.mu * g[a].dot(g[b]) * Mat3::Identity());
+                s.K[s.nodes * a + b] = q == 0 ? Kq : Mat3(s.K[s.nodes * a + b] + Kq);
+            }
+    }
+    return s;
+}
+
 // The absolute row sums of tet e's stiffness: visit(a, r, s) with s = sum_j |K_(3a+r) j| over
-// the block K_ab, for b = 0..3 in order. The element blocks are
-// K_ab = V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g = grad N.
+// the block K_ab, for b in order.
 template <class Visit>
 void for_each_row_sum(const ElementMesh& ref, const Lame& lame, uint32_t e, const Visit& visit) {
-    const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
-    Vec3 g[4];
-    for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
-    g[0] = -(g[1] + g[2] + g[3]);
-    const double V = ref.volume[e];
-    for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) {
-            const Mat3 K = V * (lame.lambda * g[a] * g[b].transpose() + lame.mu * g[b] * g[a].transpose() +
-                                lame.mu * g[a].dot(g[b]) * Mat3::Identity());
-            for (int r = 0; r < 3; ++r) visit(a, r, K.row(r).cwiseAbs().sum());
-        }
+    const ElementStiffness s = element_stiffness(ref, lame, e);
+    for (int a = 0; a < s.nodes; ++a)
+        for (int b = 0; b < s.nodes; ++b)
+            for (int r = 0; r < 3; ++r) visit(a, r, s.K[s.nodes * a + b].row(r).cwiseAbs().sum());
 }
 
 // Gershgorin: every eigenvalue of M^-1 K lies below max over rows of sum_j |K_ij| / m_i;
@@ -36,7 +65,7 @@ void for_each_row_sum(const ElementMesh& ref, const Lame& lame, uint32_t e, cons
 double gershgorin_bound(const ElementMesh& ref, const Lame& lame) {
     std::vector<double> row_sum(3 * ref.node_count(), 0.0);
     for (uint32_t e = 0; e < ref.tet_count(); ++e) {
-        const uint32_t* t = &ref.tets[4 * e];
+        const uint32_t* t = &ref.tets[std::size_t(ref.nodes_per_tet) * e];
         for_each_row_sum(ref, lame, e, [&](int a, int r, double s) { row_sum[3 * t[a] + r] += s; });
     }
     double bound = 0.0;
@@ -45,19 +74,25 @@ double gershgorin_bound(const ElementMesh& ref, const Lame& lame) {
     return bound;
 }
 
-// The largest eigenvalue of tet e's stiffness K_e (12 x 12, Hooke's law at rest).
-double element_stiffness_eigenvalue(const ElementMesh& ref, const Lame& lame, uint32_t e) {
-    const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);
-    Vec3 g[4];
-    for (int a = 1; a < 4; ++a) g[a] = Dm_inv.row(a - 1).transpose();
-    g[0] = -(g[1] + g[2] + g[3]);
-    Eigen::Matrix<double, 12, 12> K;
-    for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b)
-            K.block<3, 3>(3 * a, 3 * b) = ref.volume[e] * (lame.lambda * g[a] * g[b].transpose() +
-                                                           lame.mu * g[b] * g[a].transpose() +
-                                                           lame.mu * g[a].dot(g[b]) * Mat3::Identity());
-    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>>(K, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+// The largest eigenvalue of tet e's M_e^-1 K_e at rest, M_e its lumped shares (share[a] at its
+// node a): of K_e over the equal share for a linear tet (12 x 12), of M_e^-1/2 K_e M_e^-1/2 for a
+// 10-node one (30 x 30).
+double element_frequency2(const ElementMesh& ref, const Lame& lame, uint32_t e, const double* share) {
+    const ElementStiffness s = element_stiffness(ref, lame, e);
+    if (s.nodes == 4) {
+        Eigen::Matrix<double, 12, 12> K;
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b) K.block<3, 3>(3 * a, 3 * b) = s.K[4 * a + b];
+        return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>>(K, Eigen::EigenvaluesOnly)
+                   .eigenvalues()
+                   .maxCoeff() /
+               share[0];
+    }
+    Eigen::Matrix<double, 30, 30> A;
+    for (int a = 0; a < s.nodes; ++a)
+        for (int b = 0; b < s.nodes; ++b)
+            A.block<3, 3>(3 * a, 3 * b) = s.K[s.nodes * a + b] / std::sqrt(share[a] * share[b]);
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 30, 30>>(A, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
 }
 
 }  // namespace
@@ -65,23 +100,35 @@ double element_stiffness_eigenvalue(const ElementMesh& ref, const Lame& lame, ui
 double add_scaling_mass(const ElementMesh& ref, const Lame& lame, double density, double omega_target, double* added) {
     double total = 0.0;
     const double target2 = omega_target * omega_target;
+    const uint32_t nodes = ref.nodes_per_tet;
     for (uint32_t e = 0; e < ref.tet_count(); ++e) {
-        // The tet's own lumped share rho V / 4 at each node. Its Gershgorin bound is cheap and
-        // at least its eigenvalue: only where it exceeds the target is the eigenvalue needed.
-        const double share = density * ref.volume[e] / 4.0;
-        double rows[4][3] = {};
+        // The tet's own lumped shares at its nodes (rho V / 4 each for a linear tet). Its
+        // Gershgorin bound is cheap and at least its eigenvalue: only where it exceeds the
+        // target is the eigenvalue needed.
+        double share[kQuadraticTetNodes];
+        for (uint32_t a = 0; a < nodes; ++a)
+            share[a] = nodes == 4 ? density * ref.volume[e] / 4.0 : density * ref.volume[e] * lumped_share(nodes, a);
+        double rows[kQuadraticTetNodes][3] = {};
         for_each_row_sum(ref, lame, e, [&](int a, int r, double s) { rows[a][r] += s; });
         double gershgorin = 0.0;
-        for (const auto& node : rows)
-            for (double s : node) gershgorin = std::max(gershgorin, s / share);
+        for (uint32_t a = 0; a < nodes; ++a)
+            for (double s : rows[a]) gershgorin = std::max(gershgorin, s / share[a]);
         if (!(gershgorin > target2)) continue;
-        const double bound = element_stiffness_eigenvalue(ref, lame, e) / share;
+        const double bound = element_frequency2(ref, lame, e, share);
         if (!(bound > target2)) continue;
         // Its density times bound / target2: its own highest frequency becomes the target.
-        const double extra = (bound / target2 - 1.0) * share;
-        const uint32_t* t = &ref.tets[4 * e];
-        for (int a = 0; a < 4; ++a) added[t[a]] += extra;
-        total += 4.0 * extra;
+        const uint32_t* t = &ref.tets[std::size_t(nodes) * e];
+        if (nodes == 4) {
+            const double extra = (bound / target2 - 1.0) * share[0];
+            for (int a = 0; a < 4; ++a) added[t[a]] += extra;
+            total += 4.0 * extra;
+            continue;
+        }
+        for (uint32_t a = 0; a < nodes; ++a) {
+            const double extra = (bound / target2 - 1.0) * share[a];
+            added[t[a]] += extra;
+            total += extra;
+        }
     }
     return total;
 }

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "common/error.h"
+#include "common/quadratic_tet_nodes.h"
 
 namespace lfem {
 namespace {
@@ -41,11 +42,12 @@ bool face_less(const FaceRecord& a, const FaceRecord& b) {
     return a.local < b.local;
 }
 
-// Face `local` of tet t as a record: its sorted node triple and the parity of the sort.
-FaceRecord make_face(const uint32_t* tets, uint32_t t, int local) {
+// Face `local` of tet t (stride node indices per tet, the corners first) as a record: its
+// sorted corner triple and the parity of the sort.
+FaceRecord make_face(const uint32_t* tets, uint32_t stride, uint32_t t, int local) {
     FaceRecord r;
     uint32_t* k = r.key;
-    for (int i = 0; i < 3; ++i) k[i] = tets[4 * std::size_t(t) + kOutwardFaces[local][i]];
+    for (int i = 0; i < 3; ++i) k[i] = tets[std::size_t(stride) * t + kOutwardFaces[local][i]];
     // Three compare-and-swaps sort the triple; each swap flips the parity, which remembers the
     // orientation the sorted key forgets.
     uint8_t parity = 0;
@@ -70,26 +72,26 @@ FaceRecord make_face(const uint32_t* tets, uint32_t t, int local) {
 // is added), and only the few faces around one node are then sorted together. Node indices
 // far beyond the face count (sparse, or hostile) would make the buckets array absurd, so
 // those fall back to one comparison sort.
-std::vector<FaceRecord> grouped_faces(const uint32_t* tets, uint32_t tet_count) {
+std::vector<FaceRecord> grouped_faces(const uint32_t* tets, uint32_t stride, uint32_t tet_count) {
     const std::size_t face_count = 4 * std::size_t(tet_count);
     uint32_t lowest_max = 0;
     for (uint32_t t = 0; t < tet_count; ++t)
-        for (int f = 0; f < 4; ++f) lowest_max = std::max(lowest_max, make_face(tets, t, f).key[0]);
+        for (int f = 0; f < 4; ++f) lowest_max = std::max(lowest_max, make_face(tets, stride, t, f).key[0]);
     std::vector<FaceRecord> faces(face_count);
     if (face_count == 0 || lowest_max > face_count) {
         for (uint32_t t = 0; t < tet_count; ++t)
-            for (int f = 0; f < 4; ++f) faces[4 * std::size_t(t) + f] = make_face(tets, t, f);
+            for (int f = 0; f < 4; ++f) faces[4 * std::size_t(t) + f] = make_face(tets, stride, t, f);
         std::sort(faces.begin(), faces.end(), face_less);
         return faces;
     }
     std::vector<std::size_t> bucket_start(std::size_t(lowest_max) + 2, 0);
     for (uint32_t t = 0; t < tet_count; ++t)
-        for (int f = 0; f < 4; ++f) ++bucket_start[std::size_t(make_face(tets, t, f).key[0]) + 1];
+        for (int f = 0; f < 4; ++f) ++bucket_start[std::size_t(make_face(tets, stride, t, f).key[0]) + 1];
     for (std::size_t b = 1; b < bucket_start.size(); ++b) bucket_start[b] += bucket_start[b - 1];
     std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
     for (uint32_t t = 0; t < tet_count; ++t)
         for (int f = 0; f < 4; ++f) {
-            const FaceRecord r = make_face(tets, t, f);
+            const FaceRecord r = make_face(tets, stride, t, f);
             faces[next[r.key[0]]++] = r;
         }
     for (std::size_t b = 0; b + 1 < bucket_start.size(); ++b)
@@ -97,14 +99,12 @@ std::vector<FaceRecord> grouped_faces(const uint32_t* tets, uint32_t tet_count) 
     return faces;
 }
 
-}  // namespace
-
-std::vector<uint32_t> extract_boundary_triangles(const uint32_t* tets, uint32_t tet_count) {
-    const std::vector<FaceRecord> faces = grouped_faces(tets, tet_count);
-
-    // Flag the faces seen once, by their place (4 * tet + face) in the input.
+// Flags the faces seen once, by their place (4 * tet + face) in the input.
+std::vector<unsigned char> boundary_flags(const uint32_t* tets, uint32_t stride, uint32_t tet_count,
+                                          std::size_t& boundary_count) {
+    const std::vector<FaceRecord> faces = grouped_faces(tets, stride, tet_count);
     std::vector<unsigned char> on_boundary(faces.size(), 0);
-    std::size_t boundary_count = 0;
+    boundary_count = 0;
     for (std::size_t i = 0; i < faces.size();) {
         std::size_t end = i + 1;
         while (end < faces.size() && same_key(faces[i], faces[end])) ++end;
@@ -127,7 +127,14 @@ std::vector<uint32_t> extract_boundary_triangles(const uint32_t* tets, uint32_t 
         }
         i = end;
     }
+    return on_boundary;
+}
 
+}  // namespace
+
+std::vector<uint32_t> extract_boundary_triangles(const uint32_t* tets, uint32_t tet_count) {
+    std::size_t boundary_count = 0;
+    const std::vector<unsigned char> on_boundary = boundary_flags(tets, 4, tet_count, boundary_count);
     // Order of first appearance: by tet, then by face within the tet.
     std::vector<uint32_t> triangles;
     triangles.reserve(3 * boundary_count);
@@ -136,6 +143,22 @@ std::vector<uint32_t> extract_boundary_triangles(const uint32_t* tets, uint32_t 
             for (int i = 0; i < 3; ++i)
                 triangles.push_back(tets[4 * (face / 4) + kOutwardFaces[face % 4][i]]);
     return triangles;
+}
+
+std::vector<uint32_t> extract_quadratic_boundary(const uint32_t* tets, uint32_t tet_count) {
+    std::size_t boundary_count = 0;
+    const std::vector<unsigned char> on_boundary =
+        boundary_flags(tets, kQuadraticTetNodes, tet_count, boundary_count);
+    std::vector<uint32_t> faces;
+    faces.reserve(6 * boundary_count);
+    for (std::size_t face = 0; face < on_boundary.size(); ++face) {
+        if (!on_boundary[face]) continue;
+        const uint32_t* tet = tets + kQuadraticTetNodes * (face / 4);
+        const int* corner = kOutwardFaces[face % 4];
+        for (int i = 0; i < 3; ++i) faces.push_back(tet[corner[i]]);
+        for (int i = 0; i < 3; ++i) faces.push_back(tet[mid_edge_node(corner[i], corner[(i + 1) % 3])]);
+    }
+    return faces;
 }
 
 }  // namespace lfem

@@ -1,4 +1,4 @@
-// Gmsh .msh reader, ASCII formats 2.2 and 4.1.
+// Gmsh .msh reader, ASCII formats 2.2 and 4.1: 4-node (type 4) or 10-node (type 11) tets.
 //
 // The file is read line by line (Gmsh writes one node coordinate set and one element per
 // line), so every error can name its line. Only $MeshFormat, $Nodes and $Elements are
@@ -22,12 +22,20 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/quadratic_tet_nodes.h"
+#include "mesh/quadratic_mesh.h"
 #include "mesh/tet_geometry.h"
 
 namespace lfem {
 namespace {
 
-constexpr int kGmshTet = 4;  // element type of the 4-node tetrahedron
+constexpr int kGmshTet = 4;     // element type of the 4-node tetrahedron
+constexpr int kGmshTet10 = 11;  // element type of the 10-node tetrahedron
+
+// The nodes of an element type that is read (4 or 10), else 0 (skipped).
+uint32_t tet_nodes_of_type(int64_t type) {
+    return type == kGmshTet ? kLinearTetNodes : type == kGmshTet10 ? kQuadraticTetNodes : 0;
+}
 
 // Reads non-blank lines and splits them into whitespace separated tokens.
 class LineReader {
@@ -133,8 +141,9 @@ struct RawMesh {
     std::vector<uint64_t> node_tags;
     std::vector<double> node_positions;   // 3 per node
     std::vector<std::size_t> node_lines;  // where each node was defined
-    std::vector<uint64_t> tet_tags;       // 4 node tags per tet
+    std::vector<uint64_t> tet_tags;       // nodes_per_tet node tags per tet, as in the file
     std::vector<std::size_t> tet_lines;
+    uint32_t nodes_per_tet = 0;           // of the first tet read; every other must match
 };
 
 // A record that starts with '$' where data was expected means the section ended early.
@@ -152,8 +161,11 @@ void add_node(RawMesh& raw, const LineReader& r, uint64_t tag, std::size_t first
     raw.node_lines.push_back(r.line_number());
 }
 
-void add_tet(RawMesh& raw, const LineReader& r, std::size_t first_node) {
-    for (int i = 0; i < 4; ++i) raw.tet_tags.push_back(r.unsigned_at(first_node + i, "node tag"));
+void add_tet(RawMesh& raw, const LineReader& r, std::size_t first_node, uint32_t nodes) {
+    if (raw.nodes_per_tet == 0) raw.nodes_per_tet = nodes;
+    if (raw.nodes_per_tet != nodes)
+        r.fail("the file mixes 4-node and 10-node tetrahedra (element types 4 and 11); a mesh has one kind");
+    for (uint32_t i = 0; i < nodes; ++i) raw.tet_tags.push_back(r.unsigned_at(first_node + i, "node tag"));
     raw.tet_lines.push_back(r.line_number());
 }
 
@@ -190,11 +202,12 @@ void read_elements_v2(LineReader& r, RawMesh& raw) {
         const std::size_t fields = r.tokens().size();
         if (fields < 3) r.expect_token_count(3, "an element header (tag type tag_count)");
         r.unsigned_at(0, "element tag");
-        if (r.integer_at(1, "element type") != kGmshTet) return;  // not a tet: skipped
+        const uint32_t nodes = tet_nodes_of_type(r.integer_at(1, "element type"));
+        if (nodes == 0) return;  // not a tet: skipped
         const uint64_t tag_count = r.unsigned_at(2, "tag count");
         if (tag_count > fields) r.fail("tag count " + r.excerpt(2) + " exceeds the line");
-        r.expect_token_count(3 + std::size_t(tag_count) + 4, "a tetrahedron");
-        add_tet(raw, r, 3 + std::size_t(tag_count));
+        r.expect_token_count(3 + std::size_t(tag_count) + nodes, "a tetrahedron");
+        add_tet(raw, r, 3 + std::size_t(tag_count), nodes);
     });
 }
 
@@ -274,14 +287,15 @@ void read_elements_v4(LineReader& r, RawMesh& raw) {
     for (uint64_t b = 0; b < blocks; ++b) {
         uint64_t dim = 0;
         const uint64_t count = read_block_header(r, "$Elements", blocks, b, "element", "type", dim);
-        const bool tets = r.integer_at(2, "element type") == kGmshTet;
+        const uint32_t nodes = tet_nodes_of_type(r.integer_at(2, "element type"));
+        const std::string record = "a tetrahedron (tag and " + std::to_string(nodes) + " node tags)";
         for (uint64_t e = 0; e < count; ++e) {
             r.next_in("$Elements");
             require_data_line(r, "$Elements", count, e, "elements in the block");
             r.unsigned_at(0, "element tag");
-            if (!tets) continue;  // other cell types are skipped
-            r.expect_token_count(5, "a tetrahedron (tag and 4 node tags)");
-            add_tet(raw, r, 1);
+            if (nodes == 0) continue;  // other cell types are skipped
+            r.expect_token_count(1 + nodes, record.c_str());
+            add_tet(raw, r, 1, nodes);
         }
         read += count;
     }
@@ -315,31 +329,33 @@ TetMesh resolve(const RawMesh& raw, const std::string& path, std::size_t last_li
                         " is defined twice (first on line " +
                         std::to_string(raw.node_lines[by_tag[i - 1]]) + ")");
     const std::size_t tet_count = raw.tet_lines.size();
-    if (tet_count == 0) fail_at(path, last_line, "the file holds no tetrahedra (element type 4)");
+    if (tet_count == 0) fail_at(path, last_line, "the file holds no tetrahedra (element type 4 or 11)");
     if (tet_count > UINT32_MAX) fail_at(path, last_line, "more than 2^32-1 tetrahedra");
     std::vector<uint64_t> sorted_tags(node_count);
     for (std::size_t i = 0; i < node_count; ++i) sorted_tags[i] = raw.node_tags[by_tag[i]];
 
-    // Tet corners as ranks in the sorted order; mark the ranks in use.
-    std::vector<std::size_t> corner_rank(4 * tet_count);
+    // Tet nodes as ranks in the sorted order; mark the ranks in use.
+    const std::size_t per_tet = raw.nodes_per_tet;
+    std::vector<std::size_t> node_rank(per_tet * tet_count);
     std::vector<unsigned char> used(node_count, 0);
     for (std::size_t t = 0; t < tet_count; ++t) {
-        for (int i = 0; i < 4; ++i) {
-            const uint64_t tag = raw.tet_tags[4 * t + i];
+        for (std::size_t i = 0; i < per_tet; ++i) {
+            const uint64_t tag = raw.tet_tags[per_tet * t + i];
             const auto it = std::lower_bound(sorted_tags.begin(), sorted_tags.end(), tag);
             if (it == sorted_tags.end() || *it != tag)
                 fail_at(path, raw.tet_lines[t], "unknown node tag " + std::to_string(tag));
-            for (int j = 0; j < i; ++j)
-                if (raw.tet_tags[4 * t + j] == tag)
+            for (std::size_t j = 0; j < i; ++j)
+                if (raw.tet_tags[per_tet * t + j] == tag)
                     fail_at(path, raw.tet_lines[t],
                             "the tetrahedron repeats node tag " + std::to_string(tag));
             const std::size_t rank = std::size_t(it - sorted_tags.begin());
-            corner_rank[4 * t + i] = rank;
+            node_rank[per_tet * t + i] = rank;
             used[rank] = 1;
         }
     }
 
     TetMesh mesh;
+    mesh.nodes_per_tet = raw.nodes_per_tet;
     std::vector<uint32_t> dense(node_count, 0);
     std::size_t kept = 0;
     for (std::size_t rank = 0; rank < node_count; ++rank) {
@@ -349,16 +365,21 @@ TetMesh resolve(const RawMesh& raw, const std::string& path, std::size_t last_li
         const double* p = &raw.node_positions[3 * by_tag[rank]];
         mesh.positions.insert(mesh.positions.end(), p, p + 3);
     }
-    mesh.tets.resize(4 * tet_count);
+    // Gmsh's type 11 lists the mid-edge nodes of edges (2,3) and (1,3) as 8 and 9, the other
+    // way round from common/quadratic_tet_nodes.h.
+    static constexpr int kFromGmsh[kQuadraticTetNodes] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
+    static constexpr int kNegative[4] = {0, 1, 3, 2};
+    mesh.tets.resize(per_tet * tet_count);
     for (std::size_t t = 0; t < tet_count; ++t) {
-        uint32_t* tet = &mesh.tets[4 * t];
-        for (int i = 0; i < 4; ++i) tet[i] = dense[corner_rank[4 * t + i]];
+        uint32_t* tet = &mesh.tets[per_tet * t];
+        for (std::size_t i = 0; i < per_tet; ++i)
+            tet[i] = dense[node_rank[per_tet * t + (per_tet == kQuadraticTetNodes ? kFromGmsh[i] : i)]];
         const double* x[4];
         for (int i = 0; i < 4; ++i) x[i] = &mesh.positions[3 * std::size_t(tet[i])];
         const double six_vol = tet_geometry::six_volume(x[0], x[1], x[2], x[3]);
         if (tet_geometry::is_flat(six_vol, tet_geometry::longest_edge(x[0], x[1], x[2], x[3])))
             fail_at(path, raw.tet_lines[t], "the tetrahedron has zero volume");
-        if (six_vol < 0.0) std::swap(tet[2], tet[3]);  // negatively oriented: reorder
+        if (six_vol < 0.0) permute_corners(tet, mesh.nodes_per_tet, kNegative);  // negatively oriented: reorder
     }
     return mesh;
 }

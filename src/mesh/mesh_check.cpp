@@ -1,5 +1,6 @@
-// check_tet_mesh: one pass over the tets (indices, repeated nodes, volume sign and size) and
-// one over the nodes (each used by some tet). Stops at the first problem so the message can
+// check_tet_mesh: one pass over the tets (indices, repeated nodes, volume sign and size of the
+// corners) and one over the nodes (each used by some tet); for 10-node tets then the topology of
+// their mid-edge nodes. Stops at the first problem so the message can
 // name it exactly.
 #include "mesh/mesh_check.h"
 
@@ -9,6 +10,8 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/quadratic_tet_nodes.h"
+#include "mesh/quadratic_mesh.h"
 #include "mesh/tet_geometry.h"
 
 namespace lfem {
@@ -27,19 +30,19 @@ std::string format_volume(double volume) {
 }  // namespace
 
 void check_tet_mesh(const double* positions, uint32_t node_count, const uint32_t* tets,
-                    uint32_t tet_count) {
+                    uint32_t tet_count, uint32_t nodes_per_tet) {
     if (tet_count == 0) invalid_mesh("the mesh has no tets");
 
     std::vector<unsigned char> used(node_count, 0);
     for (uint32_t t = 0; t < tet_count; ++t) {
-        const uint32_t* tet = tets + 4 * std::size_t(t);
+        const uint32_t* tet = tets + std::size_t(nodes_per_tet) * t;
         // Built only on failure: the happy path allocates nothing per tet.
         const auto name = [t] { return "tet " + std::to_string(t); };
-        for (int i = 0; i < 4; ++i) {
+        for (uint32_t i = 0; i < nodes_per_tet; ++i) {
             if (tet[i] >= node_count)
                 invalid_mesh(name() + " refers to node " + std::to_string(tet[i]) +
                              " but the mesh has " + std::to_string(node_count) + " nodes");
-            for (int j = 0; j < i; ++j)
+            for (uint32_t j = 0; j < i; ++j)
                 if (tet[i] == tet[j])
                     invalid_mesh(name() + " repeats node " + std::to_string(tet[i]));
         }
@@ -59,10 +62,11 @@ void check_tet_mesh(const double* positions, uint32_t node_count, const uint32_t
         if (six_vol < 0.0)
             invalid_mesh(name() + " is inverted (volume " + format_volume(six_vol / 6.0) +
                          " m^3); list its nodes so that det[x1-x0, x2-x0, x3-x0] > 0");
-        for (int i = 0; i < 4; ++i) used[tet[i]] = 1;
+        for (uint32_t i = 0; i < nodes_per_tet; ++i) used[tet[i]] = 1;
     }
     for (uint32_t n = 0; n < node_count; ++n)
         if (!used[n]) invalid_mesh("node " + std::to_string(n) + " belongs to no tet");
+    if (nodes_per_tet == kQuadraticTetNodes) check_quadratic_topology(tets, tet_count, node_count);
 }
 
 }  // namespace lfem

@@ -6,9 +6,11 @@
 namespace lfem {
 
 // Throws Error(LFEM_INVALID_MESH, message naming the first offending tet or node) when an
-// index is out of range, a tet repeats a node, a tet is inverted or has (relatively) zero
-// volume, or a node belongs to no tet. Positions are assumed finite (checked by the shim).
+// index is out of range, a tet repeats a node, a tet (its corners) is inverted or has
+// (relatively) zero volume, or a node belongs to no tet; for 10-node tets (nodes_per_tet 10)
+// also when the mid-edge nodes do not conform (check_quadratic_topology). Positions are assumed
+// finite (checked by the shim).
 void check_tet_mesh(const double* positions, uint32_t node_count, const uint32_t* tets,
-                    uint32_t tet_count);
+                    uint32_t tet_count, uint32_t nodes_per_tet = 4);
 
 }  // namespace lfem

@@ -6,18 +6,21 @@
 #include <numeric>
 #include <tuple>
 
+#include "common/quadratic_tet_nodes.h"
+#include "mesh/quadratic_mesh.h"
+
 namespace lfem {
 namespace {
 
-// Mean edge length of the tets (each edge counted once per tet that has it): the size of a
-// slab and of a row of the sweep order.
-double mean_edge_length(const double* x, const uint32_t* tets, uint32_t tet_count) {
+// Mean edge length of the tets (each edge counted once per tet that has it; stride node
+// indices per tet, the corners first): the size of a slab and of a row of the sweep order.
+double mean_edge_length(const double* x, const uint32_t* tets, uint32_t stride, uint32_t tet_count) {
     static constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     double sum = 0.0;
     for (uint32_t e = 0; e < tet_count; ++e)
         for (const auto& edge : kEdges) {
-            const double* p = &x[3 * std::size_t(tets[4 * std::size_t(e) + edge[0]])];
-            const double* q = &x[3 * std::size_t(tets[4 * std::size_t(e) + edge[1]])];
+            const double* p = &x[3 * std::size_t(tets[std::size_t(stride) * e + edge[0]])];
+            const double* q = &x[3 * std::size_t(tets[std::size_t(stride) * e + edge[1]])];
             sum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                              (p[2] - q[2]) * (p[2] - q[2]));
         }
@@ -29,10 +32,11 @@ double mean_edge_length(const double* x, const uint32_t* tets, uint32_t tet_coun
 // streams (rows of neighbouring slabs), which the hardware prefetches, and consecutive blocks
 // of tets touch only the slabs next to them (few colours, element_colouring.h). Slabs and rows
 // are half a mean edge wide, so the planes of a structured grid never share one: a box mesh
-// numbered plane by plane keeps its node order. (A Morton curve, tried first, needed 18
-// colours instead of 8 on the 55^3 box, and its element loop ran slower.) Returns the given
-// index of each new node.
-std::vector<uint32_t> sweep_order(const double* x, uint32_t n, const uint32_t* tets, uint32_t t) {
+// numbered plane by plane keeps its node order; 10-node tets have a plane of nodes every half
+// edge, so theirs are a quarter edge wide. (A Morton curve, tried first, needed 18 colours
+// instead of 8 on the 55^3 box, and its element loop ran slower.) Returns the given index of
+// each new node.
+std::vector<uint32_t> sweep_order(const double* x, uint32_t n, const uint32_t* tets, uint32_t stride, uint32_t t) {
     double lo[3], hi[3];
     for (int k = 0; k < 3; ++k) lo[k] = hi[k] = x[k];
     for (uint32_t i = 0; i < n; ++i)
@@ -44,7 +48,7 @@ std::vector<uint32_t> sweep_order(const double* x, uint32_t n, const uint32_t* t
     for (int i = 1; i < 3; ++i)  // insertion sort (std::stable_sort may allocate)
         for (int j = i; j > 0 && hi[axis[j]] - lo[axis[j]] > hi[axis[j - 1]] - lo[axis[j - 1]]; --j)
             std::swap(axis[j], axis[j - 1]);
-    const double h = 0.5 * mean_edge_length(x, tets, t);
+    const double h = (stride == kQuadraticTetNodes ? 0.25 : 0.5) * mean_edge_length(x, tets, stride, t);
     // The bin of a coordinate, finite whatever the mesh (coordinates near the largest double
     // can overflow the difference, a tiny h the quotient): the keys must order strictly.
     auto bin = [h](double d) {
@@ -71,27 +75,33 @@ std::vector<uint32_t> sweep_order(const double* x, uint32_t n, const uint32_t* t
     return old_of_node;
 }
 
-// Turns a tet by an even permutation of its nodes (so its orientation is kept) until its
-// lowest node comes first and, of the three rotations of the others, the lowest second.
-void turn_to_lowest(uint32_t t[4]) {
-    const int low = int(std::min_element(t, t + 4) - t);
-    if (low != 0) {  // swap nodes 0 and low, and two others, to keep the orientation
+// Turns a tet by an even permutation of its corners (so its orientation is kept; a 10-node
+// tet's mid-edge nodes follow their edges) until its lowest corner comes first and, of the
+// three rotations of the others, the lowest second.
+void turn_to_lowest(uint32_t* t, uint32_t nodes_per_tet) {
+    uint32_t v[4] = {t[0], t[1], t[2], t[3]};
+    int from[4] = {0, 1, 2, 3};
+    const auto swap = [&](int i, int j) { std::swap(v[i], v[j]), std::swap(from[i], from[j]); };
+    const int low = int(std::min_element(v, v + 4) - v);
+    if (low != 0) {  // swap corners 0 and low, and two others, to keep the orientation
         const int other[2] = {low == 1 ? 2 : 1, low == 3 ? 2 : 3};
-        std::swap(t[0], t[low]);
-        std::swap(t[other[0]], t[other[1]]);
+        swap(0, low);
+        swap(other[0], other[1]);
     }
-    while (t[1] > t[2] || t[1] > t[3]) {  // rotate the last three (an even permutation)
-        const uint32_t first = t[1];
-        t[1] = t[2], t[2] = t[3], t[3] = first;
+    while (v[1] > v[2] || v[1] > v[3]) {  // rotate the last three (an even permutation)
+        swap(1, 2);
+        swap(2, 3);
     }
+    permute_corners(t, nodes_per_tet, from);
 }
 
 }  // namespace
 
 LocalityOrder order_for_locality(const double* positions, uint32_t node_count,
-                                 const uint32_t* tets, uint32_t tet_count) {
+                                 const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet) {
     LocalityOrder order;
-    const std::vector<uint32_t> old_of_node = sweep_order(positions, node_count, tets, tet_count);
+    const std::size_t stride = nodes_per_tet;
+    const std::vector<uint32_t> old_of_node = sweep_order(positions, node_count, tets, nodes_per_tet, tet_count);
     order.node_of_old.resize(node_count);
     order.positions.resize(3 * std::size_t(node_count));
     for (uint32_t i = 0; i < node_count; ++i) {
@@ -102,15 +112,15 @@ LocalityOrder order_for_locality(const double* positions, uint32_t node_count,
     // Tets in the new numbering, each turned to its lowest node, then sorted by their nodes
     // (lowest first): the element loop walks the nodes from first to last, each tet touching
     // nodes near those of the tets before it.
-    std::vector<uint32_t> turned(4 * std::size_t(tet_count));
+    std::vector<uint32_t> turned(stride * tet_count);
     for (uint32_t e = 0; e < tet_count; ++e) {
-        uint32_t* t = &turned[4 * std::size_t(e)];
-        for (int a = 0; a < 4; ++a) t[a] = order.node_of_old[tets[4 * std::size_t(e) + a]];
-        turn_to_lowest(t);
+        uint32_t* t = &turned[stride * e];
+        for (std::size_t a = 0; a < stride; ++a) t[a] = order.node_of_old[tets[stride * e + a]];
+        turn_to_lowest(t, nodes_per_tet);
     }
-    auto key = [&](uint32_t e) {  // the tet's nodes in ascending order
+    auto key = [&](uint32_t e) {  // the tet's corners in ascending order
         std::array<uint32_t, 4> k;
-        std::copy_n(&turned[4 * std::size_t(e)], 4, k.begin());
+        std::copy_n(&turned[stride * e], 4, k.begin());
         std::sort(k.begin(), k.end());
         return k;
     };
@@ -120,9 +130,9 @@ LocalityOrder order_for_locality(const double* positions, uint32_t node_count,
         const std::array<uint32_t, 4> ka = key(a), kb = key(b);
         return ka != kb ? ka < kb : a < b;
     });
-    order.tets.resize(4 * std::size_t(tet_count));
+    order.tets.resize(stride * tet_count);
     for (uint32_t e = 0; e < tet_count; ++e)
-        std::copy_n(&turned[4 * std::size_t(order.old_of_tet[e])], 4, &order.tets[4 * std::size_t(e)]);
+        std::copy_n(&turned[stride * order.old_of_tet[e]], stride, &order.tets[stride * e]);
     return order;
 }
 
@@ -169,10 +179,11 @@ void Numbering::tets_to_api(const double* internal, uint32_t tet_count, double* 
     for (uint32_t e = 0; e < tet_count; ++e) api[api_tet(e)] = internal[e];
 }
 
-void Numbering::tet_nodes_to_api(const uint32_t* internal, uint32_t tet_count, uint32_t* api) const {
+void Numbering::tet_nodes_to_api(const uint32_t* internal, uint32_t tet_count, uint32_t nodes_per_tet,
+                                 uint32_t* api) const {
     for (uint32_t e = 0; e < tet_count; ++e)
-        for (int a = 0; a < 4; ++a)
-            api[4 * std::size_t(api_tet(e)) + a] = api_node(internal[4 * std::size_t(e) + a]);
+        for (uint32_t a = 0; a < nodes_per_tet; ++a)
+            api[std::size_t(nodes_per_tet) * api_tet(e) + a] = api_node(internal[std::size_t(nodes_per_tet) * e + a]);
 }
 
 bool Numbering::consistent(uint32_t node_count, uint32_t tet_count) const {

@@ -17,16 +17,17 @@ struct LocalityOrder {
     std::vector<uint32_t> node_of_old;  // new index of each given node
     std::vector<uint32_t> old_of_tet;   // given index of each new tet
     std::vector<double> positions;      // 3 per node, in the new order
-    std::vector<uint32_t> tets;         // 4 per tet, in the new order and numbering
+    std::vector<uint32_t> tets;         // nodes_per_tet per tet, in the new order and numbering
 };
 
-// Orders one mesh (given positions and tets): nodes in sweep order (ties, i.e. coincident
-// nodes, by given index), tets by their sorted new node indices, and each tet's nodes turned,
-// by an even permutation (orientation kept), to start at its lowest node. Apart from
-// coincident nodes, the result depends only on the geometry, not on how the caller numbered
-// the mesh, so neither do the results of a simulation. O(n log n + t log t).
+// Orders one mesh (given positions and tets of nodes_per_tet nodes, 4 or 10): nodes in sweep
+// order (ties, i.e. coincident nodes, by given index), tets by their sorted new corner indices,
+// and each tet's corners turned, by an even permutation (orientation kept; mid-edge nodes follow
+// their edges), to start at its lowest corner. Apart from coincident nodes, the result depends
+// only on the geometry, not on how the caller numbered the mesh, so neither do the results of a
+// simulation. O(n log n + t log t).
 LocalityOrder order_for_locality(const double* positions, uint32_t node_count,
-                                 const uint32_t* tets, uint32_t tet_count);
+                                 const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet = 4);
 
 // How a body's internal numbering maps to the caller's. Empty node maps, or an empty tet map,
 // mean "the same" (a box from lfem_mesh_create_box keeps its node order, for one).
@@ -42,11 +43,11 @@ struct Numbering {
     uint32_t api_tet(uint32_t e) const { return api_of_tet.empty() ? e : api_of_tet[e]; }
 
     // Translations of whole arrays (in and out must not overlap). 3 doubles per node; one
-    // value per tet; 4 node indices per tet (node indices translated as well).
+    // value per tet; nodes_per_tet node indices per tet (node indices translated as well).
     void nodes_to_api(const double* internal, uint32_t node_count, double* api) const;
     void nodes_from_api(const double* api, uint32_t node_count, double* internal) const;
     void tets_to_api(const double* internal, uint32_t tet_count, double* api) const;
-    void tet_nodes_to_api(const uint32_t* internal, uint32_t tet_count, uint32_t* api) const;
+    void tet_nodes_to_api(const uint32_t* internal, uint32_t tet_count, uint32_t nodes_per_tet, uint32_t* api) const;
 
     // Appends a mesh block: nodes [old_nodes, old_nodes + order's nodes), tets likewise.
     void append(const LocalityOrder& order, uint32_t old_nodes, uint32_t old_tets);

@@ -45,6 +45,17 @@ void compute_surface_data(const double* X, uint32_t node_count, Surface& s) {
         if (feature[i]) s.feature_nodes.push_back(i);
 }
 
+std::vector<uint32_t> split_quadratic_faces(const std::vector<uint32_t>& faces) {
+    std::vector<uint32_t> triangles;
+    triangles.reserve(2 * faces.size());
+    for (std::size_t f = 0; f + 6 <= faces.size(); f += 6) {
+        const uint32_t a = faces[f], b = faces[f + 1], c = faces[f + 2];
+        const uint32_t ab = faces[f + 3], bc = faces[f + 4], ca = faces[f + 5];
+        triangles.insert(triangles.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
+    }
+    return triangles;
+}
+
 void compute_node_triangles(uint32_t node_count, Surface& s) {
     const uint32_t triangles = s.triangle_count();
     s.node_triangle_begin.assign(std::size_t(node_count) + 1, 0);

@@ -1,6 +1,9 @@
 // The surface of a body as contact sees it: the boundary triangles, the nodes on them (the
 // contact slave nodes), the nodes on edges and corners, and the mean edge length that scales
-// the contact tolerances.
+// the contact tolerances. A body of 10-node tets shows contact each 6-node boundary triangle
+// as the 4 flat triangles of its corner and mid-edge nodes (the faces of the element's sub-tets,
+// fem/quadratic_tet.h), so its mid-edge nodes are slave nodes and master vertices like any
+// other: detection and the multiplier solve need nothing of their own for quadratic bodies.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +12,10 @@
 namespace lfem {
 
 struct Surface {
-    std::vector<uint32_t> triangles;      // 3 per outward boundary triangle
+    std::vector<uint32_t> triangles;      // 3 per outward boundary triangle (flat)
+    std::vector<uint32_t> quadratic_faces; // 10-node bodies: 6 per boundary face (corners a, b,
+                                           // c, mid-edge nodes of ab, bc, ca), whose 4 flat
+                                           // triangles are in `triangles`; empty otherwise
     std::vector<uint32_t> nodes;          // nodes of the triangles, ascending
     std::vector<uint32_t> feature_nodes;  // nodes where the surface bends by more than 15 degrees
     double edge_length = 0;               // mean edge length of the triangles (m)
@@ -24,6 +30,10 @@ struct Surface {
 // Fills nodes, feature_nodes and edge_length from the triangles and the reference positions X
 // (3 per node, node_count nodes).
 void compute_surface_data(const double* X, uint32_t node_count, Surface& surface);
+
+// The 4 flat triangles (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca) of each 6-node face
+// (6 indices per face as in Surface::quadratic_faces), oriented as the face: 12 indices per face.
+std::vector<uint32_t> split_quadratic_faces(const std::vector<uint32_t>& faces);
 
 // The node-triangle lists (they depend on the triangles alone).
 void compute_node_triangles(uint32_t node_count, Surface& surface);

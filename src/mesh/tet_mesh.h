@@ -9,10 +9,11 @@ namespace lfem {
 
 struct TetMesh {
     std::vector<double> positions;  // x, y, z per node (m)
-    std::vector<uint32_t> tets;     // 4 node indices per tet, positive volume
+    std::vector<uint32_t> tets;     // nodes_per_tet node indices per tet, positive volume
+    uint32_t nodes_per_tet = 4;     // 4, or 10 for quadratic tets (common/quadratic_tet_nodes.h)
 
     uint32_t node_count() const { return uint32_t(positions.size() / 3); }
-    uint32_t tet_count() const { return uint32_t(tets.size() / 4); }
+    uint32_t tet_count() const { return uint32_t(tets.size() / nodes_per_tet); }
 };
 
 }  // namespace lfem

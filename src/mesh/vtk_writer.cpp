@@ -18,7 +18,8 @@
 namespace lfem {
 namespace {
 
-constexpr int kVtkTetra = 10;  // VTK cell type of the linear tetrahedron
+constexpr int kVtkTetra = 10;           // VTK cell type of the linear tetrahedron
+constexpr int kVtkQuadraticTetra = 24;  // and of the 10-node one
 
 [[noreturn]] void io_error(const std::string& path, const char* action, int error_number) {
     throw Error(LFEM_IO_ERROR, "cannot " + std::string(action) + " '" + path +
@@ -102,17 +103,19 @@ void write_piece(OutputFile& out, const VtkPiece& p, bool with_velocity, bool wi
         "      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" "
         "format=\"ascii\">\n");
     for (uint32_t t = 0; t < p.tet_count; ++t) {
-        const uint32_t* tet = p.tets + 4 * std::size_t(t);
-        out.print("          %u %u %u %u\n", unsigned(tet[0]), unsigned(tet[1]), unsigned(tet[2]),
-                  unsigned(tet[3]));
+        const uint32_t* tet = p.tets + std::size_t(p.nodes_per_tet) * t;
+        out.text("         ");
+        for (uint32_t a = 0; a < p.nodes_per_tet; ++a) out.print(" %u", unsigned(tet[a]));
+        out.text("\n");
     }
     out.text("        </DataArray>\n");
     out.text("        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
     for (uint32_t t = 0; t < p.tet_count; ++t)
-        out.print("          %llu\n", (unsigned long long)(4ull * (t + 1ull)));
+        out.print("          %llu\n", (unsigned long long)(p.nodes_per_tet * (t + 1ull)));
     out.text("        </DataArray>\n");
     out.text("        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-    for (uint32_t t = 0; t < p.tet_count; ++t) out.print("          %d\n", kVtkTetra);
+    const int type = p.nodes_per_tet == 10 ? kVtkQuadraticTetra : kVtkTetra;
+    for (uint32_t t = 0; t < p.tet_count; ++t) out.print("          %d\n", type);
     out.text("        </DataArray>\n      </Cells>\n    </Piece>\n");
 }
 
@@ -122,7 +125,9 @@ void check_piece(const VtkPiece& p, std::size_t index) {
     const std::string name = "vtk piece " + std::to_string(index);
     if ((p.node_count > 0 && !p.positions) || (p.tet_count > 0 && !p.tets))
         throw Error(LFEM_INVALID_ARGUMENT, name + " lacks its positions or tets");
-    for (std::size_t i = 0; i < 4 * std::size_t(p.tet_count); ++i)
+    if (p.nodes_per_tet != 4 && p.nodes_per_tet != 10)
+        throw Error(LFEM_INVALID_ARGUMENT, name + " has tets of " + std::to_string(p.nodes_per_tet) + " nodes");
+    for (std::size_t i = 0; i < std::size_t(p.nodes_per_tet) * p.tet_count; ++i)
         if (p.tets[i] >= p.node_count)
             throw Error(LFEM_INVALID_ARGUMENT, name + " has a tet node index out of range");
 }

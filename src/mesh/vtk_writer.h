@@ -12,11 +12,13 @@ namespace lfem {
 struct VtkPiece {
     const double* positions = nullptr;   // 3 per node
     uint32_t node_count = 0;
-    const uint32_t* tets = nullptr;      // 4 per tet
+    const uint32_t* tets = nullptr;      // nodes_per_tet per tet
     uint32_t tet_count = 0;
     const double* velocities = nullptr;  // 3 per node, nullable
     const double* von_mises = nullptr;   // 1 per tet, nullable
     uint32_t body_index = 0;             // written as cell data "body"
+    uint32_t nodes_per_tet = 4;          // 4 (VTK_TETRA) or 10 (VTK_QUADRATIC_TETRA, whose node
+                                         // order is lfem's, common/quadratic_tet_nodes.h)
 };
 
 // Writes one .vtu file (ASCII, one <Piece> per body). Throws Error(LFEM_IO_ERROR) when the

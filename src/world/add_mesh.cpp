@@ -4,44 +4,102 @@
 // untouched.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "common/error.h"
+#include "common/quadratic_tet_nodes.h"
 #include "fem/lumped_mass.h"
+#include "fem/quadratic_tet.h"
 #include "fem/stable_step.h"
 #include "mesh/boundary.h"
 #include "mesh/mesh_check.h"
+#include "mesh/tet_geometry.h"
 #include "rigid/global_rotation.h"
 #include "world/world.h"
 
 namespace lfem {
 namespace {
 
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+// A curved 10-node tet must not fold over: det J > 0, and not flat (the linear tets' test,
+// tet_geometry.h, with det J for 6 V), at each quadrature point and corner. The caller's
+// numbering, as the other mesh checks.
+void check_quadratic_jacobians(const double* positions, const uint32_t* tets, uint32_t tet_count) {
+    for (uint32_t t = 0; t < tet_count; ++t) {
+        const uint32_t* tet = tets + kQuadraticTetNodes * std::size_t(t);
+        const double* x[4];
+        for (int i = 0; i < 4; ++i) x[i] = positions + 3 * std::size_t(tet[i]);
+        const double longest = tet_geometry::longest_edge(x[0], x[1], x[2], x[3]);
+        const double smallest = smallest_jacobian(positions, tet);
+        if (tet_geometry::is_flat(smallest, longest) || smallest < 0.0)
+            throw Error(LFEM_INVALID_MESH, "tet " + std::to_string(t) + " is curved so far that its map folds over "
+                                           "(smallest det J of its quadrature points and corners " + number(smallest) +
+                                           ", 6 V of its corners " +
+                                           number(tet_geometry::six_volume(x[0], x[1], x[2], x[3])) +
+                                           "): move its mid-edge nodes towards the middles of their edges");
+    }
+}
+
+// The boundary of the new tets into the surface: their triangles, or for 10-node tets their
+// 6-node faces and the 4 flat triangles of each (mesh/surface.h).
+void append_boundary(BodyReference& ref, const uint32_t* new_tets, uint32_t tet_count) {
+    Surface& surface = ref.surface;
+    if (ref.nodes_per_tet == kQuadraticTetNodes) {
+        const std::vector<uint32_t> faces = extract_quadratic_boundary(new_tets, tet_count);
+        const std::vector<uint32_t> flat = split_quadratic_faces(faces);
+        surface.quadratic_faces.insert(surface.quadratic_faces.end(), faces.begin(), faces.end());
+        surface.triangles.insert(surface.triangles.end(), flat.begin(), flat.end());
+    } else {
+        const std::vector<uint32_t> boundary = extract_boundary_triangles(new_tets, tet_count);
+        surface.triangles.insert(surface.triangles.end(), boundary.begin(), boundary.end());
+    }
+    compute_surface_data(ref.X.data(), ref.node_count(), surface);
+}
+
+// The reference data of the tets appended after the first old_tets (ref.tets holds them
+// already; the per-tet arrays grow to match).
+void append_reference_tets(BodyReference& ref, uint32_t old_tets) {
+    const uint32_t total = uint32_t(ref.tets.size() / ref.nodes_per_tet);
+    if (ref.nodes_per_tet == kQuadraticTetNodes) {
+        ref.Dm_inv.resize(9 * std::size_t(kQuadraturePoints) * total);
+        ref.qp_volume.resize(std::size_t(kQuadraturePoints) * total);
+        ref.volume.resize(total);
+        add_quadratic_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, ref.Dm_inv.data(),
+                                     ref.qp_volume.data(), ref.volume.data());
+    } else {
+        ref.Dm_inv.resize(9 * std::size_t(total));
+        ref.volume.resize(total);
+        add_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, ref.Dm_inv.data(), ref.volume.data());
+    }
+}
+
 // The body's reference with the new mesh appended, in the order of node_ordering.h (locality
 // of the element loop): everything from here on sees the reordered mesh, the caller its own
 // numbering. The reordered copies go as soon as they are appended (peak memory).
 BodyReference append_reference(const Body& body, const double* positions, uint32_t node_count,
-                               const uint32_t* tets, uint32_t tet_count, const lfem_world_def& def, ThreadPool* pool) {
+                               const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet,
+                               const lfem_world_def& def, ThreadPool* pool) {
     BodyReference ref = body.ref;
+    ref.nodes_per_tet = nodes_per_tet;
     const uint32_t old_nodes = ref.node_count(), old_tets = ref.tet_count();
     {
-        LocalityOrder order = order_for_locality(positions, node_count, tets, tet_count);
+        LocalityOrder order = order_for_locality(positions, node_count, tets, tet_count, nodes_per_tet);
         ref.numbering.append(order, old_nodes, old_tets);
         ref.X.insert(ref.X.end(), order.positions.begin(), order.positions.end());
         ref.tets.reserve(ref.tets.size() + order.tets.size());
         for (uint32_t v : order.tets) ref.tets.push_back(v + old_nodes);
     }
-    const uint32_t* new_tets = &ref.tets[4 * std::size_t(old_tets)];
     ref.mass.resize(ref.X.size() / 3, 0.0);
-    std::vector<uint32_t> boundary = extract_boundary_triangles(new_tets, tet_count);
-    ref.surface.triangles.insert(ref.surface.triangles.end(), boundary.begin(), boundary.end());
-    compute_surface_data(ref.X.data(), ref.node_count(), ref.surface);
-    ref.Dm_inv.resize(9 * std::size_t(old_tets + tet_count));
-    ref.volume.resize(old_tets + tet_count);
-    add_reference_tets(ref.X.data(), ref.tets.data(), old_tets, old_tets + tet_count, ref.Dm_inv.data(),
-                       ref.volume.data());
+    append_boundary(ref, &ref.tets[std::size_t(nodes_per_tet) * old_tets], tet_count);
+    append_reference_tets(ref, old_tets);
     add_lumped_mass(ref.tets.data(), ref.volume.data(), old_tets, old_tets + tet_count, body.def.density,
-                    ref.mass.data());
+                    ref.mass.data(), nodes_per_tet);
     const uint32_t n = ref.node_count();
     derive_reference_data(body, ref);
     if (body.is_deformable() && def.mass_scaling_step > 0.0) {
@@ -49,7 +107,8 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
         // body's, from their physical masses again): the stable limit is then at least
         // mass_scaling_step / step_safety.
         std::vector<double> physical(n, 0.0);
-        add_lumped_mass(ref.tets.data(), ref.volume.data(), 0, ref.tet_count(), body.def.density, physical.data());
+        add_lumped_mass(ref.tets.data(), ref.volume.data(), 0, ref.tet_count(), body.def.density, physical.data(),
+                        nodes_per_tet);
         ElementMesh mesh = element_mesh(ref);
         mesh.mass = physical;
         const double omega_target = 2.0 * def.step_safety / def.mass_scaling_step;
@@ -95,8 +154,10 @@ BodyState append_state(const World& world, const Body& body, const BodyReference
     state.h_last = 0.0;
     state.elastic.assign(3 * std::size_t(n), 0.0);
     if (body.is_deformable() && body.def.model == LFEM_MODEL_COROTATIONAL) {
-        state.tet_rotation.resize(4 * std::size_t(ref.tet_count()), 0.0f);
-        for (uint32_t e = body.ref.tet_count(); e < ref.tet_count(); ++e) state.tet_rotation[4 * e] = 1.0f;
+        const std::size_t per_tet = ref.rotations_per_tet();
+        state.tet_rotation.resize(4 * per_tet * ref.tet_count(), 0.0f);
+        for (std::size_t k = per_tet * body.ref.tet_count(); k < per_tet * ref.tet_count(); ++k)
+            state.tet_rotation[4 * k] = 1.0f;
     }
     for (int k = 0; k < 3; ++k) state.global.center[k] = c[k];
     return state;
@@ -134,7 +195,7 @@ void start_motion(Body& candidate, BodyState& state, ThreadPool* pool) {
 }  // namespace
 
 void derive_reference_data(const Body& body, BodyReference& ref) {
-    ref.colouring = colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count());
+    ref.colouring = colour_tets(ref);
     compute_node_triangles(ref.node_count(), ref.surface);
     ref.every_node.clear();
     if (body.is_deformable())
@@ -157,11 +218,16 @@ void derive_reference_data(const Body& body, BodyReference& ref) {
 }
 
 void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_count, const uint32_t* tets,
-                     uint32_t tet_count) {
+                     uint32_t tet_count, uint32_t nodes_per_tet) {
     Body& body = bodies_.get(handle);
-    check_tet_mesh(positions, node_count, tets, tet_count);
+    check_tet_mesh(positions, node_count, tets, tet_count, nodes_per_tet);
+    if (nodes_per_tet == kQuadraticTetNodes) check_quadratic_jacobians(positions, tets, tet_count);
     if (body.is_rigid() && body.has_mesh())
         throw Error(LFEM_INVALID_ARGUMENT, "a rigid body takes one mesh (give it all its parts at once)");
+    if (body.ref.tet_count() > 0 && body.ref.nodes_per_tet != nodes_per_tet)
+        throw Error(LFEM_INVALID_ARGUMENT, "the body has " + std::to_string(body.ref.nodes_per_tet) +
+                                               "-node tets; a mesh of " + std::to_string(nodes_per_tet) +
+                                               "-node tets cannot join them");
     const uint32_t old_nodes = body.ref.node_count();
     const uint32_t old_tets = body.ref.tet_count();
     if (uint64_t(old_nodes) + node_count > 0xFFFFFFF0ull || uint64_t(old_tets) + tet_count > 0xFFFFFFF0ull)
@@ -170,7 +236,7 @@ void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_co
     Body candidate;
     candidate.def = body.def;
     candidate.lame = body.lame;
-    candidate.ref = append_reference(body, positions, node_count, tets, tet_count, def_, pool_.get());
+    candidate.ref = append_reference(body, positions, node_count, tets, tet_count, nodes_per_tet, def_, pool_.get());
     double added_kinetic = 0.0;
     BodyState state = append_state(*this, body, candidate.ref, old_nodes,
                                    &candidate.ref.X[3 * std::size_t(old_nodes)], &added_kinetic);

@@ -15,6 +15,7 @@ uint32_t World::add_skin(lfem_body handle, const double* positions, uint32_t ver
     SkinTets tets;
     tets.X = body.ref.X;
     tets.tets = body.ref.tets;
+    tets.nodes_per_tet = body.ref.nodes_per_tet;
     // A vertex counts as just outside within one mean boundary edge of the nearest tet: the
     // gap a render mesh drawn a little proud of a coarse simulation mesh leaves.
     Skin skin = bind_skin(tets, positions, vertex_count, triangles, triangle_count, body.ref.surface.edge_length);

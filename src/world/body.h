@@ -25,10 +25,14 @@ namespace lfem {
 
 struct BodyReference {
     std::vector<double> X;          // 3 per node: reference positions (m)
-    std::vector<double> mass;       // lumped node masses, sum of rho V_e / 4 (kg)
-    std::vector<uint32_t> tets;     // 4 node indices per tet
-    std::vector<double> Dm_inv;     // 9 per tet: inverse reference edge matrix (column-major)
+    std::vector<double> mass;       // lumped node masses (kg, fem/lumped_mass.h)
+    std::vector<uint32_t> tets;     // nodes_per_tet node indices per tet
+    std::vector<double> Dm_inv;     // 9 per tet (linear) or per quadrature point (quadratic):
+                                    // inverse reference edge matrix or Jacobian (column-major)
     std::vector<double> volume;     // reference volume per tet (m^3)
+    std::vector<double> qp_volume;  // quadratic: 4 per tet, each quadrature point's volume
+    uint32_t nodes_per_tet = 4;     // 4, or 10 for a body of quadratic tets (fixed by its
+                                    // first mesh)
     Surface surface;                // boundary triangles, slave and feature nodes, edge length
     double total_mass = 0;          // the sum of `mass`, added mass included
     double added_mass = 0;          // kg, added by mass scaling (lfem_world_def.mass_scaling_step)
@@ -46,6 +50,8 @@ struct BodyReference {
 
     uint32_t node_count() const { return uint32_t(X.size() / 3); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }
+    // Corotational warm-start rotations per tet: one, or one per quadrature point.
+    uint32_t rotations_per_tet() const { return nodes_per_tet == 10 ? 4 : 1; }
 };
 
 struct BodyState {
@@ -53,9 +59,10 @@ struct BodyState {
     std::vector<double> v_half;    // 3 per node: velocity of the last step, (x^n - x^n-1)/h;
                                    // the synchronized velocity itself when h_last == 0
     std::vector<double> elastic;   // 3 per node: elastic force -f_int at x (N)
-    std::vector<float> tet_rotation; // 4 per tet (w,x,y,z): warm start of the corotational
-                                     // rotations (float: a start, not a result); empty for
-                                     // the other models
+    std::vector<float> tet_rotation; // 4 per tet (w,x,y,z; quadratic tets: 4 per quadrature
+                                     // point): warm start of the corotational rotations
+                                     // (float: a start, not a result); empty for the other
+                                     // models
     std::vector<double> contact_force; // 3 per node: contact force of the last step (N);
                                        // empty while the body touches nothing
     double h_last = 0;             // size of the last step (s); 0 = no step since a reset
@@ -104,6 +111,14 @@ struct Body {
     uint64_t geometry_identity() const { return uint64_t(generation) << 32 | geometry_revision; }
 };
 
+// The blocks of the parallel element loop of a body's tets (element_colouring.h): blocks of
+// about the same work, a 10-node tet costing several linear ones. Derived from the tets alone,
+// so a checkpoint rebuilds it.
+inline ElementColouring colour_tets(const BodyReference& ref) {
+    const uint32_t block = ref.nodes_per_tet == 10 ? kElementBlockSize / 4 : kElementBlockSize;
+    return colour_element_blocks(ref.tets.data(), ref.tet_count(), ref.node_count(), block, ref.nodes_per_tet);
+}
+
 // The data derived from a body's reference (not saved in checkpoints): the element colouring,
 // the surface's node-triangle lists and, for a static body, the tree of its triangles.
 void derive_reference_data(const Body& body, BodyReference& ref);
@@ -113,6 +128,7 @@ void derive_reference_data(const Body& body, BodyReference& ref);
 inline ElementMesh element_mesh(const BodyReference& ref) {
     ElementMesh m;
     m.X = ref.X, m.tets = ref.tets, m.Dm_inv = ref.Dm_inv, m.volume = ref.volume, m.mass = ref.mass;
+    m.qp_volume = ref.qp_volume, m.nodes_per_tet = ref.nodes_per_tet;
     m.colouring = &ref.colouring;
     return m;
 }

@@ -12,8 +12,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <memory>
+#include <system_error>
 #include <type_traits>
 
 #include "common/error.h"
@@ -22,18 +24,19 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 7;  // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 8;  // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
-                                        // sleeping, the touching pairs; 7: skins
+                                        // sleeping, the touching pairs; 7: 10-node tets (nodes
+                                        // per tet, quadrature volumes, 6-node faces); 8: skins
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 592,  // colouring, node-triangle lists, tree: derived
+static_assert(sizeof(BodyReference) == 648,  // colouring, node-triangle lists, tree: derived
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
 static_assert(sizeof(Attachment) == 240, "Attachment changed: update the checkpoint");
@@ -84,6 +87,15 @@ public:
     void operator()(T& v) {
         static_assert(std::is_trivially_copyable<T>::value, "plain data only");
         take(&v, sizeof v);
+    }
+    // A flag is one byte that must be 0 or 1: any other value would be a bool no code may
+    // read (undefined behaviour), so an altered file is refused instead.
+    void operator()(bool& v) {
+        unsigned char byte = 0;
+        static_assert(sizeof(bool) == 1, "a flag is one byte in the file");
+        take(&byte, 1);
+        if (byte > 1) fail(path_, "bad flag (neither 0 nor 1)");
+        v = byte == 1;
     }
     template <class T>
     void operator()(std::vector<T>& v) {
@@ -158,7 +170,8 @@ void body_fields(A& a, B& b) {
     def_field(a, b.def);
     a(b.lame.mu), a(b.lame.lambda);
     auto& r = b.ref;
-    a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.surface.triangles), a(r.surface.nodes);
+    a(r.nodes_per_tet), a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.qp_volume);
+    a(r.surface.triangles), a(r.surface.quadratic_faces), a(r.surface.nodes);
     a(r.surface.feature_nodes), a(r.surface.edge_length), a(r.total_mass), a(r.added_mass), a(r.com), a(r.stable_step);
     a(r.inertia);
     a(r.numbering.node_of_api), a(r.numbering.api_of_node), a(r.numbering.api_of_tet);
@@ -197,12 +210,17 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(b.def.model >= LFEM_MODEL_PAPER && b.def.model <= LFEM_MODEL_LINEAR, "bad model");
     require(b.def.self_contact <= 1 && (b.def.self_contact == 0 || b.is_deformable()), "bad self-contact flag");
     require(r.X.size() % 3 == 0, "bad reference positions");
-    const std::size_t n = r.X.size() / 3, t = r.tets.size() / 4;
-    require(r.tets.size() % 4 == 0 && r.mass.size() == n && r.Dm_inv.size() == 9 * t &&
-                r.volume.size() == t && r.surface.triangles.size() % 3 == 0,
+    require(r.nodes_per_tet == 4 || r.nodes_per_tet == 10, "bad nodes per tet");
+    const bool quadratic = r.nodes_per_tet == 10;
+    const std::size_t n = r.X.size() / 3, t = r.tets.size() / r.nodes_per_tet, points = quadratic ? 4 : 1;
+    require(r.tets.size() % r.nodes_per_tet == 0 && r.mass.size() == n && r.Dm_inv.size() == 9 * points * t &&
+                r.volume.size() == t && r.qp_volume.size() == (quadratic ? points * t : 0) &&
+                r.surface.triangles.size() % 3 == 0 && r.surface.quadratic_faces.size() % 6 == 0 &&
+                (!quadratic || r.surface.triangles.size() == 2 * r.surface.quadratic_faces.size()),
             "array sizes disagree");
     for (uint32_t i : r.tets) require(i < n, "tet node index out of range");
     for (uint32_t i : r.surface.triangles) require(i < n, "boundary node index out of range");
+    for (uint32_t i : r.surface.quadratic_faces) require(i < n, "boundary node index out of range");
     for (uint32_t i : r.surface.nodes) require(i < n, "boundary node out of range");
     for (uint32_t i : r.surface.feature_nodes) require(i < n, "feature node out of range");
     require(n <= UINT32_MAX && t <= UINT32_MAX &&
@@ -211,7 +229,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(s.x.size() == 3 * n && s.v_half.size() == 3 * n && s.elastic.size() == 3 * n,
             "state size disagrees with the mesh");
     const bool corotational = b.is_deformable() && b.def.model == LFEM_MODEL_COROTATIONAL;
-    require(s.tet_rotation.size() == (corotational ? 4 * t : 0), "tet rotations disagree with the mesh");
+    require(s.tet_rotation.size() == (corotational ? 4 * points * t : 0), "tet rotations disagree with the mesh");
     for (float v : s.tet_rotation) require(std::isfinite(v), "a non-finite number");
     require(s.contact_force.empty() || s.contact_force.size() == 3 * n, "bad contact forces");
     require(b.node_mode.size() == n, "bad node modes");
@@ -242,7 +260,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
             "bad stable step");
     require(s.stiffening >= 1.0 && s.stiffening < HUGE_VAL, "bad stiffening");  // also NaN
     require(r.added_mass >= 0.0 && r.added_mass < HUGE_VAL, "bad added mass");
-    for (const std::vector<double>* a : {&r.X, &r.mass, &r.Dm_inv, &r.volume, &s.x, &s.v_half,
+    for (const std::vector<double>* a : {&r.X, &r.mass, &r.Dm_inv, &r.volume, &r.qp_volume, &s.x, &s.v_half,
                                          &s.elastic, &s.contact_force,
                                          &s.shape_pose, &b.prescribed_velocity, &b.node_force})
         for (double v : *a) require(std::isfinite(v), "a non-finite number");
@@ -327,6 +345,10 @@ void save_checkpoint(const World& world, const std::string& path) {
     put_u64(file, payload.size());
     put_u64(file, fnv1a(payload.data(), payload.size()));
     const std::string tmp = path + ".tmp";
+    // std::filesystem::rename, not std::rename: on Windows the latter refuses to replace an
+    // existing file; the former replaces it there too (on POSIX both are rename(2)). Its paths
+    // are made before the file, so that running out of memory leaves no .tmp behind.
+    const std::filesystem::path from(tmp), to(path);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out) fail(path, "cannot open " + tmp + " for writing");
@@ -339,7 +361,9 @@ void save_checkpoint(const World& world, const std::string& path) {
             fail(path, "write failed (disk full?)");
         }
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::error_code renamed;
+    std::filesystem::rename(from, to, renamed);
+    if (renamed) {
         std::remove(tmp.c_str());
         fail(path, "cannot rename " + tmp + " to it");
     }
@@ -360,8 +384,9 @@ WorldImage read_checkpoint(const std::string& path) {
     if (std::memcmp(file.data(), kMagic, sizeof kMagic) != 0) fail(path, "not an lfem checkpoint");
     const char* p = file.data() + sizeof kMagic;
     if (get<uint32_t>(p) != kFormatVersion)
-        fail(path, "format version " + std::to_string(get<uint32_t>(p)) + ", this library reads " +
-                       std::to_string(kFormatVersion));
+        fail(path, "format version " + std::to_string(get<uint32_t>(p)) + (get<uint32_t>(p) < kFormatVersion ? " (an older lfem's)" : " (a newer lfem's)") +
+                       "; this library reads version " + std::to_string(kFormatVersion) +
+                       " only: save the scene again with this version");
     if (get<uint32_t>(p + 4) != kByteOrderMark) fail(path, "written on a machine of other byte order");
     for (int i = 0; i < 4; ++i)
         if (get<uint32_t>(p + 8 + 4 * i) != kLayout[i])

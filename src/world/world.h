@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/cpu_dispatch.h"
 #include "common/thread_pool.h"
 #include "contact/contact_bodies.h"
 #include "contact/detect_node_triangle.h"
@@ -58,9 +59,10 @@ struct WorldTotals {
 
 class World {
 public:
-    // Starts def.thread_count - 1 worker threads (joined by the destructor).
+    // Starts def.thread_count - 1 worker threads (joined by the destructor). The kernels'
+    // instruction-set variant is chosen here, once for the process (common/cpu_dispatch.h).
     explicit World(const lfem_world_def& def)
-        : def_(def), pool_(new ThreadPool(def.thread_count)) {}
+        : def_(def), pool_(new ThreadPool(def.thread_count)) { cpu_level(); }
 
     const lfem_world_def& def() const { return def_; }
     void set_gravity(const double g[3]);
@@ -74,9 +76,10 @@ public:
     const BodyRegistry& bodies() const { return bodies_; }
 
     // ---- mesh ingestion (add_mesh.cpp); each all or nothing
-    // Appends a checked tet mesh to a body (see lfem_body_add_mesh).
+    // Appends a checked tet mesh to a body (see lfem_body_add_mesh): tets of nodes_per_tet nodes,
+    // 4 or 10 (lfem_body_add_quadratic_mesh), the same for every mesh of a body.
     void add_mesh(lfem_body body, const double* positions, uint32_t node_count, const uint32_t* tets,
-                  uint32_t tet_count);
+                  uint32_t tet_count, uint32_t nodes_per_tet = 4);
     // Gives a static or kinematic body a surface of triangles (no tets, no mass), e.g. terrain.
     void add_triangle_mesh(lfem_body body, const double* positions, uint32_t node_count,
                            const uint32_t* triangles, uint32_t triangle_count);

@@ -123,6 +123,83 @@ TEST_F(BadInput, BadMeshes) {
              "face shared by three tets");
 }
 
+// 10-node tets (lfem_body_add_quadratic_mesh): the linear checks on their corners, then their
+// own: conforming mid-edge nodes, no folded curved element, one kind of tet per body, and the
+// mesh calls that make and read them.
+TEST_F(BadInput, BadQuadraticMeshes) {
+    Mesh q;
+    make_quadratic_box_mesh(q, 0.1, 0.1, 0.1, 1, 1, 1);
+    const uint32_t n = q.nodes(), t = q.tets();
+    const std::vector<double> X(lfem_mesh_get_positions(q.m), lfem_mesh_get_positions(q.m) + 3 * n);
+    const std::vector<uint32_t> tets(lfem_mesh_get_tets(q.m), lfem_mesh_get_tets(q.m) + 10 * t);
+    const auto refused = [&](const std::vector<double>& x, const std::vector<uint32_t>& e, uint32_t nodes,
+                             lfem_status expected, const char* what) {
+        expect_refused(lfem_body_add_quadratic_mesh(world, body, x.data(), nodes, e.data(), uint32_t(e.size() / 10)),
+                       expected, what);
+    };
+    // The linear body of the fixture cannot take 10-node tets, nor a 10-node body 4-node ones.
+    refused(X, tets, n, LFEM_INVALID_ARGUMENT, "10-node tets for a body of 4-node tets");
+    EXPECT_NE(std::string(lfem_last_error()).find("cannot join"), std::string::npos) << lfem_last_error();
+    lfem_body_def d = lfem_body_def_default();
+    const lfem_body quad = add_body(world, d, q);
+    const std::vector<lfem_body> all = {body, floor, quad};
+    before = fingerprint(world, all);
+    const auto refused_on = [&](lfem_status got, lfem_status expected, const char* what) {
+        EXPECT_EQ(got, expected) << what << ": " << lfem_last_error();
+        EXPECT_EQ(before, fingerprint(world, all)) << what << " changed the world";
+        ++cases;
+    };
+    refused_on(lfem_body_add_mesh(world, quad, lfem_mesh_get_positions(mesh.m), mesh.nodes(),
+                                  lfem_mesh_get_tets(mesh.m), mesh.tets()),
+               LFEM_INVALID_ARGUMENT, "4-node tets for a body of 10-node tets");
+    const auto refused_quad = [&](const std::vector<double>& x, const std::vector<uint32_t>& e, uint32_t nodes,
+                                  lfem_status expected, const char* what) {
+        refused_on(lfem_body_add_quadratic_mesh(world, quad, x.data(), nodes, e.data(), uint32_t(e.size() / 10)),
+                   expected, what);
+    };
+    refused_quad(X, tets, 9, LFEM_INVALID_ARGUMENT, "fewer than 10 nodes");
+    std::vector<uint32_t> e = tets;
+    e[5] = n;
+    refused_quad(X, e, n, LFEM_INVALID_MESH, "mid-edge index out of range");
+    e = tets;
+    e[5] = e[0];
+    refused_quad(X, e, n, LFEM_INVALID_MESH, "a mid-edge node repeating a corner");
+    // Tet 1's node on an edge it shares with tet 0 replaced by a node of its own.
+    std::vector<double> Xs = X;
+    e = tets;
+    for (int k = 4; k < 10; ++k) {
+        bool shared = false;
+        for (int j = 4; j < 10; ++j) shared = shared || e[10 + k] == e[j];
+        if (!shared) continue;
+        Xs.insert(Xs.end(), &X[3 * e[10 + k]], &X[3 * e[10 + k]] + 3);
+        e[10 + k] = uint32_t(Xs.size() / 3 - 1);
+        break;
+    }
+    refused_quad(Xs, e, uint32_t(Xs.size() / 3), LFEM_INVALID_MESH, "non-conforming mid-edge node");
+    EXPECT_NE(std::string(lfem_last_error()).find("not conforming"), std::string::npos) << lfem_last_error();
+    // A mid-edge node pulled past the opposite corner: the curved element folds over.
+    Xs = X;
+    const uint32_t mid = tets[4], far = tets[3];
+    for (int k = 0; k < 3; ++k) Xs[3 * mid + k] = 1.5 * X[3 * far + k] - 0.5 * X[3 * mid + k];
+    refused_quad(Xs, tets, n, LFEM_INVALID_MESH, "folded curved tet");
+    EXPECT_NE(std::string(lfem_last_error()).find("folds over"), std::string::npos) << lfem_last_error();
+    // The mesh calls.
+    EXPECT_EQ(lfem_mesh_make_quadratic(nullptr), LFEM_INVALID_ARGUMENT);
+    const std::vector<uint32_t> kept(lfem_mesh_get_tets(q.m), lfem_mesh_get_tets(q.m) + 10 * t);
+    EXPECT_EQ(lfem_mesh_make_quadratic(q.m), LFEM_INVALID_ARGUMENT);  // already quadratic: unchanged
+    EXPECT_EQ(std::vector<uint32_t>(lfem_mesh_get_tets(q.m), lfem_mesh_get_tets(q.m) + 10 * t), kept);
+    EXPECT_EQ(lfem_mesh_get_nodes_per_tet(nullptr), 0u);
+    uint32_t faces = 0, width = 0;
+    ASSERT_EQ(lfem_body_get_boundary_face_count(world, quad, &faces), LFEM_OK);
+    ASSERT_EQ(lfem_body_get_nodes_per_tet(world, quad, &width), LFEM_OK);
+    EXPECT_EQ(width, 10u);
+    std::vector<uint32_t> out(6 * faces);
+    refused_on(lfem_body_get_boundary_faces(world, quad, out.data(), faces - 1), LFEM_BUFFER_TOO_SMALL,
+               "face buffer short");
+    refused_on(lfem_body_get_boundary_faces(world, quad, nullptr, faces), LFEM_INVALID_ARGUMENT, "faces NULL");
+    refused_on(lfem_body_get_nodes_per_tet(world, quad, nullptr), LFEM_INVALID_ARGUMENT, "nodes per tet NULL");
+}
+
 TEST_F(BadInput, StaleForeignAndNullHandles) {
     // Stale: a destroyed body's handle.
     lfem_body_def d = lfem_body_def_default();

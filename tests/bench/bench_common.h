@@ -42,4 +42,30 @@ static inline double bench_status_bytes(const char* field) {
         }                                                                        \
     } while (0)
 
+/* The active contacts of the last step into *contacts (grown as needed, *capacity its size),
+ * their number into *count. Returns 0, or -1 after printing why. */
+static inline int bench_contacts(lfem_world* world, lfem_contact** contacts, uint32_t* capacity, uint32_t* count) {
+    lfem_status s = lfem_world_query_contacts(world, *contacts, *capacity, count);
+    if (s == LFEM_BUFFER_TOO_SMALL) {
+        lfem_contact* grown = (lfem_contact*)realloc(*contacts, sizeof(lfem_contact) * 2 * *count);
+        if (!grown) return -1;
+        *contacts = grown;
+        *capacity = 2 * *count;
+        s = lfem_world_query_contacts(world, *contacts, *capacity, count);
+    }
+    if (s != LFEM_OK) {
+        fprintf(stderr, "lfem_world_query_contacts failed: %s\n", lfem_last_error());
+        return -1;
+    }
+    return 0;
+}
+
+/* Adds a mesh to a body as its tets require: lfem_body_add_quadratic_mesh for 10-node tets,
+ * lfem_body_add_mesh otherwise. */
+static inline lfem_status bench_add_mesh(lfem_world* world, lfem_body body, const lfem_mesh* mesh) {
+    return (lfem_mesh_get_nodes_per_tet(mesh) == 10 ? lfem_body_add_quadratic_mesh : lfem_body_add_mesh)(
+        world, body, lfem_mesh_get_positions(mesh), lfem_mesh_get_node_count(mesh), lfem_mesh_get_tets(mesh),
+        lfem_mesh_get_tet_count(mesh));
+}
+
 #endif

@@ -25,6 +25,10 @@
  *   cubes16_bullet  16 cubes of 162 tets (the Bullet benchmark's --edge 0.1 --cells 3 scene:
  *                   neo-Hookean, nu 0.3, 0.5 m apart) on a plane shape
  *   cube1_bullet    one such cube
+ *   cubes100_apart  100 cubes of 3^3 cells (16,200 tets) 0.5 m apart, floating (no gravity)
+ *   cube_one_big    one cube of 15^3 cells (20,250 tets) of the same cell size, floating:
+ *                   what 100 small bodies cost against one of as many tets (tet-steps/s,
+ *                   printed as their ratio)
  *   pile50_awake    50 cubes of 3^3 cells (E 1e5, damping 20) in 25 stacks of 2 on the
  *                   box-mesh floor, settled, sleeping off
  *   pile50_asleep   the same with sleeping on: settled, the pile is asleep (issue 17's target:
@@ -41,7 +45,7 @@
 #include "bench_common.h"
 #include "lfem.h"
 
-enum floor_kind { FLOOR_BOX4, FLOOR_BOX64, FLOOR_PLANE, FLOOR_TRI2, FLOOR_TERRAIN };
+enum floor_kind { FLOOR_BOX4, FLOOR_BOX64, FLOOR_PLANE, FLOOR_TRI2, FLOOR_TERRAIN, FLOOR_NONE };
 
 typedef struct scene {
     const char* name;
@@ -53,20 +57,23 @@ typedef struct scene {
     int layers;       /* cubes stacked per place (0 = 1) */
     int sleep;        /* lfem_world_def.enable_sleep */
     double damping;   /* 0 = 5 */
+    double edge;      /* m, 0 = 0.1 */
 } scene;
 
 static const scene kScenes[] = {
-    {"cubes32_box4", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 0},
-    {"cubes32_box64", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX64, 0, 0, 0},
-    {"cubes32_plane", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0},
-    {"cubes8_tri2", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0},
-    {"cubes8_terrain", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TERRAIN, 0, 0, 0},
-    {"cubes8_stiff", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0},
-    {"cubes8_plane", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0},
-    {"cubes16_bullet", 16, 4, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0},
-    {"cube1_bullet", 1, 1, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0},
-    {"pile50_awake", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 0, 20},
-    {"pile50_asleep", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 1, 20},
+    {"cubes32_box4", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 0, 0},
+    {"cubes32_box64", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX64, 0, 0, 0, 0},
+    {"cubes32_plane", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0, 0},
+    {"cubes8_tri2", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0, 0},
+    {"cubes8_terrain", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TERRAIN, 0, 0, 0, 0},
+    {"cubes8_stiff", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0, 0},
+    {"cubes8_plane", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0, 0},
+    {"cubes16_bullet", 16, 4, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0, 0},
+    {"cube1_bullet", 1, 1, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0, 0},
+    {"cubes100_apart", 100, 10, 3, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_NONE, 0, 0, 0, 0},
+    {"cube_one_big", 1, 1, 15, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_NONE, 0, 0, 0, 0.5},
+    {"pile50_awake", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 0, 20, 0},
+    {"pile50_asleep", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 1, 20, 0},
 };
 
 typedef struct result {
@@ -77,6 +84,7 @@ typedef struct result {
 } result;
 
 static int add_floor(lfem_world* w, enum floor_kind kind) {
+    if (kind == FLOOR_NONE) return 0;  /* floating, without gravity */
     lfem_body_def fd = lfem_body_def_default();
     fd.type = LFEM_BODY_STATIC;
     lfem_body floor_body;
@@ -132,7 +140,7 @@ fail:
 static int build(lfem_world* w, const scene* sc, double* tets) {
     lfem_mesh* m = NULL;
     if (add_floor(w, sc->floor) != 0) return -1;
-    const double edge = 0.1, size[3] = {edge, edge, edge};
+    const double edge = sc->edge > 0 ? sc->edge : 0.1, size[3] = {edge, edge, edge};
     const uint32_t cells[3] = {sc->cells, sc->cells, sc->cells};
     const int per_row = sc->per_row, layers = sc->layers > 0 ? sc->layers : 1, places = sc->cubes / layers;
     *tets = 0;
@@ -167,6 +175,7 @@ static void run_scene(const scene* sc, uint32_t threads, int frames, double sett
     lfem_world_def wd = lfem_world_def_default();
     wd.thread_count = threads;
     wd.enable_sleep = (uint8_t)sc->sleep;
+    if (sc->floor == FLOOR_NONE) wd.gravity[2] = 0.0;
     lfem_world* w = NULL;
     memset(out, 0, sizeof *out);
     if (lfem_world_create(&wd, &w) != LFEM_OK || build(w, sc, &out->tets) != 0) goto fail;
@@ -298,11 +307,11 @@ int main(int argc, char** argv) {
            "worst", "sub/frame", "searches", "Mtet-s/s", "forces", "pred", "broad", "narrow", "shapes", "solve", "commit",
            "detect/forces, x reference");
     int failed = 0;
-    double awake_ms[3] = {0, 0, 0};
+    double awake_ms[3] = {0, 0, 0}, small_rate[3] = {0, 0, 0};
     for (size_t s = 0; s < sizeof kScenes / sizeof kScenes[0]; ++s) {
         const scene* sc = &kScenes[s];
         if (only && strcmp(only, sc->name) != 0) continue;
-        double ms_by_threads[3] = {0, 0, 0};
+        double ms_by_threads[3] = {0, 0, 0}, rate_by_threads[3] = {0, 0, 0};
         for (uint32_t threads = 1; threads <= 2; ++threads) {
             if (only_threads && threads != only_threads) continue;
             const result r = fastest_in_child(repeats, scene_work, sc, threads);
@@ -316,6 +325,7 @@ int main(int argc, char** argv) {
             const double detect = p->broad_phase.seconds + p->narrow_phase.seconds + p->shape_queries.seconds;
             const double rate = r.tets * r.substeps / r.seconds;
             ms_by_threads[threads] = 1e3 * r.seconds / g_frames;
+            rate_by_threads[threads] = rate;
             printf("%-15s %3u %6.0f %8.2f %8.2f %9.1f %8llu %8.2f | %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f | %.2f",
                    sc->name, threads, r.tets, ms_by_threads[threads], 1e3 * r.worst_frame, r.substeps / g_frames,
                    (unsigned long long)p->candidate_searches, 1e-6 * rate,
@@ -329,6 +339,12 @@ int main(int argc, char** argv) {
         if (ms_by_threads[1] > 0 && ms_by_threads[2] > 0)
             printf("%-15s 2 threads / 1 thread: %.2f\n", sc->name, ms_by_threads[2] / ms_by_threads[1]);
         if (!strcmp(sc->name, "pile50_awake")) memcpy(awake_ms, ms_by_threads, sizeof awake_ms);
+        if (!strcmp(sc->name, "cubes100_apart")) memcpy(small_rate, rate_by_threads, sizeof small_rate);
+        if (!strcmp(sc->name, "cube_one_big"))
+            for (uint32_t threads = 1; threads <= 2; ++threads)
+                if (small_rate[threads] > 0 && rate_by_threads[threads] > 0)
+                    printf("%-15s 100 small bodies / one body, tet-steps per second, %u thread(s): %.2f\n", "cubes100",
+                           threads, small_rate[threads] / rate_by_threads[threads]);
         if (!strcmp(sc->name, "pile50_asleep"))
             for (uint32_t threads = 1; threads <= 2; ++threads)
                 if (awake_ms[threads] > 0 && ms_by_threads[threads] > 0)

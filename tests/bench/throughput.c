@@ -11,7 +11,8 @@
  * order: "ordered" (default) gives the box builder's mesh as it is, numbered plane by plane;
  *        "shuffled" numbers its nodes and tets in a random order (fixed seed) first, as a mesh
  *        generator that numbers in no spatial order would. The library reorders every mesh
- *        for locality (src/mesh/node_ordering.h), so the two should run alike.
+ *        for locality (src/mesh/node_ordering.h), so the two should run alike. "quadratic":
+ *        the builder's mesh made of 10-node tets (lfem_mesh_make_quadratic), as ordered.
  * repeats: runs of each configuration, default 1; the fastest is reported (other load on a
  *        shared machine only ever slows a run down).
  *
@@ -94,6 +95,7 @@ static void shuffle_mesh(double* x, uint32_t node_count, uint32_t* tets, uint32_
     free(x_new), free(t_new), free(node_perm), free(tet_perm);
 }
 
+/* shuffled: 1 to renumber the mesh at random, 2 for 10-node tets. */
 static result run_config(lfem_model model, unsigned threads, int contact, unsigned cells,
                          unsigned steps, int shuffled) {
     result r;
@@ -102,10 +104,12 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
     const uint32_t n[3] = {cells, cells, cells};
     lfem_mesh* mesh = NULL;
     CHECK(lfem_mesh_create_box(size, n, &mesh));
+    if (shuffled == 2) CHECK(lfem_mesh_make_quadratic(mesh));
     const uint32_t node_count = lfem_mesh_get_node_count(mesh);
     const uint32_t tet_count = lfem_mesh_get_tet_count(mesh);
+    const uint32_t per_tet = lfem_mesh_get_nodes_per_tet(mesh);
     double* x = malloc(3 * sizeof(double) * node_count);
-    uint32_t* tets = malloc(4 * sizeof(uint32_t) * tet_count);
+    uint32_t* tets = malloc(per_tet * sizeof(uint32_t) * tet_count);
     double* v = malloc(3 * sizeof(double) * node_count);
     if (!x || !tets || !v) exit(1);
     /* The box builder centres nothing: find its extent to place it. */
@@ -116,9 +120,9 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
     const double shift[3] = {-lo[0], -lo[1], -lo[2]};
     CHECK(lfem_mesh_translate(mesh, shift));
     memcpy(x, lfem_mesh_get_positions(mesh), 3 * sizeof(double) * node_count);
-    memcpy(tets, lfem_mesh_get_tets(mesh), 4 * sizeof(uint32_t) * tet_count);
+    memcpy(tets, lfem_mesh_get_tets(mesh), per_tet * sizeof(uint32_t) * tet_count);
     lfem_mesh_destroy(mesh);
-    if (shuffled) shuffle_mesh(x, node_count, tets, tet_count);
+    if (shuffled == 1) shuffle_mesh(x, node_count, tets, tet_count);
     for (uint32_t i = 0; i < node_count; ++i) {
         const double dx = x[3 * i] - 0.5, dy = x[3 * i + 1] - 0.5, dz = x[3 * i + 2] - 0.5;
         v[3 * i + 0] = -0.5 * dy + 0.01 * dx;
@@ -149,7 +153,7 @@ static result run_config(lfem_model model, unsigned threads, int contact, unsign
     bd.friction = 0.5;
     lfem_body body;
     CHECK(lfem_body_create(w, &bd, &body));
-    CHECK(lfem_body_add_mesh(w, body, x, node_count, tets, tet_count));
+    CHECK((per_tet == 10 ? lfem_body_add_quadratic_mesh : lfem_body_add_mesh)(w, body, x, node_count, tets, tet_count));
     if (!contact) CHECK(lfem_body_set_velocities(w, body, v, node_count));
 
     double limit = 0.0;
@@ -212,12 +216,12 @@ int main(int argc, char** argv) {
     const unsigned cells = argc > 1 ? (unsigned)atoi(argv[1]) : 55;
     const unsigned steps = argc > 2 ? (unsigned)atoi(argv[2]) : 20;
     const char* only = argc > 3 && strcmp(argv[3], "all") != 0 ? argv[3] : NULL;
-    const int shuffled = argc > 4 && strcmp(argv[4], "shuffled") == 0;
+    const int shuffled = argc > 4 ? (strcmp(argv[4], "shuffled") == 0 ? 1 : strcmp(argv[4], "quadratic") == 0 ? 2 : 0) : 0;
     const int repeats = argc > 5 ? atoi(argv[5]) : 1;
     if (cells < 1 || steps < 1 || repeats < 1 ||
         (argc > 4 && !shuffled && strcmp(argv[4], "ordered") != 0)) {
         fprintf(stderr,
-                "usage: %s [cells per edge >= 1] [steps >= 1] [model|all] [ordered|shuffled] "
+                "usage: %s [cells per edge >= 1] [steps >= 1] [model|all] [ordered|shuffled|quadratic] "
                 "[repeats >= 1]\n",
                 argv[0]);
         return 2;
@@ -231,10 +235,10 @@ int main(int argc, char** argv) {
                   {LFEM_MODEL_COROTATIONAL, "corotational"}};
     const unsigned thread_counts[] = {1, 2};
     const unsigned thread_options = sizeof thread_counts / sizeof thread_counts[0];
-    printf("lfem %s, cube of %u^3 cells (%u tets), %u timed sub-steps per run, mesh given %s, "
+    printf("lfem %s, cube of %u^3 cells (%u %s tets), %u timed sub-steps per run, mesh given %s, "
            "fastest of %d run(s) per configuration\n",
-           lfem_version_string(), cells, 6 * cells * cells * cells, steps,
-           shuffled ? "in a random node and tet order" : "as the box builder numbers it", repeats);
+           lfem_version_string(), cells, 6 * cells * cells * cells, shuffled == 2 ? "10-node" : "4-node", steps,
+           shuffled == 1 ? "in a random node and tet order" : "as the box builder numbers it", repeats);
     printf("%-13s %7s %14s %9s %12s %10s %13s\n", "model", "threads", "Mtet-steps/s", "speed-up",
            "per CPU-s", "bytes/tet", "contact/free");
     for (unsigned m = 0; m < sizeof models / sizeof models[0]; ++m) {

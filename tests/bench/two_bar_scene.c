@@ -36,18 +36,7 @@ two_bar_exact two_bar_exact_solution(void) {
 static int multiplier_force(lfem_world* world, lfem_body bar2, lfem_contact** contacts,
                             uint32_t* capacity, double* force) {
     uint32_t count = 0;
-    lfem_status s = lfem_world_query_contacts(world, *contacts, *capacity, &count);
-    if (s == LFEM_BUFFER_TOO_SMALL) {
-        lfem_contact* grown = (lfem_contact*)realloc(*contacts, sizeof(lfem_contact) * 2 * count);
-        if (!grown) return -1;
-        *contacts = grown;
-        *capacity = 2 * count;
-        s = lfem_world_query_contacts(world, *contacts, *capacity, &count);
-    }
-    if (s != LFEM_OK) {
-        fprintf(stderr, "lfem_world_query_contacts failed: %s\n", lfem_last_error());
-        return -1;
-    }
+    if (bench_contacts(world, contacts, capacity, &count) != 0) return -1;
     double f = 0;
     for (uint32_t c = 0; c < count; ++c)
         f += ((*contacts)[c].body_a.index == bar2.index ? 1.0 : -1.0) * (*contacts)[c].force[0];
@@ -86,17 +75,16 @@ int two_bar_run(const two_bar_config* config, two_bar_result* r) {
         lfem_mesh* mesh = NULL;
         BENCH_TRY(lfem_mesh_create_box(size, config->cells, &mesh));
         lfem_status s = lfem_mesh_translate(mesh, offset);
+        if (s == LFEM_OK && config->quadratic) s = lfem_mesh_make_quadratic(mesh);
         def.linear_velocity[0] = b == 0 ? kSpeed : -kSpeed;
         if (config->penalty_factor != 0) {
             def.category_bits = 1u << b;
             def.mask_bits = ~(3u); /* neither bar */
         }
         if (s == LFEM_OK) s = lfem_body_create(world, &def, &bars[b]);
-        if (s == LFEM_OK)
-            s = lfem_body_add_mesh(world, bars[b], lfem_mesh_get_positions(mesh),
-                                   lfem_mesh_get_node_count(mesh), lfem_mesh_get_tets(mesh),
-                                   lfem_mesh_get_tet_count(mesh));
+        if (s == LFEM_OK) s = bench_add_mesh(world, bars[b], mesh);
         r->tets += lfem_mesh_get_tet_count(mesh);
+        r->nodes += lfem_mesh_get_node_count(mesh);
         lfem_mesh_destroy(mesh);
         BENCH_TRY(s);
     }

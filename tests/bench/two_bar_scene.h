@@ -35,6 +35,7 @@ typedef struct two_bar_config {
                                < 0: no contact at all (the bars pass through each other): the
                                bars' own critical step, for comparison */
     double end_time;        /* s, 200 us: contact is over by ~124 us */
+    int quadratic;          /* 1: 10-node tets (lfem_mesh_make_quadratic), 0: 4-node tets */
 } two_bar_config;
 
 typedef struct two_bar_result {
@@ -43,6 +44,7 @@ typedef struct two_bar_result {
     double elastic_step;    /* s, the elastic stable limit of the bars */
     uint64_t steps;
     uint32_t tets;          /* both bars */
+    uint32_t nodes;         /* both bars */
     double impulse;         /* N s, contact force on bar 2 summed over the steps */
     double plateau;         /* N, mean force from 40 to 110 us */
     double peak_force;      /* N, largest force of one step */

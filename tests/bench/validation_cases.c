@@ -11,18 +11,21 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* A box mesh of the given size and cells, moved by offset, added to a new body. */
+/* A box mesh of the given size and cells (10-node tets when quadratic), moved by offset, added
+ * to a new body; its tets and nodes are added to *r (nullable). */
 static int add_box_body(lfem_world* world, const lfem_body_def* def, const double size[3],
-                        const uint32_t cells[3], const double offset[3], lfem_body* body,
-                        uint32_t* tets) {
+                        const uint32_t cells[3], const double offset[3], int quadratic, lfem_body* body,
+                        case_result* r) {
     lfem_mesh* mesh = NULL;
     BENCH_TRY(lfem_mesh_create_box(size, cells, &mesh));
     BENCH_TRY(lfem_mesh_translate(mesh, offset));
+    if (quadratic) BENCH_TRY(lfem_mesh_make_quadratic(mesh));
     BENCH_TRY(lfem_body_create(world, def, body));
-    BENCH_TRY(lfem_body_add_mesh(world, *body, lfem_mesh_get_positions(mesh),
-                                 lfem_mesh_get_node_count(mesh), lfem_mesh_get_tets(mesh),
-                                 lfem_mesh_get_tet_count(mesh)));
-    if (tets) *tets += lfem_mesh_get_tet_count(mesh);
+    BENCH_TRY(bench_add_mesh(world, *body, mesh));
+    if (r) {
+        r->tets += lfem_mesh_get_tet_count(mesh);
+        r->nodes += lfem_mesh_get_node_count(mesh);
+    }
     lfem_mesh_destroy(mesh);
     return 0;
 fail:
@@ -30,14 +33,16 @@ fail:
     return -1;
 }
 
-/* Sum of signed tet volumes (m^3) of positions x. */
-static double mesh_volume(const double* x, const uint32_t* tets, uint32_t tet_count) {
+/* Sum of signed tet volumes (m^3) of positions x; of the corners' tets of 10-node tets
+ * (nodes_per_tet 10). */
+static double mesh_volume(const double* x, const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet) {
     double v = 0;
     for (uint32_t e = 0; e < tet_count; ++e) {
-        const double* a = &x[3 * tets[4 * e]];
-        const double* b = &x[3 * tets[4 * e + 1]];
-        const double* c = &x[3 * tets[4 * e + 2]];
-        const double* d = &x[3 * tets[4 * e + 3]];
+        const uint32_t* t = tets + (size_t)nodes_per_tet * e;
+        const double* a = &x[3 * t[0]];
+        const double* b = &x[3 * t[1]];
+        const double* c = &x[3 * t[2]];
+        const double* d = &x[3 * t[3]];
         const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
         const double p[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         const double q[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
@@ -83,17 +88,19 @@ int spin_run(const case_config* c, case_result* r) {
     const double size[3] = {0.2, 0.1, 0.05}, offset[3] = {-0.1, -0.05, -0.025};
     BENCH_TRY(lfem_mesh_create_box(size, c->cells, &mesh));
     BENCH_TRY(lfem_mesh_translate(mesh, offset));
+    if (c->quadratic) BENCH_TRY(lfem_mesh_make_quadratic(mesh));
     lfem_body body;
     BENCH_TRY(lfem_body_create(world, &def, &body));
     const uint32_t nodes = lfem_mesh_get_node_count(mesh), tets = lfem_mesh_get_tet_count(mesh);
-    BENCH_TRY(lfem_body_add_mesh(world, body, lfem_mesh_get_positions(mesh), nodes,
-                                 lfem_mesh_get_tets(mesh), tets));
+    const uint32_t per_tet = lfem_mesh_get_nodes_per_tet(mesh);
+    BENCH_TRY(bench_add_mesh(world, body, mesh));
     r->tets = tets;
+    r->nodes = nodes;
     x = (double*)malloc(sizeof(double) * 3 * nodes);
     if (!x) goto fail;
     lfem_world_stats s0, s;
     BENCH_TRY(lfem_world_get_stats(world, &s0));
-    const double v0 = mesh_volume(lfem_mesh_get_positions(mesh), lfem_mesh_get_tets(mesh), tets);
+    const double v0 = mesh_volume(lfem_mesh_get_positions(mesh), lfem_mesh_get_tets(mesh), tets, per_tet);
     /* Calls of 1/100 turn: their boundaries do not fall on sub-step multiples. */
     const double duration = c->duration > 0 ? c->duration : 1.0;
     const int calls = (int)ceil(duration / 0.01 - 1e-9);
@@ -107,7 +114,7 @@ int spin_run(const case_config* c, case_result* r) {
     }
     r->error = sqrt(dl / l0);
     r->second_error = s.kinetic_energy / s0.kinetic_energy - 1;
-    r->third_error = mesh_volume(x, lfem_mesh_get_tets(mesh), tets) / v0 - 1;
+    r->third_error = mesh_volume(x, lfem_mesh_get_tets(mesh), tets, per_tet) / v0 - 1;
     if (finish(world, start_wall, r) != 0) goto fail;
     free(x);
     lfem_mesh_destroy(mesh);
@@ -139,7 +146,7 @@ int cantilever_run(const case_config* c, case_result* r) {
     def.damping = 2.0 * omega1; /* critical for the first bending mode: settles fastest */
     const double size[3] = {L, b, b}, offset[3] = {0, -b / 2, -b / 2};
     lfem_body beam;
-    if (add_box_body(world, &def, size, c->cells, offset, &beam, &r->tets) != 0) goto fail;
+    if (add_box_body(world, &def, size, c->cells, offset, c->quadratic, &beam, r) != 0) goto fail;
     uint32_t nodes = 0, n_clamped = 0, n_tip = 0;
     BENCH_TRY(lfem_body_get_node_count(world, beam, &nodes));
     clamped = (uint32_t*)malloc(sizeof(uint32_t) * nodes);
@@ -190,14 +197,14 @@ int incline_run(const case_config* c, case_result* r) {
     const double floor_size[3] = {2.0, 0.5, 0.1}, floor_offset[3] = {-0.5, -0.25, -0.1};
     const uint32_t floor_cells[3] = {8, 2, 1};
     lfem_body floor_body, block;
-    if (add_box_body(world, &floor_def, floor_size, floor_cells, floor_offset, &floor_body, NULL) != 0)
+    if (add_box_body(world, &floor_def, floor_size, floor_cells, floor_offset, 0, &floor_body, NULL) != 0)
         goto fail;
     lfem_body_def def = lfem_body_def_default();
     def.model = c->model;
     def.young_modulus = 1e6;
     def.friction = mu;
     const double size[3] = {0.1, 0.1, 0.1}, offset[3] = {-0.05, -0.05, 0.0};
-    if (add_box_body(world, &def, size, c->cells, offset, &block, &r->tets) != 0) goto fail;
+    if (add_box_body(world, &def, size, c->cells, offset, c->quadratic, &block, r) != 0) goto fail;
     double mass = 0, p0[3], p1[3];
     lfem_world_stats s0, s1;
     BENCH_TRY(lfem_body_get_mass(world, block, &mass));

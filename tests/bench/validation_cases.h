@@ -14,6 +14,7 @@ typedef struct case_config {
     uint32_t cells[3];  /* hexahedra of the body along x, y, z */
     double safety;      /* step as a fraction of the elastic stable limit (step_safety) */
     double duration;    /* s of simulated time; 0 = the case's own (see each function) */
+    int quadratic;      /* 1: the body of 10-node tets (lfem_mesh_make_quadratic) */
 } case_config;
 
 typedef struct case_result {
@@ -21,6 +22,7 @@ typedef struct case_result {
     double second_error; /* spin: kinetic energy change; incline: penetration (m); else 0 */
     double third_error;  /* spin: relative volume change, else 0 */
     uint32_t tets;
+    uint32_t nodes;
     uint64_t steps;
     double step;         /* s */
     double wall;         /* s */

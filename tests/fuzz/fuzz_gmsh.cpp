@@ -1,6 +1,7 @@
 // libFuzzer target: the Gmsh reader (lfem_mesh_load_gmsh) on arbitrary bytes. A file is either
-// read into a mesh that passes lfem's checks (positive-volume tets, indices in range) or
-// refused with LFEM_IO_ERROR / LFEM_INVALID_MESH and a message; nothing else may happen.
+// read into a mesh that passes lfem's checks (positive-volume tets of 4 or 10 nodes, indices
+// in range) or refused with LFEM_IO_ERROR / LFEM_INVALID_MESH and a message; nothing else may
+// happen.
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -40,14 +41,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return 0;
     }
     const uint32_t n = lfem_mesh_get_node_count(mesh), t = lfem_mesh_get_tet_count(mesh);
+    const uint32_t per_tet = lfem_mesh_get_nodes_per_tet(mesh);
+    if (per_tet != 4 && per_tet != 10) broken("a loaded mesh has tets of neither 4 nor 10 nodes");
     const double* x = lfem_mesh_get_positions(mesh);
     const uint32_t* tets = lfem_mesh_get_tets(mesh);
     if (n == 0 || t == 0) broken("a loaded mesh is empty");
     for (uint32_t i = 0; i < 3 * n; ++i)
         if (!std::isfinite(x[i])) broken("a loaded position is not finite");
     for (uint32_t e = 0; e < t; ++e) {
-        const uint32_t* v = &tets[4 * e];
-        for (int a = 0; a < 4; ++a)
+        const uint32_t* v = &tets[std::size_t(per_tet) * e];
+        for (uint32_t a = 0; a < per_tet; ++a)
             if (v[a] >= n) broken("a loaded tet index is out of range");
         double d[3][3];
         for (int a = 0; a < 3; ++a)
@@ -64,7 +67,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     lfem_body_def bd = lfem_body_def_default();
     lfem_body body{};
     if (lfem_body_create(world, &bd, &body) != LFEM_OK) broken("body");
-    const lfem_status added = lfem_body_add_mesh(world, body, x, n, tets, t);
+    const lfem_status added =
+        (per_tet == 10 ? lfem_body_add_quadratic_mesh : lfem_body_add_mesh)(world, body, x, n, tets, t);
     if (added != LFEM_OK && added != LFEM_INVALID_MESH) broken(lfem_last_error());
     lfem_world_destroy(world);
     lfem_mesh_destroy(mesh);

@@ -45,7 +45,7 @@ class Program:
             self.number(-5, 5, 0)
         self.byte(0)  # mask: all
 
-    def box(self, body_index, size, cells, offset):
+    def box(self, body_index, size, cells, offset):  # cells (1, 1, 1): 10-node tets
         self.below(1)
         for s in size:
             self.number(0.01, 1, s)

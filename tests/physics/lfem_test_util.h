@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ struct Mesh {
     ~Mesh() { lfem_mesh_destroy(m); }
     uint32_t nodes() const { return lfem_mesh_get_node_count(m); }
     uint32_t tets() const { return lfem_mesh_get_tet_count(m); }
+    uint32_t nodes_per_tet() const { return lfem_mesh_get_nodes_per_tet(m); }
 };
 
 inline void make_box_mesh(Mesh& mesh, double sx, double sy, double sz, uint32_t nx, uint32_t ny,
@@ -41,6 +43,13 @@ inline void make_box_mesh(Mesh& mesh, double sx, double sy, double sz, uint32_t 
     ASSERT_EQ(lfem_mesh_translate(mesh.m, offset), LFEM_OK) << lfem_last_error();
 }
 
+// A box of 10-node tets (lfem_mesh_make_quadratic).
+inline void make_quadratic_box_mesh(Mesh& mesh, double sx, double sy, double sz, uint32_t nx, uint32_t ny,
+                                    uint32_t nz, double ox = 0, double oy = 0, double oz = 0) {
+    make_box_mesh(mesh, sx, sy, sz, nx, ny, nz, ox, oy, oz);
+    ASSERT_EQ(lfem_mesh_make_quadratic(mesh.m), LFEM_OK) << lfem_last_error();
+}
+
 inline const char* model_name(lfem_model m) {
     switch (m) {
         case LFEM_MODEL_LINEAR: return "linear";
@@ -50,11 +59,12 @@ inline const char* model_name(lfem_model m) {
     }
 }
 
+// A body with the mesh: lfem_body_add_mesh, or lfem_body_add_quadratic_mesh for 10-node tets.
 inline lfem_body add_body(lfem_world* w, const lfem_body_def& def, const Mesh& mesh) {
     lfem_body b{};
     EXPECT_EQ(lfem_body_create(w, &def, &b), LFEM_OK) << lfem_last_error();
-    EXPECT_EQ(lfem_body_add_mesh(w, b, lfem_mesh_get_positions(mesh.m), mesh.nodes(),
-                                 lfem_mesh_get_tets(mesh.m), mesh.tets()),
+    const auto add = mesh.nodes_per_tet() == 10 ? lfem_body_add_quadratic_mesh : lfem_body_add_mesh;
+    EXPECT_EQ(add(w, b, lfem_mesh_get_positions(mesh.m), mesh.nodes(), lfem_mesh_get_tets(mesh.m), mesh.tets()),
               LFEM_OK)
         << lfem_last_error();
     return b;
@@ -98,6 +108,28 @@ inline std::vector<uint32_t> nodes_in_box(lfem_world* w, lfem_body b, const doub
     std::vector<uint32_t> nodes(count);
     EXPECT_EQ(lfem_body_find_nodes_in_box(w, b, lo, hi, nodes.data(), count, &count), LFEM_OK);
     return nodes;
+}
+
+// Sum of the contact forces on body `on` (N): nodes of `on` get the force, triangles of `on`
+// get its opposite.
+inline void contact_force_on(lfem_world* w, lfem_body on, double out[3]) {
+    uint32_t count = 0;
+    lfem_world_query_contacts(w, nullptr, 0, &count);
+    std::vector<lfem_contact> c(count);
+    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
+    out[0] = out[1] = out[2] = 0;
+    for (const lfem_contact& k : c) {
+        const double sign = k.body_a.index == on.index ? 1.0 : (k.body_b.index == on.index ? -1.0 : 0.0);
+        for (int d = 0; d < 3; ++d) out[d] += sign * k.force[d];
+    }
+}
+
+// Root mean square of a body's node speeds (m/s).
+inline double rms_velocity(lfem_world* w, lfem_body b) {
+    const std::vector<double> v = velocities(w, b);
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s / (v.size() / 3));
 }
 
 // Every byte a user can read back about the given bodies and the world.
@@ -151,14 +183,17 @@ inline std::vector<unsigned char> fingerprint(lfem_world* w, const std::vector<l
     return out;
 }
 
-// Sum of signed tet volumes of a body's current configuration (m^3).
-inline double volume(const std::vector<double>& x, const uint32_t* tets, uint32_t tet_count) {
+// Sum of signed tet volumes of a body's current configuration (m^3); the corners' tets of
+// 10-node tets (nodes_per_tet 10).
+inline double volume(const std::vector<double>& x, const uint32_t* tets, uint32_t tet_count,
+                     uint32_t nodes_per_tet = 4) {
     double v = 0;
     for (uint32_t e = 0; e < tet_count; ++e) {
-        const double* a = &x[3 * tets[4 * e]];
-        const double* b = &x[3 * tets[4 * e + 1]];
-        const double* c = &x[3 * tets[4 * e + 2]];
-        const double* d = &x[3 * tets[4 * e + 3]];
+        const uint32_t* t = tets + std::size_t(nodes_per_tet) * e;
+        const double* a = &x[3 * t[0]];
+        const double* b = &x[3 * t[1]];
+        const double* c = &x[3 * t[2]];
+        const double* d = &x[3 * t[3]];
         const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
         const double p[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         const double q[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};

@@ -2,12 +2,14 @@
 // constant of the motion. Central differences conserve a nearby "shadow" energy, so the
 // measured total only oscillates, by O((omega h)^2) of the energy in the fastest modes.
 #include <cmath>
+#include <tuple>
 
 #include "physics/lfem_test_util.h"
 
 using namespace lfem_test;
 
-class FreeVibration : public ::testing::TestWithParam<lfem_model> {};
+// (model, 10-node tets)
+class FreeVibration : public ::testing::TestWithParam<std::tuple<lfem_model, bool>> {};
 
 TEST_P(FreeVibration, TotalEnergyKeptOver1000Steps) {
     lfem_world_def wd = lfem_world_def_default();
@@ -17,9 +19,14 @@ TEST_P(FreeVibration, TotalEnergyKeptOver1000Steps) {
     // A slender bar (0.6 m, 18 cells along): its torsion and axial modes have omega h ~ 0.08 at
     // the automatic step, so the scheme's oscillation of the measured energy, about
     // (omega h)^2 / 4, is ~0.2 %. (A bar half as long doubled omega h and reached 0.8 %.)
-    make_box_mesh(mesh, 0.1, 0.1, 0.6, 3, 3, 18, -0.05, -0.05, 0.0);
+    const lfem_model model = std::get<0>(GetParam());
+    const bool quadratic = std::get<1>(GetParam());
+    if (quadratic)  // as many nodes along: a node every 1/36 of the bar
+        make_quadratic_box_mesh(mesh, 0.1, 0.1, 0.6, 1, 1, 18, -0.05, -0.05, 0.0);
+    else
+        make_box_mesh(mesh, 0.1, 0.1, 0.6, 3, 3, 18, -0.05, -0.05, 0.0);
     lfem_body_def def = lfem_body_def_default();
-    def.model = GetParam();
+    def.model = model;
     def.young_modulus = 1e6;
     def.poisson_ratio = 0.3;
     const lfem_body b = add_body(w, def, mesh);
@@ -45,14 +52,15 @@ TEST_P(FreeVibration, TotalEnergyKeptOver1000Steps) {
         worst = std::fmax(worst, std::fabs(s.kinetic_energy + s.strain_energy - E0) / E0);
         strain_peak = std::fmax(strain_peak, s.strain_energy);
     }
-    std::printf("free vibration (model %d): largest relative energy change %.3g over 1000 steps "
+    std::printf("free vibration (model %d, %s tets): largest relative energy change %.3g over 1000 steps "
                 "(strain energy reached %.0f %% of the total)\n",
-                int(GetParam()), worst, 100 * strain_peak / E0);
+                int(model), quadratic ? "10-node" : "4-node", worst, 100 * strain_peak / E0);
     // The motion really exchanges energy between kinetic and strain forms.
     EXPECT_GT(strain_peak, 0.2 * E0);
     EXPECT_LT(worst, 0.005);  // the 0.5 %
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, FreeVibration,
-                         ::testing::Values(LFEM_MODEL_PAPER, LFEM_MODEL_COROTATIONAL,
-                                           LFEM_MODEL_NEO_HOOKEAN, LFEM_MODEL_LINEAR));
+                         ::testing::Combine(::testing::Values(LFEM_MODEL_PAPER, LFEM_MODEL_COROTATIONAL,
+                                                              LFEM_MODEL_NEO_HOOKEAN, LFEM_MODEL_LINEAR),
+                                            ::testing::Bool()));

@@ -79,6 +79,7 @@ struct Drop {
     int calls = 90;
     double dt = 1.0 / 60;
     uint32_t threads = 1;
+    bool quadratic = false;  // 10-node tets (lfem_mesh_make_quadratic)
 };
 
 struct Landing {
@@ -104,7 +105,11 @@ Landing drop(const Drop& d) {
     World w(wd);
     Mesh floor_mesh, cube;
     add_floor(w, d.floor, floor_mesh);
-    make_box_mesh(cube, d.size, d.size, d.size, d.cells, d.cells, d.cells, -d.size / 2, -d.size / 2, d.gap);
+    if (d.quadratic)
+        make_quadratic_box_mesh(cube, d.size, d.size, d.size, d.cells, d.cells, d.cells, -d.size / 2, -d.size / 2,
+                                d.gap);
+    else
+        make_box_mesh(cube, d.size, d.size, d.size, d.cells, d.cells, d.cells, -d.size / 2, -d.size / 2, d.gap);
     lfem_body_def bd = lfem_body_def_default();
     bd.model = d.model;
     bd.young_modulus = d.E;
@@ -134,7 +139,8 @@ Landing drop(const Drop& d) {
 
 std::string label_of(const Drop& d) {
     char s[128];
-    std::snprintf(s, sizeof s, "%s E = %g Pa on the %s", model_name(d.model), d.E, floor_name(d.floor));
+    std::snprintf(s, sizeof s, "%s%s E = %g Pa on the %s", d.quadratic ? "10-node " : "", model_name(d.model), d.E,
+                  floor_name(d.floor));
     return s;
 }
 
@@ -233,4 +239,25 @@ TEST(ExtremeSoft, SoftLandingIsBitwiseTheSameOnOneAndTwoThreads) {
         EXPECT_EQ(0, std::memcmp(one.x_end.data(), two.x_end.data(), one.x_end.size() * sizeof(double)))
             << model_name(m);
     }
+}
+
+// The same with 10-node tets (3^3 cells, about the nodes of the 5^3 linear cube): every node,
+// mid-edge ones included, is a contact slave; the barrier acts at every quadrature point.
+// Jelly (1e3 Pa) on every floor and the softest block (100 Pa, tets crushed below J = 0.2 and
+// through zero at quadrature points on the way) on the box mesh, every model.
+TEST(ExtremeSoft, TenNodeCubesLandOnEveryFloorWithEveryModel) {
+    std::printf("10 cm cube of 10-node tets dropped at 1 m/s:\n");
+    for (double E : {1e3, 100.0})
+        for (lfem_model m : kModels)
+            for (Floor f : {Floor::box, Floor::triangles, Floor::plane}) {
+                if (E < 1e3 && f != Floor::box) continue;
+                Drop d;
+                d.model = m, d.floor = f, d.E = E, d.cells = 3, d.quadratic = true;
+                const Landing o = drop(d);
+                const std::string label = label_of(d);
+                print(label, o);
+                expect_kept_out(d, o, label);
+                EXPECT_EQ(o.inverted_end, 0u) << label;
+                EXPECT_EQ(o.warnings[LFEM_WARNING_STAYS_INVERTED].count, 0u) << label;
+            }
 }

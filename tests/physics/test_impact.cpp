@@ -5,7 +5,9 @@
 
 using namespace lfem_test;
 
-TEST(Impact, FastSmallBodyDoesNotPassThroughAThinPlate) {
+// quadratic: the plate and the cube of 10-node tets (the cube's mid-edge nodes are slaves, the
+// plate's faces 4 flat triangles each), the cube on 2^3 cells.
+void fast_cube_against_thin_plate(bool quadratic) {
     lfem_world_def wd = lfem_world_def_default();
     wd.gravity[2] = 0.0;
     World w(wd);
@@ -14,11 +16,17 @@ TEST(Impact, FastSmallBodyDoesNotPassThroughAThinPlate) {
     // thickness, so only the swept path (x^n -> x*) can catch it.
     Mesh plate_mesh, cube_mesh;
     make_box_mesh(plate_mesh, 0.2, 0.2, 1e-4, 8, 8, 1, -0.1, -0.1, -1e-4);
+    if (quadratic) {
+        ASSERT_EQ(lfem_mesh_make_quadratic(plate_mesh.m), LFEM_OK);
+    }
     lfem_body_def p = lfem_body_def_default();
     p.type = LFEM_BODY_STATIC;
     p.friction = 0.0;
     add_body(w, p, plate_mesh);
-    make_box_mesh(cube_mesh, 0.02, 0.02, 0.02, 3, 3, 3, -0.01, -0.01, 0.005);
+    if (quadratic)
+        make_quadratic_box_mesh(cube_mesh, 0.02, 0.02, 0.02, 2, 2, 2, -0.01, -0.01, 0.005);
+    else
+        make_box_mesh(cube_mesh, 0.02, 0.02, 0.02, 3, 3, 3, -0.01, -0.01, 0.005);
     lfem_body_def c = lfem_body_def_default();
     c.model = LFEM_MODEL_NEO_HOOKEAN;  // ~10 % strain on impact: beyond small strain
     c.young_modulus = 1e9;
@@ -28,7 +36,7 @@ TEST(Impact, FastSmallBodyDoesNotPassThroughAThinPlate) {
     const double h = 0.9 * stable_step(w);
     const double per_step = 100.0 * h;
     double lowest = 1.0, penetration = 0.0;
-    for (int i = 0; i < 400; ++i) {
+    for (int i = 0; i < (quadratic ? 600 : 400); ++i) {  // the 10-node cube's steps are shorter
         ASSERT_EQ(lfem_world_step(w, h), LFEM_OK) << lfem_last_error();
         const std::vector<double> x = positions(w, cube);
         for (size_t k = 2; k < x.size(); k += 3) lowest = std::fmin(lowest, x[k]);
@@ -36,13 +44,17 @@ TEST(Impact, FastSmallBodyDoesNotPassThroughAThinPlate) {
     }
     double P[3];
     lfem_body_get_momentum(w, cube, P, nullptr);
-    std::printf("100 m/s cube vs 0.1 mm plate: %.2f mm per step, lowest node z = %.3g m, "
+    std::printf("100 m/s cube vs 0.1 mm plate (%s tets): %.2f mm per step, lowest node z = %.3g m, "
                 "penetration <= %.2e m, momentum after %.4f kg m/s (upward)\n",
-                per_step * 1e3, lowest, penetration, P[2]);
+                quadratic ? "10-node" : "4-node", per_step * 1e3, lowest, penetration, P[2]);
     EXPECT_GT(per_step, 1e-4);      // the test is about tunnelling: steps longer than the plate
     EXPECT_GT(lowest, -1e-6);       // never below the plate's top face (z = 0)
     EXPECT_GT(P[2], 0.0);           // it bounced
 }
+
+TEST(Impact, FastSmallBodyDoesNotPassThroughAThinPlate) { fast_cube_against_thin_plate(false); }
+
+TEST(Impact, FastSmallQuadraticBodyDoesNotPassThroughAThinQuadraticPlate) { fast_cube_against_thin_plate(true); }
 
 TEST(Impact, ClosedFrictionlessUndampedCollisionNeverCreatesEnergy) {
     lfem_world_def wd = lfem_world_def_default();

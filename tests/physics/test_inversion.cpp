@@ -5,7 +5,10 @@
 //
 // The scene: one tet of 10 cm, three nodes fixed, the fourth driven through the opposite face
 // at 0.5 m/s (prescribed velocity) and then held there. Its volume ratio is then exactly
-// J = z / 0.1 (the tet's height over its rest height), which the tests compare against.
+// J = z / 0.1 (the tet's height over its rest height), which the tests compare against. The
+// same with one 10-node tet: its mid-edge nodes on the base fixed, those of the three edges to
+// the apex driven at half its speed, so that every one stays at the middle of its edge and the
+// motion is affine: J = z / 0.1 at every quadrature point.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -20,15 +23,27 @@ const double kTet[12] = {0, 0, 0, 0.1, 0, 0, 0, 0.1, 0, 0, 0, 0.1};
 const uint32_t kTetNodes[4] = {0, 1, 2, 3};
 const uint32_t kBase[3] = {0, 1, 2}, kApex[1] = {3};
 
-lfem_body add_tet(lfem_world* w, lfem_model model) {
+// The 10-node tet: corners, then the mid-edge nodes of edges 01, 12, 02 (the base) and 03, 13,
+// 23 (to the apex), in the order of lfem_body_add_quadratic_mesh.
+const double kTet10[30] = {0,    0,    0, 0.1,  0, 0, 0,    0.1,  0, 0, 0, 0.1, 0.05, 0, 0,
+                           0.05, 0.05, 0, 0,    0.05, 0, 0, 0, 0.05, 0.05, 0, 0.05, 0, 0.05, 0.05};
+const uint32_t kTet10Nodes[10] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+const uint32_t kBase10[6] = {0, 1, 2, 4, 5, 6}, kApexEdges[3] = {7, 8, 9};
+
+lfem_body add_tet(lfem_world* w, lfem_model model, bool quadratic = false) {
     lfem_body_def d = lfem_body_def_default();
     d.model = model;
     d.young_modulus = 1e4;
     d.damping = 20;
     lfem_body b{};
     EXPECT_EQ(lfem_body_create(w, &d, &b), LFEM_OK);
-    EXPECT_EQ(lfem_body_add_mesh(w, b, kTet, 4, kTetNodes, 1), LFEM_OK) << lfem_last_error();
-    EXPECT_EQ(lfem_body_fix_nodes(w, b, kBase, 3), LFEM_OK);
+    if (quadratic) {
+        EXPECT_EQ(lfem_body_add_quadratic_mesh(w, b, kTet10, 10, kTet10Nodes, 1), LFEM_OK) << lfem_last_error();
+        EXPECT_EQ(lfem_body_fix_nodes(w, b, kBase10, 6), LFEM_OK);
+    } else {
+        EXPECT_EQ(lfem_body_add_mesh(w, b, kTet, 4, kTetNodes, 1), LFEM_OK) << lfem_last_error();
+        EXPECT_EQ(lfem_body_fix_nodes(w, b, kBase, 3), LFEM_OK);
+    }
     return b;
 }
 
@@ -46,33 +61,38 @@ lfem_warning warning(lfem_world* w, lfem_warning_kind kind) {
 
 // Drives the apex from z = 0.1 to z = -0.05 (0.3 s at 0.5 m/s) and holds it there; returns
 // the largest sub-step taken meanwhile.
-double crush_and_hold(lfem_world* w, lfem_body b) {
-    const double down[3] = {0, 0, -0.5};
+double crush_and_hold(lfem_world* w, lfem_body b, bool quadratic = false) {
+    const double down[3] = {0, 0, -0.5}, half[3] = {0, 0, -0.25};
     EXPECT_EQ(lfem_body_prescribe_node_velocity(w, b, kApex, 1, down), LFEM_OK);
+    if (quadratic) {
+        EXPECT_EQ(lfem_body_prescribe_node_velocity(w, b, kApexEdges, 3, half), LFEM_OK);
+    }
     double largest = 0.0;
     for (int i = 0; i < 30; ++i) {
         EXPECT_EQ(lfem_world_step(w, 0.01), LFEM_OK) << lfem_last_error();
         largest = std::fmax(largest, stats(w).step_size);
     }
     EXPECT_EQ(lfem_body_fix_nodes(w, b, kApex, 1), LFEM_OK);
+    if (quadratic) {
+        EXPECT_EQ(lfem_body_fix_nodes(w, b, kApexEdges, 3), LFEM_OK);
+    }
     return largest;
 }
 
 const lfem_model kModels[] = {LFEM_MODEL_PAPER, LFEM_MODEL_COROTATIONAL, LFEM_MODEL_NEO_HOOKEAN, LFEM_MODEL_LINEAR};
 
-}  // namespace
-
-TEST(Inversion, AHeldInvertedTetIsReportedAndStaysReportedOncePerSpell) {
+void held_inverted_tet_is_reported_once_per_spell(bool quadratic) {
     for (lfem_model model : kModels) {
         World w(no_gravity());
-        const lfem_body b = add_tet(w, model);
+        const lfem_body b = add_tet(w, model, quadratic);
         uint32_t inverted = 9;
         double min_J = 0, inverted_for = -1;
         ASSERT_EQ(lfem_body_get_inversion(w, b, &inverted, &min_J, &inverted_for), LFEM_OK);
         EXPECT_EQ(inverted, 0u);
-        EXPECT_EQ(min_J, 1.0);  // at rest: exactly the reference
+        // At rest: exactly the reference (a 10-node tet's F_q = Ds_q J_q^-1 to round-off).
+        EXPECT_NEAR(min_J, 1.0, quadratic ? 1e-14 : 0.0);
         EXPECT_EQ(inverted_for, 0.0);
-        const double h = crush_and_hold(w, b);
+        const double h = crush_and_hold(w, b, quadratic);
         const double z = positions(w, b)[11];
         EXPECT_NEAR(z, -0.05, 1e-12);  // prescribed: 0.3 s at 0.5 m/s
         // Held for 1 s more: inverted all along, J = z / 0.1 exactly (affine tet).
@@ -103,6 +123,9 @@ TEST(Inversion, AHeldInvertedTetIsReportedAndStaysReportedOncePerSpell) {
         // Let go: the material (Hooke's law on the strain, the barrier below J = 0.2) pushes
         // the apex back through the base; damped, the tet comes to rest at its shape.
         ASSERT_EQ(lfem_body_release_nodes(w, b, kApex, 1), LFEM_OK);
+        if (quadratic) {
+            ASSERT_EQ(lfem_body_release_nodes(w, b, kApexEdges, 3), LFEM_OK);
+        }
         for (int i = 0; i < 300; ++i) ASSERT_EQ(lfem_world_step(w, 0.01), LFEM_OK);
         ASSERT_EQ(lfem_body_get_inversion(w, b, &inverted, &min_J, &inverted_for), LFEM_OK);
         EXPECT_EQ(inverted, 0u) << model;
@@ -112,6 +135,16 @@ TEST(Inversion, AHeldInvertedTetIsReportedAndStaysReportedOncePerSpell) {
         EXPECT_EQ(stats(w).inverted_tets, 0u);
     }
 }
+
+}  // namespace
+
+TEST(Inversion, AHeldInvertedTetIsReportedAndStaysReportedOncePerSpell) {
+    held_inverted_tet_is_reported_once_per_spell(false);
+}
+
+// A 10-node tet counts as inverted when J <= 0 at one of its quadrature points, its min J the
+// smallest at them; the barrier acts at every point, and pushes it back as it does a 4-node tet.
+TEST(Inversion, AHeldInvertedTenNodeTetIsReportedAndPushedBack) { held_inverted_tet_is_reported_once_per_spell(true); }
 
 TEST(Inversion, WarningsSurviveACheckpointAndAreClearedOnRequest) {
     const std::string path = ::testing::TempDir() + "lfem_inversion.ckpt";

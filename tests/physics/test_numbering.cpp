@@ -23,12 +23,16 @@ struct Numbered {
     std::vector<double> x;
     std::vector<uint32_t> tets;
     std::vector<uint32_t> new_of_node, new_of_tet;  // identity for the builder's numbering
+    uint32_t nodes_per_tet = 4;                      // 10: the corners, then edges (0,1), (1,2),
+                                                     // (0,2), (0,3), (1,3), (2,3) (lfem.h)
+    uint32_t tet_count() const { return uint32_t(tets.size() / nodes_per_tet); }
 };
 
 Numbered as_given(const Mesh& m) {
     Numbered out;
+    out.nodes_per_tet = m.nodes_per_tet();
     out.x.assign(lfem_mesh_get_positions(m.m), lfem_mesh_get_positions(m.m) + 3 * m.nodes());
-    out.tets.assign(lfem_mesh_get_tets(m.m), lfem_mesh_get_tets(m.m) + 4 * m.tets());
+    out.tets.assign(lfem_mesh_get_tets(m.m), lfem_mesh_get_tets(m.m) + out.nodes_per_tet * m.tets());
     out.new_of_node.resize(m.nodes());
     std::iota(out.new_of_node.begin(), out.new_of_node.end(), 0u);
     out.new_of_tet.resize(m.tets());
@@ -46,21 +50,34 @@ std::vector<uint32_t> random_permutation(uint32_t n, uint64_t& state) {
     return p;
 }
 
+// The mid-edge node (4..9) of corners i and j of a 10-node tet.
+uint32_t mid_of(uint32_t i, uint32_t j) {
+    static const uint32_t edges[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
+    for (uint32_t e = 0; e < 6; ++e)
+        if ((edges[e][0] == i && edges[e][1] == j) || (edges[e][0] == j && edges[e][1] == i)) return 4 + e;
+    return 0;
+}
+
 Numbered shuffled(const Mesh& m, uint64_t seed) {
+    static const uint32_t edges[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
     const Numbered given = as_given(m);
     Numbered out;
+    out.nodes_per_tet = given.nodes_per_tet;
     out.new_of_node = random_permutation(m.nodes(), seed);
     out.new_of_tet = random_permutation(m.tets(), seed);
     out.x.resize(given.x.size());
     for (uint32_t i = 0; i < m.nodes(); ++i)
         for (int k = 0; k < 3; ++k) out.x[3 * out.new_of_node[i] + k] = given.x[3 * i + k];
     out.tets.resize(given.tets.size());
+    const uint32_t npt = given.nodes_per_tet;
     for (uint32_t e = 0; e < m.tets(); ++e) {
-        const uint32_t* t = &given.tets[4 * e];
-        uint32_t* u = &out.tets[4 * out.new_of_tet[e]];
+        const uint32_t* t = &given.tets[npt * e];
+        uint32_t* u = &out.tets[npt * out.new_of_tet[e]];
         const uint32_t turn = out.new_of_tet[e] % 3;  // rotate the last three: orientation kept
-        u[0] = out.new_of_node[t[0]];
-        for (uint32_t a = 0; a < 3; ++a) u[1 + a] = out.new_of_node[t[1 + (a + turn) % 3]];
+        const uint32_t from[4] = {0, 1 + turn % 3, 1 + (1 + turn) % 3, 1 + (2 + turn) % 3};
+        for (uint32_t a = 0; a < 4; ++a) u[a] = out.new_of_node[t[from[a]]];
+        if (npt == 10)  // each mid-edge node goes with its edge
+            for (uint32_t k = 0; k < 6; ++k) u[4 + k] = out.new_of_node[t[mid_of(from[edges[k][0]], from[edges[k][1]])]];
     }
     return out;
 }
@@ -76,14 +93,14 @@ struct Outcome {
 // A block of each model with its bottom-left edge fixed, a force on its top corner, dropped
 // with a spin onto a second, static block of the same mesh: contact in both directions (the
 // dynamic block's nodes against the static one's triangles and back).
-Outcome run(lfem_model model, const Numbered& mesh, const Numbered& base_mesh) {
+Outcome run(lfem_model model, const Numbered& mesh, const Numbered& base_mesh, int calls = 20) {
     World w;
     lfem_body_def s = lfem_body_def_default();
     s.type = LFEM_BODY_STATIC;
     lfem_body base{};
     EXPECT_EQ(lfem_body_create(w, &s, &base), LFEM_OK);
     EXPECT_EQ(lfem_body_add_mesh(w, base, base_mesh.x.data(), uint32_t(base_mesh.x.size() / 3),
-                                 base_mesh.tets.data(), uint32_t(base_mesh.tets.size() / 4)),
+                                 base_mesh.tets.data(), base_mesh.tet_count()),
               LFEM_OK)
         << lfem_last_error();
     lfem_body_def d = lfem_body_def_default();
@@ -95,9 +112,9 @@ Outcome run(lfem_model model, const Numbered& mesh, const Numbered& base_mesh) {
     EXPECT_EQ(lfem_body_create(w, &d, &body), LFEM_OK);
     std::vector<double> x = mesh.x;
     for (std::size_t i = 2; i < x.size(); i += 3) x[i] += 0.0005;  // 0.5 mm above the base
-    const uint32_t n = uint32_t(x.size() / 3), t = uint32_t(mesh.tets.size() / 4);
-    EXPECT_EQ(lfem_body_add_mesh(w, body, x.data(), n, mesh.tets.data(), t), LFEM_OK)
-        << lfem_last_error();
+    const uint32_t n = uint32_t(x.size() / 3), t = mesh.tet_count();
+    const auto add = mesh.nodes_per_tet == 10 ? lfem_body_add_quadratic_mesh : lfem_body_add_mesh;
+    EXPECT_EQ(add(w, body, x.data(), n, mesh.tets.data(), t), LFEM_OK) << lfem_last_error();
 
     auto to_builder_node = [&](uint32_t api) {  // inverse of new_of_node
         return uint32_t(std::find(mesh.new_of_node.begin(), mesh.new_of_node.end(), api) -
@@ -127,7 +144,7 @@ Outcome run(lfem_model model, const Numbered& mesh, const Numbered& base_mesh) {
     EXPECT_EQ(lfem_body_set_node_forces(w, body, &corner, 1, force), LFEM_OK);
 
     uint32_t most = 0;  // the scene must exercise contact
-    for (int i = 0; i < 20; ++i) {
+    for (int i = 0; i < calls; ++i) {
         if (i == 5) {
             some.clear();
             for (uint32_t b : out.fixed_found)
@@ -186,19 +203,22 @@ Outcome run(lfem_model model, const Numbered& mesh, const Numbered& base_mesh) {
 
 }  // namespace
 
-TEST(Numbering, ResultsDoNotDependOnHowTheCallerNumbersTheMesh) {
+// calls: steps of 1 ms, ending while the block touches the base.
+void expect_numbering_free(bool quadratic, std::initializer_list<lfem_model> models, int calls) {
     Mesh block;
-    make_box_mesh(block, 0.1, 0.06, 0.1, 5, 3, 5, -0.05, -0.03, 0.0);
+    if (quadratic)
+        make_quadratic_box_mesh(block, 0.1, 0.06, 0.1, 5, 3, 5, -0.05, -0.03, 0.0);
+    else
+        make_box_mesh(block, 0.1, 0.06, 0.1, 5, 3, 5, -0.05, -0.03, 0.0);
     Mesh base_box;
     make_box_mesh(base_box, 0.2, 0.2, 0.1, 6, 6, 3, -0.1, -0.1, -0.1);
     const Numbered block_given = as_given(block), base_given = as_given(base_box);
     const Numbered block_shuffled = shuffled(block, 0x9E3779B97F4A7C15ull);
     const Numbered base_shuffled = shuffled(base_box, 0xD1B54A32D192ED03ull);
-    for (lfem_model model : {LFEM_MODEL_LINEAR, LFEM_MODEL_PAPER, LFEM_MODEL_NEO_HOOKEAN,
-                             LFEM_MODEL_COROTATIONAL}) {
+    for (lfem_model model : models) {
         SCOPED_TRACE("model " + std::to_string(int(model)));
-        const Outcome a = run(model, block_given, base_given);
-        const Outcome b = run(model, block_shuffled, base_shuffled);
+        const Outcome a = run(model, block_given, base_given, calls);
+        const Outcome b = run(model, block_shuffled, base_shuffled, calls);
         // Bitwise: the body's internal order, and so every sum, is the same in both runs.
         EXPECT_EQ(a.fixed_found, b.fixed_found);
         EXPECT_EQ(a.x, b.x);
@@ -208,6 +228,17 @@ TEST(Numbering, ResultsDoNotDependOnHowTheCallerNumbersTheMesh) {
         EXPECT_EQ(a.contacts, b.contacts);
         EXPECT_GT(a.contacts.size(), 3u);  // compared while the block touches the base
     }
+}
+
+TEST(Numbering, ResultsDoNotDependOnHowTheCallerNumbersTheMesh) {
+    expect_numbering_free(false, {LFEM_MODEL_LINEAR, LFEM_MODEL_PAPER, LFEM_MODEL_NEO_HOOKEAN, LFEM_MODEL_COROTATIONAL},
+                          20);
+}
+
+// The same for 10-node tets, renumbered with their mid-edge nodes following their edges: the
+// shim's translation of 10 nodes a tet, and the order of node_ordering.h, keep every bit.
+TEST(Numbering, QuadraticResultsDoNotDependOnHowTheCallerNumbersTheMesh) {
+    expect_numbering_free(true, {LFEM_MODEL_PAPER, LFEM_MODEL_COROTATIONAL}, 12);
 }
 
 // Right after add_mesh, before any step, every per-node and per-tet quantity read back is the

@@ -8,34 +8,48 @@ using namespace lfem_test;
 
 namespace {
 
-// A static floor: the box [-0.5, 0.5]^2 x [-0.1, 0].
-lfem_body add_floor(lfem_world* w, Mesh& mesh, double friction = 0.5) {
-    make_box_mesh(mesh, 1.0, 1.0, 0.1, 4, 4, 1, -0.5, -0.5, -0.1);
+// A static floor: the box [-0.5, 0.5]^2 x [-0.1, 0], of 4-node or 10-node tets.
+lfem_body add_floor(lfem_world* w, Mesh& mesh, double friction = 0.5, bool quadratic = false) {
+    if (quadratic)
+        make_quadratic_box_mesh(mesh, 1.0, 1.0, 0.1, 4, 4, 1, -0.5, -0.5, -0.1);
+    else
+        make_box_mesh(mesh, 1.0, 1.0, 0.1, 4, 4, 1, -0.5, -0.5, -0.1);
     lfem_body_def def = lfem_body_def_default();
     def.type = LFEM_BODY_STATIC;
     def.friction = friction;
     return add_body(w, def, mesh);
 }
 
-// Sum of the contact forces on body `on` (N): nodes of `on` get the force, triangles of `on`
-// get its opposite.
-void contact_force_on(lfem_world* w, lfem_body on, double out[3]) {
-    uint32_t count = 0;
-    lfem_world_query_contacts(w, nullptr, 0, &count);
-    std::vector<lfem_contact> c(count);
-    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
-    out[0] = out[1] = out[2] = 0;
-    for (const lfem_contact& k : c) {
-        const double sign = k.body_a.index == on.index ? 1.0 : (k.body_b.index == on.index ? -1.0 : 0.0);
-        for (int d = 0; d < 3; ++d) out[d] += sign * k.force[d];
+// A block (0.1 m, on the floor from rest) settled for 1 s, then watched for 0.2 s: the worst
+// departure of its normal contact force from m g (relative), of its RMS node speed, and of
+// the penetration.
+struct Rest {
+    double force = 0, rms = 0, penetration = 0;
+    uint32_t contacts = 0;
+};
+
+Rest settle_and_watch(lfem_world* w, lfem_body block) {
+    double mass = 0;
+    lfem_body_get_mass(w, block, &mass);
+    EXPECT_EQ(lfem_world_step(w, 1.0), LFEM_OK) << lfem_last_error();
+    Rest r;
+    for (int i = 0; i < 200; ++i) {  // another 0.2 s, every millisecond
+        EXPECT_EQ(lfem_world_step(w, 1e-3), LFEM_OK) << lfem_last_error();
+        double f[3];
+        contact_force_on(w, block, f);
+        r.force = std::fmax(r.force, std::fabs(f[2] / (mass * 9.81) - 1));
+        r.rms = std::fmax(r.rms, rms_velocity(w, block));
+        r.penetration = std::fmax(r.penetration, stats(w).max_penetration);
     }
+    r.contacts = stats(w).contact_count;
+    return r;
 }
 
-double rms_velocity(lfem_world* w, lfem_body b) {
-    const std::vector<double> v = velocities(w, b);
-    double s = 0;
-    for (double x : v) s += x * x;
-    return std::sqrt(s / (v.size() / 3));
+lfem_body_def block_def() {
+    lfem_body_def def = lfem_body_def_default();
+    def.young_modulus = 1e6;
+    def.damping = 20.0;  // settles the ringing of the sudden load within ~0.5 s
+    return def;
 }
 
 }  // namespace
@@ -45,34 +59,37 @@ TEST(RestingContact, BlockOnFloorCarriesItsWeightWithoutJitter) {
     Mesh floor_mesh, block_mesh;
     add_floor(w, floor_mesh);
     make_box_mesh(block_mesh, 0.1, 0.1, 0.1, 4, 4, 4, -0.05, -0.05, 0.0);
-    lfem_body_def def = lfem_body_def_default();
-    def.young_modulus = 1e6;
-    def.damping = 20.0;  // settles the ringing of the sudden load within ~0.5 s
-    const lfem_body block = add_body(w, def, block_mesh);
-    double mass = 0;
-    lfem_body_get_mass(w, block, &mass);
-
-    ASSERT_EQ(lfem_world_step(w, 1.0), LFEM_OK) << lfem_last_error();
-    double worst_penetration = 0, worst_rms = 0, worst_force = 0;
-    for (int i = 0; i < 200; ++i) {  // another 0.2 s, every millisecond
-        ASSERT_EQ(lfem_world_step(w, 1e-3), LFEM_OK) << lfem_last_error();
-        double f[3];
-        contact_force_on(w, block, f);
-        worst_force = std::fmax(worst_force, std::fabs(f[2] / (mass * 9.81) - 1));
-        worst_rms = std::fmax(worst_rms, rms_velocity(w, block));
-        worst_penetration = std::fmax(worst_penetration, stats(w).max_penetration);
-    }
+    const Rest r = settle_and_watch(w, add_body(w, block_def(), block_mesh));
     std::printf("resting block: normal force within %.2e of m g, RMS node velocity <= %.2e m/s, "
                 "penetration <= %.2e m, %u contacts, %u sweeps\n",
-                worst_force, worst_rms, worst_penetration, stats(w).contact_count,
-                stats(w).solver_iterations);
-    EXPECT_LT(worst_force, 0.005);  // the 0.5 %
-    EXPECT_LT(worst_rms, 1e-6);     // no jitter
+                r.force, r.rms, r.penetration, r.contacts, stats(w).solver_iterations);
+    EXPECT_LT(r.force, 0.005);  // the 0.5 %
+    EXPECT_LT(r.rms, 1e-6);     // no jitter
     // Penetration: the solve stops at 1e-9 of the 2.5 cm edges; 1e-9 m bounds it with margin.
-    EXPECT_LT(worst_penetration, 1e-9);
+    EXPECT_LT(r.penetration, 1e-9);
 }
 
-TEST(RestingContact, StackOfThreeSoftCubesComesToRestWithoutPenetration) {
+// The same with a block of 10-node tets (2 x 2 x 2 cells: the same 2.5 cm node spacing), on a
+// floor of 4-node tets and on one of 10-node tets, whose flat faces contact sees as 4 triangles
+// each: the same bounds, as quiet as the linear block.
+TEST(RestingContact, QuadraticBlockOnFloorCarriesItsWeightWithoutJitter) {
+    for (bool quadratic_floor : {false, true}) {
+        World w;
+        Mesh floor_mesh, block_mesh;
+        add_floor(w, floor_mesh, 0.5, quadratic_floor);
+        make_quadratic_box_mesh(block_mesh, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0);
+        const Rest r = settle_and_watch(w, add_body(w, block_def(), block_mesh));
+        std::printf("resting block of 10-node tets on a floor of %s tets: normal force within %.2e of m g, RMS "
+                    "node velocity <= %.2e m/s, penetration <= %.2e m, %u contacts\n",
+                    quadratic_floor ? "10-node" : "4-node", r.force, r.rms, r.penetration, r.contacts);
+        EXPECT_LT(r.force, 0.005);
+        EXPECT_LT(r.rms, 1e-6);
+        EXPECT_LT(r.penetration, 1e-9);
+    }
+}
+
+// Three soft cubes stacked on the floor (of 4-node tets, 3^3 cells, or of 10-node tets, 2^3).
+void stack_of_three_comes_to_rest(bool quadratic) {
     World w;
     Mesh floor_mesh, cube[3];
     add_floor(w, floor_mesh);
@@ -83,7 +100,10 @@ TEST(RestingContact, StackOfThreeSoftCubesComesToRestWithoutPenetration) {
     lfem_body bodies[3];
     for (int i = 0; i < 3; ++i) {
         // Each cube 1 mm above the one below (dropped into place), slightly offset sideways.
-        make_box_mesh(cube[i], 0.1, 0.1, 0.1, 3, 3, 3, -0.05 + 0.01 * i, -0.05, 0.101 * i + 0.001);
+        if (quadratic)
+            make_quadratic_box_mesh(cube[i], 0.1, 0.1, 0.1, 2, 2, 2, -0.05 + 0.01 * i, -0.05, 0.101 * i + 0.001);
+        else
+            make_box_mesh(cube[i], 0.1, 0.1, 0.1, 3, 3, 3, -0.05 + 0.01 * i, -0.05, 0.101 * i + 0.001);
         bodies[i] = add_body(w, def, cube[i]);
     }
     // Calls of 0.25 s, all with the same automatic sub-step. (Switching to much shorter calls,
@@ -122,13 +142,14 @@ TEST(RestingContact, StackOfThreeSoftCubesComesToRestWithoutPenetration) {
                 floor_force += std::fabs(k.force[2]);
         }
     }
-    std::printf("stack of 3: floor carries %.4f of the total weight, kinetic energy %.2e of m g h, "
+    std::printf("stack of 3 (%s tets): floor carries %.4f of the total weight, kinetic energy %.2e of m g h, "
                 "penetration <= %.2e m\n",
-                floor_force / weights, kinetic / potential, worst_penetration);
+                quadratic ? "10-node" : "4-node", floor_force / weights, kinetic / potential, worst_penetration);
     EXPECT_NEAR(floor_force, weights, 0.005 * weights);
     EXPECT_LT(kinetic, 1e-6 * potential);
-    // The solve stops at 1e-9 of the 3.3 cm edges when nothing moves; 1e-8 m allows for the
-    // redundant two-pass constraints, which converge more slowly.
+    // The solve stops at 1e-9 of the 3.3 cm edges (2.5 cm sub-triangle edges of the 10-node
+    // cubes) when nothing moves; 1e-8 m allows for the redundant two-pass constraints, which
+    // converge more slowly.
     EXPECT_LT(worst_penetration, 1e-8);
     // The order of the stack is kept: each cube's centre is above the one below by about a
     // cube height (squashed), never inside it.
@@ -142,3 +163,8 @@ TEST(RestingContact, StackOfThreeSoftCubesComesToRestWithoutPenetration) {
     EXPECT_GT(z[1] - z[0], 0.07);
     EXPECT_GT(z[2] - z[1], 0.07);
 }
+
+TEST(RestingContact, StackOfThreeSoftCubesComesToRestWithoutPenetration) { stack_of_three_comes_to_rest(false); }
+
+// The upper cubes rest on the lower ones' 6-node faces (4 flat triangles each).
+TEST(RestingContact, StackOfThreeQuadraticCubesComesToRestWithoutPenetration) { stack_of_three_comes_to_rest(true); }

@@ -19,7 +19,10 @@ namespace {
 // one per task (on three, the plate again on the pool beside the four). Without the plate the
 // four blocks fall on the static floor side by side: four contact groups, which the multiplier
 // solve runs side by side as well.
-std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads, uint32_t blocks, bool plate = true) {
+// quadratic: the plate and the blocks of 10-node tets, of half the cells along each edge (as
+// many nodes, an eighth of the tets).
+std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads, uint32_t blocks, bool plate = true,
+                                     bool quadratic = false) {
     lfem_world_def wd = lfem_world_def_default();
     wd.thread_count = threads;
     wd.contact_iterations = 20;  // a short test: equality, not accuracy, is the point
@@ -36,8 +39,16 @@ std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads, uint32_
     d.model = model;
     d.young_modulus = 3e5;
     d.friction = 0.4;
+    const uint32_t coarser = quadratic ? 2 : 1;  // cells are this much larger
+    const auto box = [&](Mesh& m, double sx, double sy, double sz, uint32_t nx, uint32_t ny, uint32_t nz, double ox,
+                         double oy, double oz) {
+        if (quadratic)
+            make_quadratic_box_mesh(m, sx, sy, sz, nx / coarser, ny / coarser, nz / coarser, ox, oy, oz);
+        else
+            make_box_mesh(m, sx, sy, sz, nx, ny, nz, ox, oy, oz);
+    };
     if (plate) {
-        make_box_mesh(plate_mesh, 0.1, 0.1, 0.02, 20, 20, 4, -0.05, -0.05, 0.0);
+        box(plate_mesh, 0.1, 0.1, 0.02, 20, 20, 4, -0.05, -0.05, 0.0);
         bodies.push_back(add_body(w, d, plate_mesh));
     }
     d.angular_velocity[0] = 3.0;
@@ -45,10 +56,10 @@ std::vector<unsigned char> run_scene(lfem_model model, uint32_t threads, uint32_
     for (uint32_t k = 0; k < blocks; ++k) {
         Mesh block;
         if (blocks == 1) {
-            make_box_mesh(block, 0.06, 0.06, 0.06, 8, 8, 8, -0.03, -0.02, 0.021);
+            box(block, 0.06, 0.06, 0.06, 8, 8, 8, -0.03, -0.02, 0.021);
         } else {  // a 2 x 2 grid of 4 cm blocks, 1 cm apart
             const double x0 = k % 2 ? 0.005 : -0.045, y0 = k / 2 ? 0.005 : -0.045;
-            make_box_mesh(block, 0.04, 0.04, 0.04, 8, 8, 8, x0, y0, plate ? 0.021 : 0.001);
+            box(block, 0.04, 0.04, 0.04, 8, 8, 8, x0, y0, plate ? 0.021 : 0.001);
         }
         bodies.push_back(add_body(w, d, block));
     }
@@ -84,6 +95,24 @@ TEST(Threads, OneTwoAndThreeThreadsGiveBitwiseIdenticalResults) {
                 EXPECT_EQ(0, std::memcmp(one.data(), many.data(), one.size()))
                     << "model " << model << ", " << threads << " threads, " << blocks
                     << " block(s)" << (plate ? " on the plate" : " on the floor");
+            }
+        }
+    }
+}
+
+// The same with 10-node tets: their element loop has blocks and colours of its own (blocks of
+// 64 tets), and the plate still splits into two node blocks. One block with the corotational
+// model (its rotation per quadrature point), four with the neo-Hookean one.
+TEST(Threads, QuadraticTetsGiveBitwiseIdenticalResults) {
+    for (lfem_model model : {LFEM_MODEL_COROTATIONAL, LFEM_MODEL_NEO_HOOKEAN}) {
+        {
+            const uint32_t blocks = model == LFEM_MODEL_COROTATIONAL ? 1 : 4;
+            const std::vector<unsigned char> one = run_scene(model, 1, blocks, true, true);
+            for (uint32_t threads : {2u, 3u}) {
+                const std::vector<unsigned char> many = run_scene(model, threads, blocks, true, true);
+                ASSERT_EQ(one.size(), many.size());
+                EXPECT_EQ(0, std::memcmp(one.data(), many.data(), one.size()))
+                    << "model " << model << ", " << threads << " threads, " << blocks << " block(s)";
             }
         }
     }

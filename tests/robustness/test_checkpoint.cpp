@@ -132,6 +132,30 @@ TEST(Checkpoint, DamagedFilesAreRefused) {
     std::remove(bad.c_str());
 }
 
+// A file of another format version (an older lfem's, before 10-node tets) is refused with a
+// message that says so, not read as if it were this version's.
+TEST(Checkpoint, OtherFormatVersionsAreRefusedWithTheReason) {
+    RobustnessScene scene;
+    scene.run(2);
+    const std::string path = temp_path("version"), bad = temp_path("old_version");
+    ASSERT_EQ(lfem_world_save(scene.w, path.c_str()), LFEM_OK) << lfem_last_error();
+    const std::string good = read_all(path);
+    uint32_t version = 0;
+    std::memcpy(&version, good.data() + 8, 4);  // after the 8-byte magic
+    for (uint32_t other : {version - 1, version + 1}) {
+        std::string edited = good;
+        std::memcpy(&edited[8], &other, 4);
+        write_all(bad, edited);
+        expect_refused(bad, "other format version");
+        const std::string message = lfem_last_error();
+        EXPECT_NE(message.find("format version " + std::to_string(other)), std::string::npos) << message;
+        EXPECT_NE(message.find(other < version ? "older" : "newer"), std::string::npos) << message;
+        EXPECT_NE(message.find("reads version " + std::to_string(version)), std::string::npos) << message;
+    }
+    std::remove(path.c_str());
+    std::remove(bad.c_str());
+}
+
 TEST(Checkpoint, BadArguments) {
     RobustnessScene scene;
     lfem_world* out = nullptr;

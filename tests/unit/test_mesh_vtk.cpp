@@ -1,5 +1,6 @@
 // VTK output: a frame of a small box is read back (minimally: attributes and DataArrays) and
-// the .pvd lists it with its time and a file name relative to the .pvd's folder.
+// the .pvd lists it with its time and a file name relative to the .pvd's folder; 10-node tets
+// are quadratic cells.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -11,6 +12,7 @@
 
 #include "common/error.h"
 #include "mesh/mesh_builders.h"
+#include "mesh/quadratic_mesh.h"
 #include "mesh/vtk_writer.h"
 
 namespace lfem {
@@ -196,6 +198,29 @@ TEST_F(VtkOutput, FailedFrameChangesNothing) {
     EXPECT_EQ(count_of(pvd, "<DataSet"), 2u);
     EXPECT_NE(pvd.find("timestep=\"3\" part=\"0\" file=\"run_000001.vtu\""), std::string::npos)
         << pvd;
+}
+
+// 10-node tets go out as VTK_QUADRATIC_TETRA (24), ten points each in lfem's node order, which
+// is VTK's (common/quadratic_tet_nodes.h).
+TEST_F(VtkOutput, QuadraticTetsAreCellType24) {
+    const TetMesh m = make_quadratic(small_box());
+    VtkPiece piece;
+    piece.positions = m.positions.data();
+    piece.node_count = m.node_count();
+    piece.tets = m.tets.data();
+    piece.tet_count = m.tet_count();
+    piece.nodes_per_tet = 10;
+    const fs::path path = dir_ / "quadratic.vtu";
+    write_vtu(path.string(), {piece});
+    const std::string vtu = read_text(path);
+    const std::vector<double> connectivity = data_array(vtu, "connectivity");
+    ASSERT_EQ(connectivity.size(), 10u * m.tet_count());
+    for (std::size_t i = 0; i < connectivity.size(); ++i) EXPECT_EQ(connectivity[i], double(m.tets[i]));
+    const std::vector<double> offsets = data_array(vtu, "offsets");
+    ASSERT_EQ(offsets.size(), m.tet_count());
+    for (std::size_t t = 0; t < offsets.size(); ++t) EXPECT_EQ(offsets[t], 10.0 * double(t + 1));
+    EXPECT_EQ(data_array(vtu, "types"), std::vector<double>(m.tet_count(), 24.0));
+    EXPECT_EQ(points_array(vtu), m.positions);
 }
 
 }  // namespace

@@ -201,6 +201,63 @@ public static class LfemTests
         }
     }
 
+    public static void TestTenNodeBoxFallsFreelyAndShowsItsSixNodeFaces()
+    {
+        // MakeQuadratic adds one node per edge (the distinct corner pairs of the 4-node tets,
+        // counted here); the body weighs rho V and falls as z0 - g t^2/2 exactly (every lumped mass
+        // is positive, so every node takes g); its 6-node faces have their mid-edge nodes at the
+        // middles of their edges, and contact sees 4 flat triangles per face.
+        using (Mesh mesh = Mesh.Box(Size, 3, 2, 1))
+        {
+            uint[] linear = mesh.GetTets();
+            var edges = new System.Collections.Generic.HashSet<ulong>();
+            int[,] pairs = { { 0, 1 }, { 1, 2 }, { 0, 2 }, { 0, 3 }, { 1, 3 }, { 2, 3 } };
+            for (int t = 0; t < linear.Length / 4; ++t)
+                for (int e = 0; e < 6; ++e)
+                {
+                    ulong a = linear[4 * t + pairs[e, 0]], b = linear[4 * t + pairs[e, 1]];
+                    edges.Add(Math.Min(a, b) << 32 | Math.Max(a, b));
+                }
+            mesh.MakeQuadratic();
+            Equal(10, mesh.NodesPerTet, "nodes per tet");
+            Equal(36, mesh.TetCount, "tet count");
+            Equal(360, mesh.GetTets().Length, "tet indices");
+            Equal(24 + edges.Count, mesh.NodeCount, "a node per edge");
+            Equal(Status.InvalidArgument, Throws(() => mesh.MakeQuadratic(), "make quadratic twice").Status, "status");
+            mesh.Translate(new Vec3(0, 0, 2));
+            using (World world = new World())
+            {
+                BodyDef def = BodyDef.Default;
+                def.Model = Model.Corotational;
+                def.YoungModulus = 2e5;
+                def.Density = Density;
+                Body body = world.CreateBody(def);
+                world.AddMesh(body, mesh);
+                Equal(10, world.GetNodesPerTet(body), "body nodes per tet");
+                double mass = Density * (Size.X * Size.Y * Size.Z);
+                Close(mass, world.Mass(body), 1e-12 * mass, "mass = rho V");
+                Vec3[] start = world.GetPositions(body);
+                world.Step(0.3);
+                double time = world.Stats.Time;
+                Vec3[] x = world.GetPositions(body);
+                for (int i = 0; i < x.Length; ++i)
+                    Close(start[i].Z - 0.5 * G * time * time, x[i].Z, 1e-11, "z of node " + i);
+                uint[] faces = world.GetBoundaryFaces(body);
+                Equal(0, faces.Length % 6, "6 indices a face");
+                Equal(4 * (faces.Length / 6), world.GetBoundaryTriangles(body).Length / 3, "4 flat triangles a face");
+                for (int f = 0; f < faces.Length / 6; ++f)
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        Vec3 mid = (x[faces[6 * f + i]] + x[faces[6 * f + (i + 1) % 3]]) / 2;
+                        Close(0.0, (x[faces[6 * f + 3 + i]] - mid).Length, 1e-12, "mid-edge node of face " + f);
+                    }
+                Body other = world.CreateBody(def);
+                world.AddQuadraticMesh(other, mesh.GetPositions(), mesh.GetTets());
+                Equal(36, world.TetCount(other), "tets of the arrays");
+            }
+        }
+    }
+
     public static void TestProfileCountsThePhasesALoneBodyRuns()
     {
         // A lone falling block: one predictor, elastic-force pass and commit per sub-step, no

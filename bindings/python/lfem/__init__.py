@@ -231,23 +231,30 @@ class World:
         return native.lfem_body_is_valid(self.handle, _body(body)) != 0
 
     def add_mesh(self, body: Body, mesh: "Mesh") -> None:
-        """Add the tets of a Mesh (copied; the mesh stays yours)."""
+        """Add the tets of a Mesh (copied; the mesh stays yours): 4-node tets, or 10-node ones
+        (Mesh.make_quadratic, a Gmsh file of type 11) through lfem_body_add_quadratic_mesh."""
         if not isinstance(mesh, Mesh):
             raise TypeError("lfem: mesh must be an lfem.Mesh, not %s" % type(mesh).__name__)
         m = mesh.handle
-        native.lfem_body_add_mesh(self.handle, _body(body), native.lfem_mesh_get_positions(m),
-                                  native.lfem_mesh_get_node_count(m),
-                                  native.lfem_mesh_get_tets(m), native.lfem_mesh_get_tet_count(m))
+        add = (native.lfem_body_add_quadratic_mesh if mesh.nodes_per_tet == 10
+               else native.lfem_body_add_mesh)
+        add(self.handle, _body(body), native.lfem_mesh_get_positions(m),
+            native.lfem_mesh_get_node_count(m), native.lfem_mesh_get_tets(m),
+            native.lfem_mesh_get_tet_count(m))
 
     def add_mesh_arrays(self, body: Body, positions: npt.ArrayLike, tets: npt.ArrayLike) -> None:
-        """Add nodes (an (n, 3) array, m) and tets (an (m, 4) array of node indices)."""
+        """Add nodes (an (n, 3) array, m) and tets: an (m, 4) array of node indices, or an
+        (m, 10) array of 10-node tets (corners, then the mid-edge nodes of the edges 01, 12,
+        02, 03, 13, 23)."""
         x = _convert.vectors(positions, "positions")
+        shape = np.shape(tets)
+        per_tet = 10 if len(shape) == 2 and shape[1] == 10 else 4
         t = _convert.indices(tets, "tets")
-        if t.size % 4:
-            raise InvalidArgumentError("lfem: tets must be an (m, 4) array, got %d indices"
+        if t.size % per_tet:
+            raise InvalidArgumentError("lfem: tets must be an (m, 4) or (m, 10) array, got %d indices"
                                        % t.size)
-        native.lfem_body_add_mesh(self.handle, _body(body), _dptr(x), x.shape[0], _uptr(t),
-                                  t.size // 4)
+        add = native.lfem_body_add_quadratic_mesh if per_tet == 10 else native.lfem_body_add_mesh
+        add(self.handle, _body(body), _dptr(x), x.shape[0], _uptr(t), t.size // per_tet)
 
     def add_shape(self, body: Body, definition: Optional[ShapeDef] = None,
                   points: Optional[npt.ArrayLike] = None) -> int:
@@ -308,6 +315,12 @@ class World:
         native.lfem_body_get_tet_count(self.handle, _body(body), ctypes.byref(out))
         return out.value
 
+    def nodes_per_tet(self, body: Body) -> int:
+        """4, or 10 for a body of quadratic tets (0 without tets)."""
+        out = ctypes.c_uint32()
+        native.lfem_body_get_nodes_per_tet(self.handle, _body(body), ctypes.byref(out))
+        return out.value
+
     def user_data(self, body: Body) -> Optional[int]:
         """The BodyDef.user_data the body was created with."""
         out = _vp()
@@ -349,6 +362,17 @@ class World:
         f = native.lfem_body_get_boundary_triangles
         n = self._count(native.lfem_body_get_boundary_triangle_count, body, f.__name__)
         out = np.empty((n, 3), dtype=np.uint32)
+        f(self.handle, body, _uptr(out), n)
+        return out
+
+    def boundary_faces(self, body: Body) -> Indices:
+        """The boundary as faces: an (n, 6) uint32 array of 6-node triangles for a body of
+        10-node tets (corners a, b, c counter-clockwise from outside, then the mid-edge nodes of
+        ab, bc, ca), the (n, 3) boundary triangles for any other body."""
+        f = native.lfem_body_get_boundary_faces
+        n = self._count(native.lfem_body_get_boundary_face_count, body, f.__name__)
+        width = 6 if self._count(native.lfem_body_get_nodes_per_tet, body, f.__name__) == 10 else 3
+        out = np.empty((n, width), dtype=np.uint32)
         f(self.handle, body, _uptr(out), n)
         return out
 
@@ -730,7 +754,8 @@ class Mesh:
 
     @classmethod
     def load_gmsh(cls, path: Any) -> "Mesh":
-        """The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1)."""
+        """The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1): 4-node ones, or 10-node ones
+        (type 11)."""
         out = _vp()
         native.lfem_mesh_load_gmsh(_convert.path(path, "path"), ctypes.byref(out))
         return cls(out)
@@ -746,6 +771,16 @@ class Mesh:
         return native.lfem_mesh_get_tet_count(self.handle)
 
     @property
+    def nodes_per_tet(self) -> int:
+        """4, or 10 for quadratic tets."""
+        return native.lfem_mesh_get_nodes_per_tet(self.handle)
+
+    def make_quadratic(self) -> None:
+        """Turn the 4-node tets into 10-node ones: a node at the middle of every edge, numbered
+        after the corners (see lfem_mesh_make_quadratic)."""
+        native.lfem_mesh_make_quadratic(self.handle)
+
+    @property
     def positions(self) -> Vectors:
         """A copy of the node positions (m), an (n, 3) float64 array."""
         n = self.node_count
@@ -755,11 +790,12 @@ class Mesh:
 
     @property
     def tets(self) -> Indices:
-        """A copy of the tets, an (m, 4) uint32 array of node indices."""
-        n = self.tet_count
+        """A copy of the tets, an (m, 4) uint32 array of node indices ((m, 10) for 10-node
+        tets)."""
+        n, width = self.tet_count, self.nodes_per_tet
         if n == 0:
-            return np.empty((0, 4), dtype=np.uint32)
-        return np.ctypeslib.as_array(native.lfem_mesh_get_tets(self.handle), (n, 4)).copy()
+            return np.empty((0, width), dtype=np.uint32)
+        return np.ctypeslib.as_array(native.lfem_mesh_get_tets(self.handle), (n, width)).copy()
 
     def translate(self, offset: npt.ArrayLike) -> None:
         """Move the mesh by offset (m)."""

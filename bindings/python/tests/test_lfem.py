@@ -323,6 +323,50 @@ class Physics(unittest.TestCase):
             self.assertTrue(math.isfinite(world.stable_step))
 
 
+class QuadraticTets(unittest.TestCase):
+    def test_ten_node_box_falls_freely_and_shows_its_six_node_faces(self):
+        # make_quadratic adds one node per edge: the distinct corner pairs of the tets, counted
+        # here with numpy. A body of these tets weighs rho V, falls exactly as z0 - g t^2/2 (the
+        # lumped masses are positive, so every node takes g), and its boundary faces have their
+        # mid-edge nodes at the middles of their edges.
+        mesh = lfem.Mesh.box(SIZE, (3, 2, 1))
+        edges = set()
+        for t in mesh.tets:
+            for i, j in ((0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3)):
+                edges.add((min(t[i], t[j]), max(t[i], t[j])))
+        mesh.make_quadratic()
+        self.assertEqual(mesh.nodes_per_tet, 10)
+        self.assertEqual(mesh.tets.shape, (36, 10))
+        self.assertEqual(mesh.node_count, 24 + len(edges))
+        with self.assertRaises(lfem.InvalidArgumentError):
+            mesh.make_quadratic()  # already quadratic
+        mesh.translate((0.0, 0.0, 2.0))
+        with lfem.World() as world:
+            d = lfem.BodyDef(model=lfem.Model.COROTATIONAL, young_modulus=2e5, density=DENSITY)
+            body = world.create_body(d)
+            world.add_mesh(body, mesh)
+            self.assertEqual(world.nodes_per_tet(body), 10)
+            mass = DENSITY * SIZE[0] * SIZE[1] * SIZE[2]
+            self.assertAlmostEqual(world.mass(body), mass, delta=1e-12 * mass)
+            start = world.positions(body).copy()
+            world.step(0.3)
+            t = world.stats.time
+            np.testing.assert_allclose(world.positions(body)[:, 2], start[:, 2] - 0.5 * G * t * t,
+                                       rtol=0, atol=1e-11)
+            faces = world.boundary_faces(body)
+            self.assertEqual(faces.shape[1], 6)
+            self.assertEqual(world.boundary_triangles(body).shape[0], 4 * faces.shape[0])
+            x = world.positions(body)
+            for i in range(3):
+                np.testing.assert_allclose(x[faces[:, 3 + i]], 0.5 * (x[faces[:, i]] + x[faces[:, (i + 1) % 3]]),
+                                           rtol=0, atol=1e-12)
+            # The same tets as arrays: an (m, 10) array makes a quadratic body too.
+            other = world.create_body(d)
+            world.add_mesh_arrays(other, mesh.positions, mesh.tets)
+            self.assertEqual(world.nodes_per_tet(other), 10)
+            self.assertEqual(world.tet_count(other), 36)
+
+
 class Checkpoint(unittest.TestCase):
     def test_checkpoint_continues_bit_for_bit(self):
         # A saved and reloaded world is the same world: the same handles read the same

@@ -408,8 +408,17 @@ extern "C" {
         tets: *const u32,
         tet_count: u32,
     ) -> lfem_status;
+    pub fn lfem_body_add_quadratic_mesh(
+        world: *mut lfem_world,
+        body: lfem_body,
+        positions: *const c_double,
+        node_count: u32,
+        tets: *const u32,
+        tet_count: u32,
+    ) -> lfem_status;
     pub fn lfem_body_get_node_count(world: *const lfem_world, body: lfem_body, out: *mut u32) -> lfem_status;
     pub fn lfem_body_get_tet_count(world: *const lfem_world, body: lfem_body, out: *mut u32) -> lfem_status;
+    pub fn lfem_body_get_nodes_per_tet(world: *const lfem_world, body: lfem_body, out: *mut u32) -> lfem_status;
     pub fn lfem_body_get_user_data(
         world: *const lfem_world,
         body: lfem_body,
@@ -492,6 +501,17 @@ extern "C" {
         body: lfem_body,
         out: *mut u32,
         triangle_capacity: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_boundary_face_count(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_boundary_faces(
+        world: *const lfem_world,
+        body: lfem_body,
+        out: *mut u32,
+        face_capacity: u32,
     ) -> lfem_status;
     pub fn lfem_body_get_von_mises_stress(
         world: *const lfem_world,
@@ -655,6 +675,8 @@ extern "C" {
         out: *mut *mut lfem_mesh,
     ) -> lfem_status;
     pub fn lfem_mesh_load_gmsh(path: *const c_char, out: *mut *mut lfem_mesh) -> lfem_status;
+    pub fn lfem_mesh_make_quadratic(mesh: *mut lfem_mesh) -> lfem_status;
+    pub fn lfem_mesh_get_nodes_per_tet(mesh: *const lfem_mesh) -> u32;
     pub fn lfem_mesh_destroy(mesh: *mut lfem_mesh);
     pub fn lfem_mesh_get_node_count(mesh: *const lfem_mesh) -> u32;
     pub fn lfem_mesh_get_tet_count(mesh: *const lfem_mesh) -> u32;

@@ -995,27 +995,58 @@ impl World {
         unsafe { sys::lfem_body_is_valid(self.ptr(), body.raw()) != 0 }
     }
 
-    /// Add the tets of a mesh to a body (copied; the mesh stays yours).
+    /// Add the tets of a mesh to a body (copied; the mesh stays yours): 4-node tets, or
+    /// 10-node ones ([`Mesh::make_quadratic`], a Gmsh file of type 11).
     pub fn add_mesh(&mut self, body: Body, mesh: &Mesh) -> Result<()> {
-        self.add_mesh_data(body, mesh.positions(), mesh.tets())
+        if mesh.nodes_per_tet() == 10 {
+            self.add_quadratic_mesh_data(body, mesh.positions(), mesh.quadratic_tets())
+        } else {
+            self.add_mesh_data(body, mesh.positions(), mesh.tets())
+        }
+    }
+
+    /// Add a mesh of 10-node tets: node positions (m) and tets of 10 node indices each, the
+    /// corners first (positive volume), then the mid-edge nodes of the edges 01, 12, 02, 03,
+    /// 13, 23 (see lfem_body_add_quadratic_mesh).
+    pub fn add_quadratic_mesh_data(&mut self, body: Body, positions: &[[f64; 3]], tets: &[[u32; 10]]) -> Result<()> {
+        let tet_count = to_u32(tets.len(), "tet count")?;
+        // SAFETY: 10*tet_count indices.
+        unsafe {
+            self.add_tets(sys::lfem_body_add_quadratic_mesh, body, positions, tets.as_ptr() as *const u32, tet_count)
+        }
+    }
+
+    /// Nodes per tet of a body: 4, 10 for quadratic tets, 0 for a body without tets.
+    pub fn nodes_per_tet(&self, body: Body) -> Result<u32> {
+        let mut out = 0u32;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_nodes_per_tet(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out)
     }
 
     /// Add a tetrahedral mesh given as node positions (m) and tets (4 node indices, 0-based,
     /// positive volume).
     pub fn add_mesh_data(&mut self, body: Body, positions: &[[f64; 3]], tets: &[[u32; 4]]) -> Result<()> {
-        let node_count = to_u32(positions.len(), "node count")?;
         let tet_count = to_u32(tets.len(), "tet count")?;
-        // SAFETY: live world; the arrays hold 3*node_count doubles and 4*tet_count indices.
-        check(unsafe {
-            sys::lfem_body_add_mesh(
-                self.ptr_mut(),
-                body.raw(),
-                positions.as_ptr() as *const f64,
-                node_count,
-                tets.as_ptr() as *const u32,
-                tet_count,
-            )
-        })
+        // SAFETY: 4*tet_count indices.
+        unsafe { self.add_tets(sys::lfem_body_add_mesh, body, positions, tets.as_ptr() as *const u32, tet_count) }
+    }
+
+    /// Adds nodes and tets through `add` (lfem_body_add_mesh or lfem_body_add_quadratic_mesh).
+    ///
+    /// # Safety
+    /// `tets` must hold as many indices as `add` reads for `tet_count` tets.
+    unsafe fn add_tets(
+        &mut self,
+        add: unsafe extern "C" fn(*mut sys::lfem_world, sys::lfem_body, *const f64, u32, *const u32, u32) -> sys::lfem_status,
+        body: Body,
+        positions: &[[f64; 3]],
+        tets: *const u32,
+        tet_count: u32,
+    ) -> Result<()> {
+        let node_count = to_u32(positions.len(), "node count")?;
+        // SAFETY: live world; 3*node_count doubles, and the caller's promise for tets.
+        check(add(self.ptr_mut(), body.raw(), positions.as_ptr() as *const f64, node_count, tets, tet_count))
     }
 
     /// Give a static or kinematic body a rigid shape; returns its index on the body (the
@@ -1156,6 +1187,24 @@ impl World {
         check(unsafe {
             sys::lfem_body_get_boundary_triangles(self.ptr(), body.raw(), out.as_mut_ptr() as *mut u32, n)
         })?;
+        Ok(out)
+    }
+
+    /// The boundary of a body of 10-node tets as 6-node triangles: corners a, b, c
+    /// counter-clockwise seen from outside, then the mid-edge nodes of ab, bc, ca. An error
+    /// for a body of other tets (use [`World::boundary_triangles`]).
+    pub fn quadratic_boundary_faces(&self, body: Body) -> Result<Vec<[u32; 6]>> {
+        let call = "lfem_body_get_boundary_faces";
+        if self.nodes_per_tet(body).map_err(|e| e.renamed("lfem_body_get_nodes_per_tet", call))? != 10 {
+            return Err(Error::local(Status::InvalidArgument, "the body has no 10-node tets".into()));
+        }
+        let mut n = 0u32;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_boundary_face_count(self.ptr(), body.raw(), &mut n) })
+            .map_err(|e| e.renamed("lfem_body_get_boundary_face_count", call))?;
+        let mut out = vec![[0u32; 6]; n as usize];
+        // SAFETY: out holds 6*n indices.
+        check(unsafe { sys::lfem_body_get_boundary_faces(self.ptr(), body.raw(), out.as_mut_ptr() as *mut u32, n) })?;
         Ok(out)
     }
 
@@ -1508,6 +1557,7 @@ impl fmt::Debug for Mesh {
         f.debug_struct("Mesh")
             .field("nodes", &self.node_count())
             .field("tets", &self.tet_count())
+            .field("nodes_per_tet", &self.nodes_per_tet())
             .finish()
     }
 }
@@ -1562,7 +1612,8 @@ impl Mesh {
         mesh_from(status, out)
     }
 
-    /// The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1).
+    /// The tetrahedra of a Gmsh .msh file (ASCII 2.2 or 4.1): 4-node ones, or 10-node ones
+    /// (type 11).
     pub fn load_gmsh<P: AsRef<Path>>(path: P) -> Result<Mesh> {
         let c_path = to_c_path(path.as_ref())?;
         let mut out = ptr::null_mut();
@@ -1583,6 +1634,30 @@ impl Mesh {
         unsafe { sys::lfem_mesh_get_tet_count(self.raw.as_ptr()) as usize }
     }
 
+    /// Nodes per tet: 4, or 10 for quadratic tets.
+    pub fn nodes_per_tet(&self) -> u32 {
+        // SAFETY: live mesh.
+        unsafe { sys::lfem_mesh_get_nodes_per_tet(self.raw.as_ptr()) }
+    }
+
+    /// Turn the 4-node tets into 10-node ones: a node at the middle of every edge, numbered
+    /// after the corners (see lfem_mesh_make_quadratic). An error when they already are.
+    pub fn make_quadratic(&mut self) -> Result<()> {
+        // SAFETY: live mesh.
+        check(unsafe { sys::lfem_mesh_make_quadratic(self.raw.as_ptr()) })
+    }
+
+    /// The raw tet indices, `nodes_per_tet()` per tet.
+    fn tet_indices(&self, per_tet: u32) -> Option<*const u32> {
+        // SAFETY: live mesh.
+        let p = unsafe { sys::lfem_mesh_get_tets(self.raw.as_ptr()) };
+        if p.is_null() || self.tet_count() == 0 || self.nodes_per_tet() != per_tet {
+            None
+        } else {
+            Some(p)
+        }
+    }
+
     /// Node positions (m), a view into the mesh.
     pub fn positions(&self) -> &[[f64; 3]] {
         let n = self.node_count();
@@ -1597,18 +1672,20 @@ impl Mesh {
         }
     }
 
-    /// Tets (4 node indices each), a view into the mesh.
+    /// Tets (4 node indices each), a view into the mesh; empty for a mesh of 10-node tets
+    /// (see [`Mesh::quadratic_tets`]).
     pub fn tets(&self) -> &[[u32; 4]] {
-        let n = self.tet_count();
-        // SAFETY: as for positions, 4*n indices.
-        unsafe {
-            let p = sys::lfem_mesh_get_tets(self.raw.as_ptr());
-            if p.is_null() || n == 0 {
-                &[]
-            } else {
-                std::slice::from_raw_parts(p as *const [u32; 4], n)
-            }
-        }
+        // SAFETY: as for positions, 4 indices per tet.
+        self.tet_indices(4)
+            .map_or(&[], |p| unsafe { std::slice::from_raw_parts(p as *const [u32; 4], self.tet_count()) })
+    }
+
+    /// 10-node tets (corners, then the mid-edge nodes of the edges 01, 12, 02, 03, 13, 23), a
+    /// view into the mesh; empty for a mesh of 4-node tets.
+    pub fn quadratic_tets(&self) -> &[[u32; 10]] {
+        // SAFETY: as for positions, 10 indices per tet.
+        self.tet_indices(10)
+            .map_or(&[], |p| unsafe { std::slice::from_raw_parts(p as *const [u32; 10], self.tet_count()) })
     }
 
     /// Move the mesh by `offset` (m).

@@ -410,6 +410,60 @@ fn profile_counts_the_phases_a_lone_body_runs() {
 }
 
 #[test]
+fn ten_node_box_falls_freely_and_shows_its_six_node_faces() {
+    // make_quadratic adds one node per edge (the distinct corner pairs of the 4-node tets,
+    // counted here); the body weighs rho V and falls as z0 - g t^2 / 2 exactly (every lumped
+    // mass is positive, so every node takes g); its 6-node faces have their mid-edge nodes at
+    // the middles of their edges, and contact sees 4 flat triangles per face.
+    let size = [0.3, 0.2, 0.1];
+    let density = 400.0;
+    let mut mesh = Mesh::new_box(size, [3, 2, 1]).unwrap();
+    let mut edges = std::collections::BTreeSet::new();
+    for t in mesh.tets() {
+        for &(i, j) in &[(0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3)] {
+            edges.insert((t[i].min(t[j]), t[i].max(t[j])));
+        }
+    }
+    mesh.make_quadratic().unwrap();
+    assert_eq!(mesh.nodes_per_tet(), 10);
+    assert_eq!(mesh.quadratic_tets().len(), 36);
+    assert!(mesh.tets().is_empty());
+    assert_eq!(mesh.node_count(), 24 + edges.len());
+    assert_eq!(mesh.make_quadratic().unwrap_err().status(), Status::InvalidArgument);
+    mesh.translate([0.0, 0.0, 2.0]).unwrap();
+    let mut world = World::new(&WorldDef::default()).unwrap();
+    let mut def = BodyDef::default();
+    def.model = Model::Corotational;
+    def.young_modulus = 2e5;
+    def.density = density;
+    let body = world.create_body(&def).unwrap();
+    world.add_mesh(body, &mesh).unwrap();
+    assert_eq!(world.nodes_per_tet(body).unwrap(), 10);
+    let mass = density * size[0] * size[1] * size[2];
+    assert!(close(world.mass(body).unwrap(), mass, 1e-12 * mass));
+    let start = world.positions(body).unwrap();
+    world.step(0.3).unwrap();
+    let t = world.stats().unwrap().time;
+    let x = world.positions(body).unwrap();
+    for (p, p0) in x.iter().zip(&start) {
+        assert!(close(p[2], p0[2] - 0.5 * G * t * t, 1e-11), "z = {}, closed form {}", p[2], p0[2] - 0.5 * G * t * t);
+    }
+    let faces = world.quadratic_boundary_faces(body).unwrap();
+    assert_eq!(world.boundary_triangles(body).unwrap().len(), 4 * faces.len());
+    for f in &faces {
+        for i in 0..3 {
+            let (a, b, m) = (x[f[i] as usize], x[f[(i + 1) % 3] as usize], x[f[3 + i] as usize]);
+            for k in 0..3 {
+                assert!(close(m[k], 0.5 * (a[k] + b[k]), 1e-12));
+            }
+        }
+    }
+    // A body of 4-node tets has no 6-node faces.
+    let (linear_world, linear) = block_world(Model::Paper, size, density);
+    assert_eq!(linear_world.quadratic_boundary_faces(linear).unwrap_err().status(), Status::InvalidArgument);
+}
+
+#[test]
 fn a_block_held_inside_out_is_reported_once_per_spell() {
     // A 10 cm cube of one cell: its bottom nodes fixed, its top ones driven down at 0.5 m/s
     // through the bottom for 0.3 s (to z = -0.05) and held. Every tet then has F = diag(1, 1,
