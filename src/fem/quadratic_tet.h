@@ -30,17 +30,6 @@ constexpr double kQuadratureA = 0.58541019662496845446;  // (5 + 3 sqrt 5) / 20
 constexpr double kQuadratureB = 0.13819660112501051518;  // (5 - sqrt 5) / 20
 constexpr double kQuadratureWeight = 1.0 / 24.0;
 
-// dN_a/dxi (a = 0..9, three natural directions) at the point of barycentric coordinates L.
-constexpr void quadratic_gradients_at(const double L[4], double g[kQuadraticTetNodes][3]) {
-    const double dL[4][3] = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    for (int i = 0; i < 4; ++i)
-        for (int c = 0; c < 3; ++c) g[i][c] = (4.0 * L[i] - 1.0) * dL[i][c];
-    for (int e = 0; e < 6; ++e) {
-        const int i = kQuadraticTetEdges[e][0], j = kQuadraticTetEdges[e][1];
-        for (int c = 0; c < 3; ++c) g[4 + e][c] = 4.0 * (L[j] * dL[i][c] + L[i] * dL[j][c]);
-    }
-}
-
 // dN_a/dxi at each quadrature point.
 struct QuadraticGradients {
     double g[kQuadraturePoints][kQuadraticTetNodes][3];
@@ -57,17 +46,6 @@ constexpr QuadraticGradients quadratic_gradients() {
 }
 
 inline constexpr QuadraticGradients kQuadraticGradients = quadratic_gradients();
-
-// The 3x3 matrix sum_a p_a g_a^T (row r, column c at [3r + c]) of the ten nodes p (each a
-// pointer to 3 coordinates) and natural gradients g: the Jacobian J (reference nodes) or Ds
-// (current nodes) at a point of the element.
-inline void natural_jacobian(const double* const p[kQuadraticTetNodes], const double g[kQuadraticTetNodes][3],
-                             double J[9]) {
-    for (int k = 0; k < 9; ++k) J[k] = 0.0;
-    for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) J[3 * r + c] += p[a][r] * g[a][c];
-}
 
 inline double determinant3(const double J[9]) {
     return J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) +
