@@ -1,11 +1,15 @@
 // Render meshes for the skin and query tests: a sphere (an octahedron subdivided and projected,
-// vertices shared: smooth), a box surface whose faces have vertices of their own (flat), and a
-// body moved by a known linear map (every node prescribed v = B X, so x(t) = X + t B X).
+// vertices shared: smooth), a box surface whose faces have vertices of their own (flat),
+// scattered points; a body moved by a known field (every node prescribed v = f(X), so
+// x(t) = X + t f(X), a linear map for f(X) = B X); the queries' answers as vectors.
 #pragma once
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <map>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -80,15 +84,82 @@ inline SkinMesh box_skin(const double lo[3], const double hi[3], uint32_t n) {
     return s;
 }
 
+// A skin added (its index) and read back (positions and normals, 3 per vertex each).
+struct SkinRead {
+    std::vector<double> x, n;
+};
+
+inline SkinRead read_skin(lfem_world* w, lfem_body b, uint32_t skin) {
+    uint32_t nv = 0;
+    EXPECT_EQ(lfem_body_get_skin_sizes(w, b, skin, &nv, nullptr), LFEM_OK) << lfem_last_error();
+    SkinRead r;
+    r.x.resize(3 * std::size_t(nv));
+    r.n.resize(3 * std::size_t(nv));
+    EXPECT_EQ(lfem_body_get_skin_vertices(w, b, skin, r.x.data(), r.n.data(), nv), LFEM_OK) << lfem_last_error();
+    return r;
+}
+
+inline uint32_t add_skin(lfem_world* w, lfem_body b, const SkinMesh& s) {
+    uint32_t index = UINT32_MAX;
+    EXPECT_EQ(lfem_body_add_skin(w, b, s.x.data(), s.vertices(), s.tri.data(), s.triangles(), &index), LFEM_OK)
+        << lfem_last_error();
+    return index;
+}
+
+// Saves the world to path, loads it back, and checks that the two read the same (skins
+// included) and step alike; skips the test in a build without checkpoint files.
+inline void expect_checkpoint_keeps(lfem_world* w, lfem_body b, const char* path) {
+    const lfem_status saved = lfem_world_save(w, path);
+    if (saved == LFEM_UNSUPPORTED) GTEST_SKIP() << "built without checkpoint files (LFEM_WITH_IO=OFF)";
+    ASSERT_EQ(saved, LFEM_OK) << lfem_last_error();
+    lfem_world* loaded = nullptr;
+    ASSERT_EQ(lfem_world_load(path, &loaded), LFEM_OK) << lfem_last_error();
+    std::remove(path);
+    EXPECT_EQ(fingerprint(w, {b}), fingerprint(loaded, {b}));
+    EXPECT_EQ(lfem_world_step(w, 0.01), LFEM_OK);
+    EXPECT_EQ(lfem_world_step(loaded, 0.01), LFEM_OK);
+    EXPECT_EQ(fingerprint(w, {b}), fingerprint(loaded, {b}));
+    lfem_world_destroy(loaded);
+}
+
+// A world without gravity (bodies stay where their prescribed motions take them).
+inline lfem_world_def no_gravity() {
+    lfem_world_def d = lfem_world_def_default();
+    d.gravity[2] = 0.0;
+    return d;
+}
+
+// Random points in the box [lo, hi] grown by `out` on every side (out > 0: some just outside),
+// every three a triangle.
+inline SkinMesh scattered(const double lo[3], const double hi[3], double out, uint32_t count, unsigned seed) {
+    std::mt19937 rng(seed);
+    SkinMesh s;
+    for (uint32_t i = 0; i < count; ++i)
+        for (int k = 0; k < 3; ++k)
+            s.x.push_back(std::uniform_real_distribution<double>(lo[k] - out, hi[k] + out)(rng));
+    for (uint32_t i = 0; i + 2 < count; i += 3) s.tri.insert(s.tri.end(), {i, i + 1, i + 2});
+    return s;
+}
+
+// Prescribes v_i = field(X_i) on every node i at its current position X_i: the body's nodes
+// then move by x_i(t) = X_i + t field(X_i) exactly, whatever its material does.
+template <class Field>
+void prescribe_motion(lfem_world* w, lfem_body b, const Field& field) {
+    const std::vector<double> X = positions(w, b);
+    for (uint32_t i = 0; i < X.size() / 3; ++i) {
+        const std::array<double, 3> v = field(&X[3 * std::size_t(i)]);
+        ASSERT_EQ(lfem_body_prescribe_node_velocity(w, b, &i, 1, v.data()), LFEM_OK) << lfem_last_error();
+    }
+}
+
 // Prescribes v_i = B X_i (B row-major) on every node: the body then moves by x(t) = (I + t B) X
 // exactly, whatever its material does.
 inline void prescribe_linear_motion(lfem_world* w, lfem_body b, const double B[9]) {
-    const std::vector<double> X = positions(w, b);
-    for (uint32_t i = 0; i < X.size() / 3; ++i) {
-        double v[3];
-        for (int r = 0; r < 3; ++r) v[r] = B[3 * r] * X[3 * i] + B[3 * r + 1] * X[3 * i + 1] + B[3 * r + 2] * X[3 * i + 2];
-        ASSERT_EQ(lfem_body_prescribe_node_velocity(w, b, &i, 1, v), LFEM_OK) << lfem_last_error();
-    }
+    prescribe_motion(w, b, [&](const double* X) {
+        std::array<double, 3> v;
+        for (int r = 0; r < 3; ++r) v[r] = B[3 * r] * X[0] + B[3 * r + 1] * X[1] + B[3 * r + 2] * X[2];
+        return v;
+    });
 }
 
 // (I + t B) p.
@@ -96,6 +167,41 @@ inline std::array<double, 3> linear_map(const double B[9], double t, const doubl
     std::array<double, 3> q;
     for (int r = 0; r < 3; ++r) q[r] = p[r] + t * (B[3 * r] * p[0] + B[3 * r + 1] * p[1] + B[3 * r + 2] * p[2]);
     return q;
+}
+
+// Query helpers: the closest hit (found or not), every hit, and the bodies a box overlaps.
+struct Hit {
+    bool found = false;
+    lfem_ray_hit h{};
+};
+
+inline Hit cast(lfem_world* w, const double o[3], const double d[3], double max = HUGE_VAL,
+         lfem_query_filter f = lfem_query_filter_default()) {
+    Hit r;
+    int hit = -1;
+    EXPECT_EQ(lfem_world_cast_ray(w, o, d, max, f, &r.h, &hit), LFEM_OK) << lfem_last_error();
+    EXPECT_TRUE(hit == 0 || hit == 1);
+    r.found = hit == 1;
+    return r;
+}
+
+inline std::vector<lfem_ray_hit> cast_all(lfem_world* w, const double o[3], const double d[3], double max = HUGE_VAL,
+                                   lfem_query_filter f = lfem_query_filter_default()) {
+    uint32_t count = 0;
+    const lfem_status asked = lfem_world_cast_ray_all(w, o, d, max, f, nullptr, 0, &count);
+    EXPECT_EQ(asked, count ? LFEM_BUFFER_TOO_SMALL : LFEM_OK);
+    std::vector<lfem_ray_hit> hits(count);
+    EXPECT_EQ(lfem_world_cast_ray_all(w, o, d, max, f, hits.data(), count, &count), LFEM_OK) << lfem_last_error();
+    return hits;
+}
+
+inline std::vector<lfem_body> overlap(lfem_world* w, const double lo[3], const double hi[3],
+                               lfem_query_filter f = lfem_query_filter_default()) {
+    uint32_t count = 0;
+    lfem_world_overlap_box(w, lo, hi, f, nullptr, 0, &count);
+    std::vector<lfem_body> out(count);
+    EXPECT_EQ(lfem_world_overlap_box(w, lo, hi, f, out.data(), count, &count), LFEM_OK) << lfem_last_error();
+    return out;
 }
 
 }  // namespace lfem_test

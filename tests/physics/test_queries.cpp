@@ -21,46 +21,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-lfem_world_def no_gravity() {
-    lfem_world_def d = lfem_world_def_default();
-    d.gravity[2] = 0.0;
-    return d;
-}
-
-struct Hit {
-    bool found = false;
-    lfem_ray_hit h{};
-};
-
-Hit cast(lfem_world* w, const double o[3], const double d[3], double max = HUGE_VAL,
-         lfem_query_filter f = lfem_query_filter_default()) {
-    Hit r;
-    int hit = -1;
-    EXPECT_EQ(lfem_world_cast_ray(w, o, d, max, f, &r.h, &hit), LFEM_OK) << lfem_last_error();
-    EXPECT_TRUE(hit == 0 || hit == 1);
-    r.found = hit == 1;
-    return r;
-}
-
-std::vector<lfem_ray_hit> cast_all(lfem_world* w, const double o[3], const double d[3], double max = HUGE_VAL,
-                                   lfem_query_filter f = lfem_query_filter_default()) {
-    uint32_t count = 0;
-    const lfem_status asked = lfem_world_cast_ray_all(w, o, d, max, f, nullptr, 0, &count);
-    EXPECT_EQ(asked, count ? LFEM_BUFFER_TOO_SMALL : LFEM_OK);
-    std::vector<lfem_ray_hit> hits(count);
-    EXPECT_EQ(lfem_world_cast_ray_all(w, o, d, max, f, hits.data(), count, &count), LFEM_OK) << lfem_last_error();
-    return hits;
-}
-
-std::vector<lfem_body> overlap(lfem_world* w, const double lo[3], const double hi[3],
-                               lfem_query_filter f = lfem_query_filter_default()) {
-    uint32_t count = 0;
-    lfem_world_overlap_box(w, lo, hi, f, nullptr, 0, &count);
-    std::vector<lfem_body> out(count);
-    EXPECT_EQ(lfem_world_overlap_box(w, lo, hi, f, out.data(), count, &count), LFEM_OK) << lfem_last_error();
-    return out;
-}
-
 lfem_body static_body(lfem_world* w) {
     lfem_body_def d = lfem_body_def_default();
     d.type = LFEM_BODY_STATIC;

@@ -21,38 +21,6 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-struct SkinRead {
-    std::vector<double> x, n;
-};
-
-SkinRead read_skin(lfem_world* w, lfem_body b, uint32_t skin) {
-    uint32_t nv = 0;
-    EXPECT_EQ(lfem_body_get_skin_sizes(w, b, skin, &nv, nullptr), LFEM_OK) << lfem_last_error();
-    SkinRead r;
-    r.x.resize(3 * std::size_t(nv));
-    r.n.resize(3 * std::size_t(nv));
-    EXPECT_EQ(lfem_body_get_skin_vertices(w, b, skin, r.x.data(), r.n.data(), nv), LFEM_OK) << lfem_last_error();
-    return r;
-}
-
-uint32_t add_skin(lfem_world* w, lfem_body b, const SkinMesh& s) {
-    uint32_t index = UINT32_MAX;
-    EXPECT_EQ(lfem_body_add_skin(w, b, s.x.data(), s.vertices(), s.tri.data(), s.triangles(), &index), LFEM_OK)
-        << lfem_last_error();
-    return index;
-}
-
-// Random points in the box [lo, hi] grown by `out` on every side (out > 0: some just outside).
-SkinMesh scattered(const double lo[3], const double hi[3], double out, uint32_t count, unsigned seed) {
-    std::mt19937 rng(seed);
-    SkinMesh s;
-    for (uint32_t i = 0; i < count; ++i)
-        for (int k = 0; k < 3; ++k)
-            s.x.push_back(std::uniform_real_distribution<double>(lo[k] - out, hi[k] + out)(rng));
-    for (uint32_t i = 0; i + 2 < count; i += 3) s.tri.insert(s.tri.end(), {i, i + 1, i + 2});
-    return s;
-}
-
 // The cofactor matrix of a row-major 3x3 matrix: its inverse transposed times its determinant.
 void cofactors(const double m[9], double c[9]) {
     const auto at = [&](int r, int k) { return m[3 * (r % 3) + k % 3]; };
@@ -404,18 +372,7 @@ TEST(Skins, CheckpointsKeepThem) {
     add_skin(s.world, s.body, scattered(lo, hi, 0.02, 90, 5));
     add_skin(s.world, s.body, box_skin(lo, hi, 2));
     s.move();
-    const char* path = "skins_checkpoint.bin";
-    const lfem_status saved = lfem_world_save(s.world, path);
-    if (saved == LFEM_UNSUPPORTED) GTEST_SKIP() << "built without checkpoint files (LFEM_WITH_IO=OFF)";
-    ASSERT_EQ(saved, LFEM_OK) << lfem_last_error();
-    lfem_world* loaded = nullptr;
-    ASSERT_EQ(lfem_world_load(path, &loaded), LFEM_OK) << lfem_last_error();
-    std::remove(path);
-    EXPECT_EQ(fingerprint(s.world, {s.body}), fingerprint(loaded, {s.body}));  // skins included
-    ASSERT_EQ(lfem_world_step(s.world, 0.01), LFEM_OK);
-    ASSERT_EQ(lfem_world_step(loaded, 0.01), LFEM_OK);
-    EXPECT_EQ(fingerprint(s.world, {s.body}), fingerprint(loaded, {s.body}));
-    lfem_world_destroy(loaded);
+    expect_checkpoint_keeps(s.world, s.body, "skins_checkpoint.bin");
 }
 
 TEST(Skins, BadInputIsRefusedAndChangesNothing) {
