@@ -688,7 +688,15 @@ LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* 
  * same weights extended affinely (some negative). Farther vertices are refused. The deformed
  * vertex is then the weighted sum of the tet's corner nodes at their current positions: a
  * vertex follows its tet exactly, and any affine motion of the tet (a stretch, a shear, a
- * rotation, a translation) is reproduced to round-off, inside the tet or out. Several skins
+ * rotation, a translation) is reproduced to round-off, inside the tet or out. On a body of
+ * 10-node tets a vertex is bound to all ten nodes of its tet, by the element's quadratic shape
+ * functions at the vertex (in a curved element, one whose mid-edge nodes sit off its edges, at
+ * the element coordinates that reach the vertex, found by Newton's iterations; where those do
+ * not converge, far outside a strongly curved element, by its corners' barycentric weights
+ * alone): the skin bends with the element as its displacement field and its contact surface
+ * (through the mid-edge nodes) do, reproduces any quadratic displacement of a straight-sided
+ * element and any affine motion to round-off; "just outside" is measured to the tet's corners'
+ * straight tet. Several skins
  * per body; skins are the body's data: checkpoints keep them, and no step reads them, so they
  * cost nothing until read. Any body with tets may have skins (deformable, rigid, static,
  * kinematic: they follow its nodes); not a body of a triangle mesh or shapes alone. A mesh

@@ -43,7 +43,7 @@ static_assert(sizeof(Attachment) == 240, "Attachment changed: update the checkpo
 static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
-static_assert(sizeof(Skin) == 72, "Skin changed: update the checkpoint");
+static_assert(sizeof(Skin) == 80, "Skin changed: update the checkpoint");
 #endif
 
 uint64_t fnv1a(const char* data, std::size_t n) {
@@ -195,7 +195,7 @@ void body_fields(A& a, B& b) {
         if (skins > (1u << 20)) throw Error(LFEM_IO_ERROR, "checkpoint: implausible skin count");
         b.skins.resize(std::size_t(skins));
     }
-    for (auto& skin : b.skins) a(skin.nodes), a(skin.weights), a(skin.triangles);
+    for (auto& skin : b.skins) a(skin.nodes_per_vertex), a(skin.nodes), a(skin.weights), a(skin.triangles);
 }
 
 // Consistency of what a Reader produced: every size and index a step relies on.
@@ -243,11 +243,13 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
                     sh.points.size() % 3 == 0,
                 "bad shape");
     for (const Skin& sk : b.skins) {
-        require(sk.weights.size() % 4 == 0 && sk.nodes.size() == sk.weights.size() && sk.triangles.size() % 3 == 0 &&
-                    sk.weights.size() / 4 <= UINT32_MAX && sk.triangles.size() / 3 <= UINT32_MAX,
+        const std::size_t per = sk.nodes_per_vertex;  // the tets' nodes: checked before dividing by it
+        require(per == r.nodes_per_tet, "a skin of another kind of tet than its body's");
+        require(sk.weights.size() % per == 0 && sk.nodes.size() == sk.weights.size() && sk.triangles.size() % 3 == 0 &&
+                    sk.weights.size() / per <= UINT32_MAX && sk.triangles.size() / 3 <= UINT32_MAX,
                 "bad skin");
         for (uint32_t i : sk.nodes) require(i < n, "skin node out of range");
-        for (uint32_t v : sk.triangles) require(v < sk.weights.size() / 4, "skin vertex index out of range");
+        for (uint32_t v : sk.triangles) require(v < sk.weights.size() / per, "skin vertex index out of range");
         for (double w : sk.weights) require(std::isfinite(w), "a non-finite number");
     }
     require(b.skins.empty() || t > 0, "skins on a body without tets");

@@ -1,7 +1,7 @@
 // One scene that exercises every kind of state a world holds: a static box mesh and a static
 // sphere shape, a kinematic plank, a rigid box, a corotational and a neo-Hookean soft body
 // (one with fixed nodes and node forces, one spinning, one with a skin), a corotational body of
-// 10-node tets, a destroyed body (a free slot), and contact between all of them. The checkpoint, out-of-memory and thread tests all run it. With
+// 10-node tets with a skin, a destroyed body (a free slot), and contact between all of them. The checkpoint, out-of-memory and thread tests all run it. With
 // `cells` = 10 the corotational body has 6000 tets and 1331 nodes: enough for many element
 // blocks and colours and two node blocks, so every parallel loop of a multi-threaded world
 // really splits.
@@ -75,6 +75,7 @@ struct RobustnessScene {
         d.angular_velocity[2] = 1.0;
         make_quadratic_box_mesh(quadratic, 0.06, 0.06, 0.06, 1, 1, 2, -0.2, -0.2, 0.002);
         bodies.push_back(add_body(w, d, quadratic));
+        add_skin_to(bodies.back(), -0.17, -0.17, 0.03);  // bound to all ten nodes of its tets
     }
 
     static lfem_world_def def(uint32_t thread_count) {
