@@ -745,7 +745,9 @@ LFEM_API lfem_status lfem_body_get_skin_vertices_f32(const lfem_world* world, lf
 /* ---------------------------------------------------------------------------------------- */
 
 /* The queries read the world as it is after the last call (the bodies' current, deformed
- * boundary triangles and their rigid shapes) and change nothing a step reads: stepping gives
+ * boundary triangles, for a body of 10-node tets the 4 flat triangles of each 6-node face
+ * through its mid-edge nodes, as contact sees them, and their rigid shapes) and change nothing
+ * a step reads: stepping gives
  * bitwise the same results whether or not queries were made. Their cost follows what the ray or
  * box meets, not the size of the scene: the step keeps a box per body and a tree of them
  * current once queries are in use; a static body's triangle tree is the one built with its mesh,
