@@ -56,6 +56,9 @@ static void default_camera(pg_camera* c, int width, int height) {
 static int reset(app* a) {
     pg_room_destroy(&a->room);
     memset(&a->grab, 0, sizeof a->grab);
+    const double fps = a->stats.fps;
+    memset(&a->stats, 0, sizeof a->stats); /* the HUD's figures start again with the room */
+    a->stats.fps = fps;
     return pg_room_create(&a->room, a->threads);
 }
 
