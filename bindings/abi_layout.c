@@ -41,7 +41,7 @@ CHECK_SIZE(lfem_phase_time, 16);
 CHECK_OFFSET(lfem_phase_time, seconds, 0);
 CHECK_OFFSET(lfem_phase_time, calls, 8);
 
-CHECK_SIZE(lfem_profile, 192);
+CHECK_SIZE(lfem_profile, 224);
 CHECK_OFFSET(lfem_profile, substeps, 0);
 CHECK_OFFSET(lfem_profile, internal_forces, 8);
 CHECK_OFFSET(lfem_profile, predictor, 24);
@@ -56,6 +56,10 @@ CHECK_OFFSET(lfem_profile, friction, 136);
 CHECK_OFFSET(lfem_profile, global_rotation, 152);
 CHECK_OFFSET(lfem_profile, commit, 168);
 CHECK_OFFSET(lfem_profile, candidate_searches, 184);
+CHECK_OFFSET(lfem_profile, queries, 192);
+CHECK_OFFSET(lfem_profile, query_bodies, 200);
+CHECK_OFFSET(lfem_profile, query_primitives, 208);
+CHECK_OFFSET(lfem_profile, query_refits, 216);
 
 CHECK_SIZE(lfem_world_stats, 184);
 CHECK_OFFSET(lfem_world_stats, time, 0);
@@ -86,6 +90,19 @@ CHECK_SIZE(lfem_warning, 24);
 CHECK_OFFSET(lfem_warning, count, 0);
 CHECK_OFFSET(lfem_warning, last_time, 8);
 CHECK_OFFSET(lfem_warning, last_body, 16);
+
+CHECK_SIZE(lfem_query_filter, 8);
+CHECK_OFFSET(lfem_query_filter, category_bits, 0);
+CHECK_OFFSET(lfem_query_filter, mask_bits, 4);
+
+CHECK_SIZE(lfem_ray_hit, 88);
+CHECK_OFFSET(lfem_ray_hit, body, 0);
+CHECK_OFFSET(lfem_ray_hit, triangle, 8);
+CHECK_OFFSET(lfem_ray_hit, shape, 12);
+CHECK_OFFSET(lfem_ray_hit, barycentric, 16);
+CHECK_OFFSET(lfem_ray_hit, point, 32);
+CHECK_OFFSET(lfem_ray_hit, normal, 56);
+CHECK_OFFSET(lfem_ray_hit, distance, 80);
 
 CHECK_SIZE(lfem_event_type, 4);
 CHECK_SIZE(lfem_attachment, 8);
@@ -161,5 +178,7 @@ int main(void) {
     printf("lfem_body_def %zu\nlfem_contact %zu\nlfem_shape_def %zu\n", sizeof(lfem_body_def),
            sizeof(lfem_contact), sizeof(lfem_shape_def));
     printf("lfem_warning_kind %zu\nlfem_warning %zu\n", sizeof(lfem_warning_kind), sizeof(lfem_warning));
+    printf("lfem_profile %zu\nlfem_query_filter %zu\nlfem_ray_hit %zu\n", sizeof(lfem_profile),
+           sizeof(lfem_query_filter), sizeof(lfem_ray_hit));
     return 0;
 }

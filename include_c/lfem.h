@@ -18,7 +18,8 @@
  *   copied). Objects it creates (world, mesh, series) are owned by the caller until the matching
  *   *_destroy call. Returned strings are owned by lfem and must not be freed.
  * - Thread safety: distinct worlds (and meshes and series) may be used from distinct threads at
- *   the same time. One world must not be used by two threads at once (no internal locking).
+ *   the same time. One world must not be used by two threads at once (no internal locking),
+ *   not even by two queries (they keep a cache inside the world).
  *   lfem_last_error() is per thread. The *_default, lfem_status_string and lfem_version*
  *   functions may be called from any thread at any time. A world created with thread_count > 1
  *   owns that many worker threads (created with it, joined by lfem_world_destroy); they work
@@ -258,6 +259,16 @@ typedef struct lfem_profile {
                                            moved beyond the margin of the last search, or the
                                            bodies changed; the sub-steps in between test the
                                            candidates only */
+    /* The queries (lfem_world_cast_ray, lfem_world_cast_ray_all, lfem_world_overlap_box): what
+     * they cost, as counts. A query pays for what its ray or box meets, not for the scene. */
+    uint64_t queries;                   /* rays and boxes answered */
+    uint64_t query_bodies;              /* bodies a query reached (their box met, the filter
+                                           passed) */
+    uint64_t query_primitives;          /* triangles and shapes a query tested exactly */
+    uint64_t query_refits;              /* trees of a moving body's triangles built or
+                                           refitted for the queries: at most once per body
+                                           between two steps, and only for bodies a query
+                                           reaches */
 } lfem_profile;
 
 /* The accumulated profile (see lfem_profile). */
@@ -665,6 +676,132 @@ typedef struct lfem_event {
  * lfem_world_query_contacts. */
 LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* out, uint32_t capacity,
                                            uint32_t* count);
+
+/* ---------------------------------------------------------------------------------------- */
+/* Skins: render meshes embedded in a body's tets                                             */
+/* ---------------------------------------------------------------------------------------- */
+
+/* A game draws a fine triangle mesh, not the simulation's tets. lfem_body_add_skin takes such a
+ * mesh in the body's rest frame (the coordinates of the meshes given to lfem_body_add_mesh) and
+ * binds each vertex once, by barycentric weights, to the tet that contains it; a vertex just
+ * outside the body (within one mean boundary edge of it) is bound to the nearest tet by the
+ * same weights extended affinely (some negative). Farther vertices are refused. The deformed
+ * vertex is then the weighted sum of the tet's corner nodes at their current positions: a
+ * vertex follows its tet exactly, and any affine motion of the tet (a stretch, a shear, a
+ * rotation, a translation) is reproduced to round-off, inside the tet or out. Several skins
+ * per body; skins are the body's data: checkpoints keep them, and no step reads them, so they
+ * cost nothing until read. Any body with tets may have skins (deformable, rigid, static,
+ * kinematic: they follow its nodes); not a body of a triangle mesh or shapes alone. A mesh
+ * added to the body later leaves the skins bound as they were (to the tets they were bound
+ * to). Vertices and triangles are the caller's own numbering, kept as given. Like every call on
+ * a world, not to be made from two threads at once. */
+
+/* Bind a triangle mesh to the body's tets. positions: 3*vertex_count doubles (m, finite, the
+ * body's rest frame); triangles: 3*triangle_count vertex indices (< vertex_count, three
+ * different ones per triangle; counter-clockwise seen from outside for outward normals).
+ * vertex_count and triangle_count >= 1. A triangle index out of range or repeated gives
+ * LFEM_INVALID_MESH; a vertex farther than one mean boundary edge from every tet,
+ * LFEM_INVALID_ARGUMENT naming it; a body without tets, LFEM_INVALID_ARGUMENT. The arrays are
+ * copied. *skin_index (nullable) receives the skin's index on the body, 0 for its first. */
+LFEM_API lfem_status lfem_body_add_skin(lfem_world* world, lfem_body body, const double* positions,
+                                        uint32_t vertex_count, const uint32_t* triangles,
+                                        uint32_t triangle_count, uint32_t* skin_index);
+/* The number of skins of the body. */
+LFEM_API lfem_status lfem_body_get_skin_count(const lfem_world* world, lfem_body body, uint32_t* out);
+/* The vertex and triangle counts of a skin (skin < lfem_body_get_skin_count, else
+ * LFEM_INVALID_ARGUMENT). Either output is nullable. */
+LFEM_API lfem_status lfem_body_get_skin_sizes(const lfem_world* world, lfem_body body, uint32_t skin,
+                                              uint32_t* vertex_count, uint32_t* triangle_count);
+/* The skin's triangles as given, into out[3*triangle_capacity]. LFEM_BUFFER_TOO_SMALL when
+ * triangle_capacity is below its triangle count (nothing written). */
+LFEM_API lfem_status lfem_body_get_skin_triangles(const lfem_world* world, lfem_body body, uint32_t skin,
+                                                  uint32_t* out, uint32_t triangle_capacity);
+/* The deformed skin: positions (m) into positions[3*vertex_capacity] and, when normals is not
+ * NULL, unit smooth normals into normals[3*vertex_capacity]: at each vertex the normalised sum
+ * of (b - a) x (c - a) over the skin's triangles (a, b, c) around it, i.e. their unit normals
+ * weighted by area; a vertex whose triangles have no area gets (0, 0, 0). LFEM_BUFFER_TOO_SMALL
+ * when vertex_capacity is below the vertex count (nothing written). */
+LFEM_API lfem_status lfem_body_get_skin_vertices(const lfem_world* world, lfem_body body, uint32_t skin,
+                                                 double* positions, double* normals, uint32_t vertex_capacity);
+/* The same as floats for a vertex buffer: vertex i at positions[i*position_stride + 0..2] and its
+ * normal (when normals is not NULL) at normals[i*normal_stride + 0..2]; strides are in floats,
+ * >= 3 (normal_stride is checked only with normals), so positions and normals may interleave in
+ * one buffer (normals = positions + 3, both strides 6). The floats between are not touched.
+ * The buffers must hold (vertex_capacity - 1) * stride + 3 floats. */
+LFEM_API lfem_status lfem_body_get_skin_vertices_f32(const lfem_world* world, lfem_body body, uint32_t skin,
+                                                     float* positions, uint32_t position_stride, float* normals,
+                                                     uint32_t normal_stride, uint32_t vertex_capacity);
+
+/* ---------------------------------------------------------------------------------------- */
+/* Queries: rays and boxes against the current geometry                                       */
+/* ---------------------------------------------------------------------------------------- */
+
+/* The queries read the world as it is after the last call (the bodies' current, deformed
+ * boundary triangles and their rigid shapes) and change nothing a step reads: stepping gives
+ * bitwise the same results whether or not queries were made. Their cost follows what the ray or
+ * box meets, not the size of the scene: the step keeps a box per body and a tree of them
+ * current once queries are in use; a static body's triangle tree is the one built with its mesh,
+ * and a moving body's tree is refitted only when a query reaches it after it moved (the profile
+ * counts queries, bodies reached, triangles and shapes tested and refits). The queries keep
+ * that cache inside the world: although they take a const world, do not make them from two
+ * threads at once, nor beside any other call on the same world. */
+
+/* A collision filter for a query, as the bodies' own: a body is seen when
+ * (body.category_bits & filter.mask_bits) != 0 and (filter.category_bits & body.mask_bits) != 0. */
+typedef struct lfem_query_filter {
+    uint32_t category_bits;
+    uint32_t mask_bits;
+} lfem_query_filter;
+
+/* category 1, mask all bits: sees every body whose mask has bit 0 (the bodies' default). */
+LFEM_API lfem_query_filter lfem_query_filter_default(void);
+
+/* Where a ray crosses a surface. */
+typedef struct lfem_ray_hit {
+    lfem_body body;
+    uint32_t triangle;       /* the body's boundary triangle (lfem_body_get_boundary_triangles
+                                order), UINT32_MAX when a shape was hit */
+    uint32_t shape;          /* the shape's index (lfem_body_add_shape), UINT32_MAX when a
+                                triangle was hit */
+    double barycentric[2];   /* t1, t2 as in lfem_contact: the point is (1 - t1 - t2) a + t2 b +
+                                t1 c of the triangle (a, b, c); 0 for a shape */
+    double point[3];         /* m, origin + distance * the unit direction */
+    double normal[3];        /* unit, out of the surface hit (out of the body or the shape's
+                                solid; a triangle's (b - a) x (c - a) direction) */
+    double distance;         /* m from the origin along the unit ray */
+} lfem_ray_hit;
+
+/* Cast the ray origin + t * direction / |direction| (m), t in [0, max_distance]: the nearest
+ * crossing of the surface of a body the filter sees (a boundary triangle, from either side, at
+ * its current position; or a plane, box, sphere, capsule or convex hull shape's surface). A ray
+ * starting inside a body or a shape meets its surface on the way out (the normal then points
+ * along the ray). direction: finite, any non-zero length; max_distance >= 0 (HUGE_VAL for no
+ * limit). *hit = 1 and *out set when something was hit, else *hit = 0 and *out untouched.
+ * Equally near hits are ordered by body index, triangles before shapes, then index: the answer
+ * depends on the geometry alone (a ray through an edge or a corner shared by several triangles
+ * reports one of them). */
+LFEM_API lfem_status lfem_world_cast_ray(const lfem_world* world, const double origin[3],
+                                         const double direction[3], double max_distance,
+                                         lfem_query_filter filter, lfem_ray_hit* out, int* hit);
+
+/* Every crossing along the ray, nearest first (ties as above); a ray through a body crosses
+ * its surface where it enters and where it leaves, a sphere or box shape twice, a plane once
+ * (and a ray through an edge or corner may list each triangle that shares it). *count is always
+ * the total; LFEM_BUFFER_TOO_SMALL when it exceeds capacity (out untouched). out is nullable
+ * when capacity is 0 (to ask for the count). */
+LFEM_API lfem_status lfem_world_cast_ray_all(const lfem_world* world, const double origin[3],
+                                             const double direction[3], double max_distance,
+                                             lfem_query_filter filter, lfem_ray_hit* out,
+                                             uint32_t capacity, uint32_t* count);
+
+/* The bodies the filter sees whose current geometry overlaps the box [lo, hi] (m, finite, lo <=
+ * hi on every axis; touching counts): a boundary triangle or a shape (solid: a box inside a
+ * sphere overlaps it) that meets the box, or a body of tets that holds the box inside it. In
+ * body index order. *count is always the total; LFEM_BUFFER_TOO_SMALL when it exceeds capacity
+ * (out untouched). out is nullable when capacity is 0. */
+LFEM_API lfem_status lfem_world_overlap_box(const lfem_world* world, const double lo[3], const double hi[3],
+                                            lfem_query_filter filter, lfem_body* out, uint32_t capacity,
+                                            uint32_t* count);
 
 /* ---------------------------------------------------------------------------------------- */
 /* Meshes: builders and Gmsh import                                                           */

@@ -244,6 +244,39 @@ namespace Lfem
         public PhaseTime GlobalRotation;
         public PhaseTime Commit;
         public ulong CandidateSearches; // contact's searches for candidate faces anew
+        public ulong Queries;           // rays and boxes the queries answered
+        public ulong QueryBodies;       // bodies a query reached (box met, filter passed)
+        public ulong QueryPrimitives;   // triangles and shapes a query tested exactly
+        public ulong QueryRefits;       // moving bodies' trees built or refitted for the queries
+    }
+
+    /// <summary>A query's collision filter (lfem_query_filter), as the bodies' own: a body is
+    /// seen when (body.CategoryBits &amp; MaskBits) != 0 and (CategoryBits &amp; body.MaskBits) != 0.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct QueryFilter
+    {
+        public uint CategoryBits;   // default 1
+        public uint MaskBits;       // default all bits
+
+        /// <summary>The defaults (lfem_query_filter_default).</summary>
+        public static QueryFilter Default { get { return Native.lfem_query_filter_default(); } }
+    }
+
+    /// <summary>Where a ray crossed a surface (lfem_ray_hit).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct RayHit
+    {
+        public Body Body;
+        public uint Triangle;         // the body's boundary triangle, or None for a shape
+        public uint Shape;            // the body's shape, or None for a triangle
+        public double Barycentric1, Barycentric2; // t1, t2: (1 - t1 - t2) a + t2 b + t1 c (0 for a shape)
+        public Vec3 Point;            // m, on the ray
+        public Vec3 Normal;           // unit, out of the surface hit
+        public double Distance;       // m from the origin along the unit ray
+
+        public const uint None = 0xFFFFFFFFu;
+
+        public bool HitsShape { get { return Shape != None; } }
     }
 
     /// <summary>A body handle (lfem_body): a value. Body.Null is {0, 0}.</summary>
@@ -846,6 +879,140 @@ namespace Lfem
             LfemException.Check(Native.lfem_body_set_kinematic_velocity(handle, body, ref linear, ref angular));
         }
 
+        // ---- skins ----
+
+        /// <summary>Bind a render mesh (vertices in the body's rest frame, m; triangles: 3
+        /// vertex indices each, flat) to the body's tets; returns the skin's index.</summary>
+        public uint AddSkin(Body body, Vec3[] positions, uint[] triangles)
+        {
+            if (positions == null) throw new ArgumentNullException("positions");
+            if (triangles == null) throw new ArgumentNullException("triangles");
+            if (triangles.Length % 3 != 0)
+                throw new ArgumentException("Lfem: triangles.Length " + triangles.Length + " is not a multiple of 3", "triangles");
+            uint index;
+            LfemException.Check(Native.lfem_body_add_skin(handle, body, positions, (uint)positions.Length, triangles,
+                                                          (uint)(triangles.Length / 3), out index));
+            return index;
+        }
+
+        public int SkinCount(Body body)
+        {
+            uint n; LfemException.Check(Native.lfem_body_get_skin_count(handle, body, out n)); return checked((int)n);
+        }
+
+        /// <summary>The vertex and triangle counts of a skin.</summary>
+        public void GetSkinSizes(Body body, uint skin, out int vertexCount, out int triangleCount)
+        {
+            uint v, t;
+            LfemException.Check(Native.lfem_body_get_skin_sizes(handle, body, skin, out v, out t));
+            vertexCount = checked((int)v);
+            triangleCount = checked((int)t);
+        }
+
+        private int SkinSize(Body body, uint skin, bool vertices, string call)
+        {
+            uint v, t;
+            Status s = Native.lfem_body_get_skin_sizes(handle, body, skin, out v, out t);
+            if (s != Status.Ok) throw LfemException.FromLastError(s).Renamed("lfem_body_get_skin_sizes", call);
+            return checked((int)(vertices ? v : t));
+        }
+
+        /// <summary>A skin's triangles as given, 3 vertex indices each (flat).</summary>
+        public uint[] GetSkinTriangles(Body body, uint skin)
+        {
+            int n = SkinSize(body, skin, false, "lfem_body_get_skin_triangles");
+            uint[] t = new uint[3 * n];
+            LfemException.Check(Native.lfem_body_get_skin_triangles(handle, body, skin, t, (uint)n));
+            return t;
+        }
+
+        /// <summary>A skin's deformed vertices (m) and unit smooth normals into the buffers
+        /// (normals may be null); Status.BufferTooSmall when a buffer is too short.</summary>
+        public void GetSkinVertices(Body body, uint skin, Vec3[] positions, Vec3[] normals)
+        {
+            if (positions == null) throw new ArgumentNullException("positions");
+            if (normals != null && normals.Length < positions.Length)
+                throw new ArgumentException("Lfem: normals is shorter than positions", "normals");
+            LfemException.Check(Native.lfem_body_get_skin_vertices(handle, body, skin, positions, normals, (uint)positions.Length));
+        }
+
+        public Vec3[] GetSkinVertices(Body body, uint skin, out Vec3[] normals)
+        {
+            int n = SkinSize(body, skin, true, "lfem_body_get_skin_vertices");
+            Vec3[] p = new Vec3[n];
+            normals = new Vec3[n];
+            GetSkinVertices(body, skin, p, normals);
+            return p;
+        }
+
+        /// <summary>A skin's vertices into an interleaved float vertex buffer of stride floats
+        /// per vertex: the position at buffer[i * stride + 0..2] and, with normals, the unit
+        /// normal right after it (buffer[i * stride + 3..5]); the other floats are left alone.
+        /// stride >= 3 (6 with normals).</summary>
+        public void GetSkinVertexBuffer(Body body, uint skin, float[] buffer, int stride, bool normals)
+        {
+            if (buffer == null) throw new ArgumentNullException("buffer");
+            int width = normals ? 6 : 3;
+            if (stride < width)
+                throw new ArgumentException("Lfem: stride " + stride + " is below the " + width + " floats of a vertex", "stride");
+            int n = SkinSize(body, skin, true, "lfem_body_get_skin_vertices_f32");
+            if (n > 0 && buffer.Length < (long)(n - 1) * stride + width)
+                throw new ArgumentException("Lfem: a buffer of " + buffer.Length + " floats is below the " +
+                                            ((long)(n - 1) * stride + width) + " that " + n + " vertices need", "buffer");
+            GCHandle pin = GCHandle.Alloc(buffer, GCHandleType.Pinned);
+            try
+            {
+                IntPtr p = pin.AddrOfPinnedObject();
+                LfemException.Check(Native.lfem_body_get_skin_vertices_f32(handle, body, skin, p, (uint)stride,
+                                                                           normals ? p + 3 * sizeof(float) : IntPtr.Zero,
+                                                                           (uint)stride, (uint)n));
+            }
+            finally
+            {
+                pin.Free();
+            }
+        }
+
+        // ---- queries ----
+
+        /// <summary>The nearest crossing of the ray origin + t direction / |direction|, t in
+        /// [0, maxDistance] (m; double.PositiveInfinity for no limit), with the surface of a body
+        /// the filter sees; false when it meets nothing (hit then default).</summary>
+        public bool CastRay(Vec3 origin, Vec3 direction, double maxDistance, QueryFilter filter, out RayHit hit)
+        {
+            int found;
+            RayHit h = default(RayHit);
+            LfemException.Check(Native.lfem_world_cast_ray(handle, ref origin, ref direction, maxDistance, filter, ref h, out found));
+            hit = h;
+            return found == 1;
+        }
+
+        /// <summary>Every crossing along the ray, nearest first.</summary>
+        public RayHit[] CastRayAll(Vec3 origin, Vec3 direction, double maxDistance, QueryFilter filter)
+        {
+            uint count;
+            Status s = Native.lfem_world_cast_ray_all(handle, ref origin, ref direction, maxDistance, filter, null, 0, out count);
+            if (s != Status.BufferTooSmall) LfemException.Check(s);
+            RayHit[] hits = new RayHit[count];
+            if (count > 0)
+                LfemException.Check(Native.lfem_world_cast_ray_all(handle, ref origin, ref direction, maxDistance, filter, hits,
+                                                                   count, out count));
+            return hits;
+        }
+
+        /// <summary>The bodies the filter sees whose current geometry overlaps the box [lo, hi]
+        /// (m), in body order.</summary>
+        public Body[] OverlapBox(Vec3 lo, Vec3 hi, QueryFilter filter)
+        {
+            uint count;
+            Status s = Native.lfem_world_overlap_box(handle, ref lo, ref hi, filter, null, 0, out count);
+            if (s != Status.BufferTooSmall) LfemException.Check(s);
+            Body[] bodies = new Body[count];
+            if (count > 0)
+                LfemException.Check(Native.lfem_world_overlap_box(handle, ref lo, ref hi, filter, bodies, count, out count));
+            return bodies;
+        }
+
         // ---- contacts ----
 
         /// <summary>The number of active contacts of the last step.</summary>
@@ -1081,6 +1248,18 @@ namespace Lfem
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(WorldHandle world, [Out] Contact[] contacts, uint capacity, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_query_contacts(IntPtr world, [Out] Contact[] contacts, uint capacity, out uint count);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_add_skin(WorldHandle world, Body body, [In] Vec3[] positions, uint vertexCount, [In] uint[] triangles, uint triangleCount, out uint skinIndex);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_skin_count(WorldHandle world, Body body, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_skin_sizes(WorldHandle world, Body body, uint skin, out uint vertexCount, out uint triangleCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_skin_triangles(WorldHandle world, Body body, uint skin, [Out] uint[] triangles, uint triangleCapacity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_skin_vertices(WorldHandle world, Body body, uint skin, [Out] Vec3[] positions, [Out] Vec3[] normals, uint vertexCapacity);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_skin_vertices_f32(WorldHandle world, Body body, uint skin, IntPtr positions, uint positionStride, IntPtr normals, uint normalStride, uint vertexCapacity);
+
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern QueryFilter lfem_query_filter_default();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_cast_ray(WorldHandle world, ref Vec3 origin, ref Vec3 direction, double maxDistance, QueryFilter filter, ref RayHit hit, out int found);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_cast_ray_all(WorldHandle world, ref Vec3 origin, ref Vec3 direction, double maxDistance, QueryFilter filter, [Out] RayHit[] hits, uint capacity, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_overlap_box(WorldHandle world, ref Vec3 lo, ref Vec3 hi, QueryFilter filter, [Out] Body[] bodies, uint capacity, out uint count);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_box(ref Vec3 size, [In] uint[] cells, out MeshHandle mesh);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_cylinder(double radius, double height, uint segments, uint rings, uint layers, out MeshHandle mesh);

@@ -191,7 +191,11 @@ LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profil
     return guard(__func__, [&] {
         const World& w = world_of(world);
         require_pointer(out, "out");
-        *out = w.profile();
+        lfem_profile p = w.profile();
+        const QueryCounts& q = w.query_counts();
+        p.queries = q.queries, p.query_bodies = q.bodies, p.query_primitives = q.primitives;
+        p.query_refits = q.refits;
+        *out = p;
     });
 }
 

@@ -1,5 +1,5 @@
-// Boxes for the broad phase of contact detection: axis-aligned boxes, and a spatial hash of
-// them that finds the pairs of bodies whose boxes overlap in O(bodies) (a counting sort into a
+// The broad phase of contact detection: a spatial hash of axis-aligned boxes (common/box.h)
+// that finds the pairs of bodies whose boxes overlap in O(bodies) (a counting sort into a
 // table of buckets, no pairs of everything). Within a pair of bodies, the triangles come from
 // each body's tree (triangle_bvh.h).
 #pragma once
@@ -7,26 +7,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/box.h"
 
 namespace lfem {
-
-struct Aabb {
-    double lo[3], hi[3];
-};
-
-// A box that contains nothing and overlaps nothing.
-inline Aabb empty_box() {
-    Aabb b;
-    for (int k = 0; k < 3; ++k) b.lo[k] = __builtin_huge_val(), b.hi[k] = -__builtin_huge_val();
-    return b;
-}
-
-// Whether two boxes overlap (touching counts); a box with a NaN corner overlaps nothing.
-inline bool overlaps(const Aabb& a, const Aabb& b) {
-    for (int k = 0; k < 3; ++k)
-        if (!(a.hi[k] >= b.lo[k] && b.hi[k] >= a.lo[k])) return false;
-    return true;
-}
 
 // A spatial hash of boxes in a grid of cubic cells.
 class SpatialHash {

@@ -26,11 +26,6 @@ Aabb point_box(const double* x, double r) {
     return b;
 }
 
-Aabb grown(Aabb b, double r) {
-    for (int k = 0; k < 3; ++k) b.lo[k] -= r, b.hi[k] += r;
-    return b;
-}
-
 // The largest per-axis distance of a body's surface nodes, at the start and at the end of the
 // step, from `reference` (3 per surface node).
 double largest_move(const ContactBody& b, const double* reference) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/ray_triangle.h"
 #include "contact/detection_tolerances.h"
 #include "contact/warm_start.h"
 
@@ -205,17 +206,8 @@ bool segment_crosses_body(const Vec3& from, const Vec3& to, uint32_t skip, const
         if (crosses || t == skip) return;
         const uint32_t* tri = &b.triangles[3 * t];
         const Vec3 v0 = position(b.x_start, tri[0]), e1 = position(b.x_start, tri[1]) - v0, e2 = position(b.x_start, tri[2]) - v0;
-        const Vec3 pv = d.cross(e2);
-        const double det = e1.dot(pv);
-        if (std::fabs(det) < 1e-300) return;
-        const Vec3 tv = from - v0;
-        const double u = tv.dot(pv) / det;
-        if (u < 0.0 || u > 1.0) return;
-        const Vec3 qv = tv.cross(e1);
-        const double v = d.dot(qv) / det;
-        if (v < 0.0 || u + v > 1.0) return;
-        const double s = e2.dot(qv) / det;
-        crosses = s > 1e-9 && s < 1.0 - 1e-9;
+        double s, u, v;
+        if (line_meets_triangle(from, d, v0, e1, e2, s, u, v)) crosses = s > 1e-9 && s < 1.0 - 1e-9;
     });
     return crosses;
 }

@@ -1,13 +1,14 @@
-// A bounding volume hierarchy of a body's boundary triangles: a binary tree of axis-aligned
-// boxes, leaves of a few triangles. A static body's tree is built once, when its mesh is added;
-// a moving body's is refitted (new boxes, same tree) when contact looks for candidates again.
-// A query visits the triangles whose box overlaps a box: O(log T + k), whatever the size of
-// the triangles or of the terrain.
+// A bounding volume hierarchy of a body's boundary triangles (a BoxTree of their boxes). A
+// static body's tree is built once, when its mesh is added; a moving body's is refitted (new
+// boxes, same tree) when contact looks for candidates again, and the queries keep trees of
+// their own (query/query_scene.h). A box query visits the triangles whose box overlaps a box:
+// O(log T + k), whatever the size of the triangles or of the terrain.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "common/box_tree.h"
 #include "contact/broad_phase.h"
 
 namespace lfem {
@@ -30,43 +31,26 @@ public:
     // O(T log T).
     void build(const double* x, const uint32_t* triangles, uint32_t triangle_count);
     // The boxes again, bottom up, for the same triangles at new positions x. O(T).
-    void refit(const double* x, const uint32_t* triangles);
-    bool empty() const { return nodes_.empty(); }
+    void refit(const double* x, const uint32_t* triangles) {
+        tree_.refit([&](uint32_t t) { return triangle_box(x, &triangles[3 * std::size_t(t)]); });
+    }
+    bool empty() const { return tree_.empty(); }
     // The box of every triangle (the root's box); only for a non-empty tree.
-    const Aabb& bounds() const { return nodes_[0].box; }
+    const Aabb& bounds() const { return tree_.bounds(); }
     // visit(t), in no particular order, for every triangle t (3 node indices each in
     // `triangles`) whose box at the positions x overlaps `box`. The tree's own boxes come from
     // the positions it was built or refitted on, which may lie up to `drift` per axis from x.
     template <class Visit>
     void query(const Aabb& box, const double* x, const uint32_t* triangles, double drift, const Visit& visit) const {
-        if (nodes_.empty()) return;
-        Aabb reach = box;
-        for (int k = 0; k < 3; ++k) reach.lo[k] -= drift, reach.hi[k] += drift;
-        uint32_t stack[64];
-        int top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            const Node& n = nodes_[stack[--top]];
-            if (!overlaps(n.box, reach)) continue;
-            if (n.count > 0) {
-                for (uint32_t i = n.first; i < n.first + n.count; ++i)
-                    if (overlaps(triangle_box(x, &triangles[3 * std::size_t(order_[i])]), box)) visit(order_[i]);
-            } else {
-                stack[top++] = n.first;
-                stack[top++] = n.first + 1;
-            }
-        }
+        tree_.query(grown(box, drift), [&](uint32_t t) {
+            if (overlaps(triangle_box(x, &triangles[3 * std::size_t(t)]), box)) visit(t);
+        });
     }
+    // The tree itself (its ray traversal, for the queries).
+    const BoxTree& tree() const { return tree_; }
 
 private:
-    struct Node {
-        Aabb box;
-        uint32_t first = 0;  // leaf: first of order_; inner node: its first child (the second follows)
-        uint32_t count = 0;  // leaf: its triangles; 0 for an inner node
-    };
-    uint32_t build_node(uint32_t node, uint32_t first, uint32_t count, const std::vector<double>& centroid);
-    std::vector<Node> nodes_;
-    std::vector<uint32_t> order_;  // triangle indices, leaf by leaf
+    BoxTree tree_;
 };
 
 }  // namespace lfem

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "common/cpu_dispatch.h"
+#include "fem/block_result.h"
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
 #include "fem/quadratic_forces.h"
@@ -32,14 +33,6 @@ struct Batch {
     double psi[kLanes];       // energy density
     double tangent[kLanes];   // neo-Hookean: the tangent estimate (neo_hookean_tangent.h)
     double J[kLanes];         // det F, the tet's volume ratio (<= 0: turned inside out)
-};
-
-// What a block of tets gives besides its forces.
-struct BlockResult {
-    double energy = 0;     // J, strain energy
-    double tangent = 0;    // the largest tangent estimate (a model with kTangent)
-    uint32_t inverted = 0; // tets with J <= 0
-    double min_J = HUGE_VAL;
 };
 
 // J = det F of every lane; with displacement edges the batch holds grad u, and F = I + grad u.
@@ -317,15 +310,7 @@ BlockResult element_loop(const ElementMesh& mesh, const double* x, double* f, Th
             per_block[blocks[i]] = block_forces(d, blocks[i], model);
         });
     }
-    BlockResult total;
-    total.energy = 0.0;
-    for (const BlockResult& r : per_block) {
-        total.energy += r.energy;
-        total.tangent = std::max(total.tangent, r.tangent);
-        total.inverted += r.inverted;
-        total.min_J = std::min(total.min_J, r.min_J);
-    }
-    return total;
+    return sum_blocks(per_block);
 }
 
 // The forces of one body's state: strain energy and (a model with kTangent) the stiffening of
@@ -334,11 +319,7 @@ template <bool displacement_edges, class Model>
 ElasticResult elastic_forces(const ElementMesh& mesh, const ElasticState& state, ThreadPool* pool,
                              const Model& model) {
     const BlockResult r = element_loop<displacement_edges>(mesh, state.x.data(), state.force.data(), pool, model);
-    ElasticResult out;
-    out.strain_energy = r.energy;
-    out.inverted_tets = r.inverted;
-    out.min_jacobian = r.min_J < HUGE_VAL ? r.min_J : 1.0;  // (no tets: nothing crushed)
-    out.stiffening = 1.0;
+    ElasticResult out = elastic_result(r);
     if constexpr (Model::kTangent) {
         const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, model.mu, model.lam);
         out.stiffening = std::max(1.0, r.tangent / at_rest);

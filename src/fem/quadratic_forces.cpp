@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "fem/block_result.h"
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
 #include "fem/quadratic_tet.h"
@@ -146,16 +147,6 @@ LFEM_QUADRATIC_INLINE void add_nodal_forces(const Mat3& G, const PointWeights& p
     }
 }
 
-// What a block of tets gives besides its forces. A 10-node tet's volume ratio J = det F varies
-// within it: it counts as inverted when J <= 0 at one of its quadrature points, and min_J is
-// the smallest J at the points.
-struct BlockResult {
-    double energy = 0;      // J, strain energy
-    double tangent = 0;     // the largest tangent estimate (kTangent) or barrier stiffness (kBarrier)
-    uint32_t inverted = 0;  // tets with J <= 0 at a quadrature point
-    double min_J = HUGE_VAL;
-};
-
 // The volume barrier at one quadrature point of deformation F, added to P and psi (rare: only
 // below J_b); returns the stiffness it adds, 0 above J_b.
 LFEM_QUADRATIC_INLINE double add_barrier(const Mat3& F, double J, const Lame& lame, Mat3& P, double& psi) {
@@ -216,24 +207,14 @@ BlockResult quadratic_loop(const ElementMesh& mesh, const double* x, double* f, 
     std::vector<BlockResult> per_block(colouring.block_count());
     for_each_block_by_colour(colouring, pool,
                              [&](uint32_t b) { per_block[b] = quadratic_block<displacement>(d, b, model); });
-    BlockResult total;
-    for (const BlockResult& r : per_block) {
-        total.energy += r.energy;
-        total.tangent = std::max(total.tangent, r.tangent);
-        total.inverted += r.inverted;
-        total.min_J = std::min(total.min_J, r.min_J);
-    }
-    return total;
+    return sum_blocks(per_block);
 }
 
 template <bool displacement, class Model>
 ElasticResult quadratic_forces(const ElementMesh& mesh, const ElasticState& state, ThreadPool* pool,
                                const Model& model) {
     const BlockResult r = quadratic_loop<displacement>(mesh, state.x.data(), state.force.data(), pool, model);
-    ElasticResult out;
-    out.strain_energy = r.energy;
-    out.inverted_tets = r.inverted;
-    out.min_jacobian = r.min_J < HUGE_VAL ? r.min_J : 1.0;  // (no tets: nothing crushed)
+    ElasticResult out = elastic_result(r);
     // As for linear tets (internal_forces.cpp): the neo-Hookean's tangent over its value at
     // rest; the barrier's stiffness on top of Hooke's, whose largest tangent eigenvalue is that
     // of the neo-Hookean at rest.

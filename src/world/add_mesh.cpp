@@ -257,6 +257,7 @@ void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_co
     if (body.is_dynamic()) state_.counters.initial_energy += added_kinetic;
     state_.counters.scan_overlaps = true;
     body.geometry_revision += 1;
+    moved();
 }
 
 void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_t node_count,
@@ -299,6 +300,7 @@ void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_
     body.node_mode = std::move(modes);
     state_.counters.scan_overlaps = true;
     body.geometry_revision += 1;
+    moved();
 }
 
 uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const double pose[7]) {
@@ -312,6 +314,7 @@ uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const doubl
     body.shapes.push_back(std::move(copy));
     body.state.shape_pose.insert(body.state.shape_pose.end(), pose, pose + 7);
     body.geometry_revision += 1;
+    moved();
     return uint32_t(body.shapes.size() - 1);
 }
 

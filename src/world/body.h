@@ -19,6 +19,7 @@
 #include "mesh/surface.h"
 #include "rigid/global_rotation.h"
 #include "rigid/rigid_body.h"
+#include "skin/skin.h"
 
 namespace lfem {
 
@@ -90,6 +91,8 @@ struct Body {
     std::vector<double> prescribed_velocity;  // 3 per node, empty until first prescribed
     std::vector<double> node_force;           // 3 per node, empty until a force is set
     std::vector<RigidShape> shapes;           // rigid shapes (static and kinematic bodies)
+    std::vector<Skin> skins;                  // render meshes bound to the tets (skin/skin.h);
+                                              // never read by a step
 
     bool is_deformable() const { return def.type == LFEM_BODY_DEFORMABLE; }
     bool is_rigid() const { return def.type == LFEM_BODY_RIGID; }

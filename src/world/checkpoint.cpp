@@ -24,13 +24,12 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 7;  // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 8;  // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
-                                        // sleeping, the touching pairs
-                                        // 7: 10-node tets (nodes per tet, quadrature volumes,
-                                        // 6-node faces)
+                                        // sleeping, the touching pairs; 7: 10-node tets (nodes
+                                        // per tet, quadrature volumes, 6-node faces); 8: skins
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -44,6 +43,7 @@ static_assert(sizeof(Attachment) == 240, "Attachment changed: update the checkpo
 static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
+static_assert(sizeof(Skin) == 72, "Skin changed: update the checkpoint");
 #endif
 
 uint64_t fnv1a(const char* data, std::size_t n) {
@@ -189,6 +189,13 @@ void body_fields(A& a, B& b) {
         b.shapes.resize(std::size_t(shapes));
     }
     for (auto& shape : b.shapes) shape_fields(a, shape);
+    uint64_t skins = b.skins.size();
+    a(skins);
+    if constexpr (A::loading) {
+        if (skins > (1u << 20)) throw Error(LFEM_IO_ERROR, "checkpoint: implausible skin count");
+        b.skins.resize(std::size_t(skins));
+    }
+    for (auto& skin : b.skins) a(skin.nodes), a(skin.weights), a(skin.triangles);
 }
 
 // Consistency of what a Reader produced: every size and index a step relies on.
@@ -235,6 +242,15 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
         require(sh.type >= LFEM_SHAPE_PLANE && sh.type <= LFEM_SHAPE_CONVEX_HULL &&
                     sh.points.size() % 3 == 0,
                 "bad shape");
+    for (const Skin& sk : b.skins) {
+        require(sk.weights.size() % 4 == 0 && sk.nodes.size() == sk.weights.size() && sk.triangles.size() % 3 == 0 &&
+                    sk.weights.size() / 4 <= UINT32_MAX && sk.triangles.size() / 3 <= UINT32_MAX,
+                "bad skin");
+        for (uint32_t i : sk.nodes) require(i < n, "skin node out of range");
+        for (uint32_t v : sk.triangles) require(v < sk.weights.size() / 4, "skin vertex index out of range");
+        for (double w : sk.weights) require(std::isfinite(w), "a non-finite number");
+    }
+    require(b.skins.empty() || t > 0, "skins on a body without tets");
     bool prescribed = false;
     for (NodeMode m : b.node_mode) prescribed = prescribed || m == NodeMode::prescribed;
     require(!prescribed || b.prescribed_velocity.size() == 3 * n, "prescribed nodes without velocities");

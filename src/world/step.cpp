@@ -206,11 +206,12 @@ void World::step(double dt) {
 }
 
 // After a call's sub-steps: the caller's frames reach where they were set, bodies at rest fall
-// asleep, and the call's events are handed out.
+// asleep, the call's events are handed out, and the queries' cache follows the bodies.
 void World::finish_call(double dt) {
     finish_attachment_frames();
     update_sleep(dt);
     finish_call_events();
+    moved(pool_.get());  // the queries' boxes of the new positions (once queries are in use)
 }
 
 }  // namespace lfem

@@ -31,6 +31,7 @@ void World::destroy_body(lfem_body h) {
     contacts.erase(std::remove_if(contacts.begin(), contacts.end(),
                                   [&](const ContactRecord& r) { return r.body_a == h.index || r.body_b == h.index; }),
                    contacts.end());
+    moved();
 }
 
 void World::restore(WorldImage&& image) {
@@ -41,6 +42,7 @@ void World::restore(WorldImage&& image) {
     uint32_t highest = 0;  // attachment handles of the file stay unique too
     for (const Attachment& a : state_.attachments.slots) highest = std::max(highest, a.generation);
     keep_generations_above(highest);
+    moved();
 }
 
 }  // namespace lfem

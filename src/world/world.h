@@ -18,6 +18,7 @@
 #include "contact/detect_node_triangle.h"
 #include "contact/solve_contact_multipliers.h"
 #include "lfem.h"
+#include "query/query_scene.h"
 #include "world/body.h"
 #include "contact/link_constraint.h"
 #include "world/body_registry.h"
@@ -85,6 +86,10 @@ public:
     // Gives a static or kinematic body a rigid shape at the given placement (7 doubles);
     // returns its index on the body.
     uint32_t add_shape(lfem_body body, const RigidShape& shape, const double pose[7]);
+    // Binds a render mesh (vertices in the body's rest frame, triangles checked by the caller)
+    // to the body's tets (see lfem_body_add_skin); returns its index on the body.
+    uint32_t add_skin(lfem_body body, const double* positions, uint32_t vertex_count, const uint32_t* triangles,
+                      uint32_t triangle_count);
 
     // ---- loads and supports (loads_and_supports.cpp). Node indices are the body's own
     // (internal) numbering, checked by the caller: in range, no repeats.
@@ -144,8 +149,20 @@ public:
     const std::vector<ContactRecord>& contacts() const { return state_.contacts; }
     // Time and counts per phase of the step, accumulated (see lfem_profile).
     const lfem_profile& profile() const { return profile_; }
-    void reset_profile() { profile_ = lfem_profile{}; }
+    void reset_profile() {
+        profile_ = lfem_profile{};
+        queries_.reset_counts();
+    }
     void clear_warnings() { state_.counters.warnings = Warnings{}; }
+
+    // ---- queries (queries.cpp): reads of the current geometry through a cache of their own
+    // (query/query_scene.h), which no step reads. Each query is a const call that updates the
+    // cache: not to be made from two threads at once.
+    bool cast_ray(const QueryRay& ray, const QueryFilter& filter, RayHit& out) const;
+    void cast_ray_all(const QueryRay& ray, const QueryFilter& filter, std::vector<RayHit>& out) const;
+    void overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<uint32_t>& slots) const;
+    const QueryCounts& query_counts() const { return queries_.counts(); }
+    void reset_query_counts() { queries_.reset_counts(); }
 
     // ---- checkpoints (checkpoint.h)
     const WorldState& state() const { return state_; }
@@ -202,6 +219,11 @@ private:
     void compute_element_forces();
     void add_up_energy(double h, double& kinetic, double& strain, double& work);
     void count_warnings(double h);
+    // Positions or geometry may have changed: the queries' cache is stale. After a step (with
+    // the pool), once queries are in use, it is made current at once, so that a query pays
+    // only for what it meets; if that runs out of memory it throws (the step rolls back) and
+    // leaves the cache stale for every revision.
+    void moved(ThreadPool* pool = nullptr);
     // attachments.cpp
     void build_links(double fraction);
     void take_link_forces(double h);
@@ -244,6 +266,8 @@ private:
     DetectionScratch detection_;
     ContactSolveScratch solve_scratch_;
     std::unique_ptr<ThreadPool> pool_;  // the step's parallel loops
+    uint64_t revision_ = 1;             // moved by every change of positions or geometry
+    mutable QueryScene queries_;        // the queries' cache (never read by a step)
 };
 
 }  // namespace lfem

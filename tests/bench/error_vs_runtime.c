@@ -49,6 +49,9 @@ typedef struct run_row {
     double penetration;   /* m */
     double momentum, kinetic, volume; /* spin */
     int quadratic;        /* 10-node tets */
+    double mass_scaling;  /* requested step / the step without mass scaling (1: the series'
+                             reference run); NAN outside the mass-scaling series */
+    double added_mass;    /* what mass scaling added over the body's mass with it */
     uint32_t nodes;
     char mesh[32];        /* "40x1x1", or the Hertz mesh's name */
 } run_row;
@@ -70,6 +73,7 @@ static run_row* new_row(row_list* list) {
     memset(r, 0, sizeof *r);
     r->impulse = r->plateau = r->peak_force = r->duration = r->v1 = r->v2 = NAN;
     r->penetration = r->momentum = r->kinetic = r->volume = NAN;
+    r->mass_scaling = r->added_mass = NAN;
     r->stable = 1;
     return r;
 }
@@ -137,6 +141,7 @@ static int run_two_bar(row_list* list, const two_bar_config* c, two_bar_result* 
     r->v1 = res.v1 / e.v1 - 1;
     r->v2 = res.v2 / e.v2 - 1;
     r->penetration = res.max_penetration;
+    r->added_mass = res.added_mass / res.mass;
     print_row(r);
     if (out) *out = res;
     return 0;
@@ -144,9 +149,11 @@ static int run_two_bar(row_list* list, const two_bar_config* c, two_bar_result* 
 
 typedef int (*case_function)(const case_config*, case_result*);
 
-static int run_case(row_list* list, const char* problem, case_function run, lfem_model model,
-                    const uint32_t cells[3], double safety, double duration, int quadratic) {
-    const case_config c = {model, {cells[0], cells[1], cells[2]}, safety, duration, quadratic};
+static int run_case_config(row_list* list, const char* problem, case_function run, case_config c) {
+    const lfem_model model = c.model;
+    const uint32_t* cells = c.cells;
+    const double safety = c.safety;
+    const int quadratic = c.quadratic;
     case_result res, again;
     if (run(&c, &res) != 0) return -1;
     for (int k = 1; k < g_repeats; ++k) {
@@ -177,8 +184,45 @@ static int run_case(row_list* list, const char* problem, case_function run, lfem
         if (fabs(r->kinetic) > fabs(r->error)) r->error = r->kinetic;
         if (fabs(r->volume) > fabs(r->error)) r->error = r->volume;
     }
-    if (strcmp(problem, "incline") == 0) r->penetration = res.second_error;
+    if (strcmp(problem, "incline") == 0) {
+        r->penetration = res.second_error;
+        r->added_mass = res.added_mass_share;
+    }
     print_row(r);
+    return 0;
+}
+
+static int run_case(row_list* list, const char* problem, case_function run, lfem_model model,
+                    const uint32_t cells[3], double safety, double duration, int quadratic) {
+    const case_config c = {model, {cells[0], cells[1], cells[2]}, safety, duration, quadratic, 0.0};
+    return run_case_config(list, problem, run, c);
+}
+
+/* Mass scaling (issue 16), what it costs in accuracy: the two bars (40 cells, paper model) and
+ * the incline (3^3 cells) with the step requested at 1 (the reference: nothing added), 2, 4
+ * and 8 times the automatic step without it. Every tet of these uniform meshes needs the same
+ * step, so all get the added mass, (factor^2 - 1) times their own: waves run factor times
+ * slower. The bars' impulse and contact time are set by their mass and wave speed, and so go
+ * wrong with it; the block sliding under gravity and Coulomb friction accelerates at
+ * g (sin a - mu cos a) whatever its mass, so the incline keeps its accuracy and gets cheaper. */
+static int run_mass_scaling(row_list* list, int quick) {
+    static const double factors[4] = {1, 2, 4, 8};
+    two_bar_config bar = {LFEM_MODEL_PAPER, {40, 1, 1}, 0.0, 0.9, 0.0, 200e-6, 0, 0.0};
+    two_bar_result reference;
+    if (two_bar_run(&bar, &reference) != 0) return -1;
+    const case_config block = {LFEM_MODEL_PAPER, {3, 3, 3}, 0.9, 0, 0, 0.0};
+    case_result sliding;
+    if (incline_run(&block, &sliding) != 0) return -1;
+    for (int k = quick ? 1 : 0; k < (quick ? 2 : 4); ++k) {
+        /* The requested step is factor times the step taken without scaling. */
+        bar.mass_scaling_step = factors[k] > 1 ? factors[k] * reference.step : 0.0;
+        if (run_two_bar(list, &bar, NULL) != 0) return -1;
+        list->rows[list->count - 1].mass_scaling = factors[k];
+        case_config c = block;
+        c.mass_scaling_step = factors[k] > 1 ? factors[k] * sliding.step : 0.0;
+        if (run_case_config(list, "incline", incline_run, c) != 0) return -1;
+        list->rows[list->count - 1].mass_scaling = factors[k];
+    }
     return 0;
 }
 
@@ -231,7 +275,7 @@ static int run_quadratic_cases(row_list* list, int quick) {
     static const uint32_t bars[7][3] = {{20, 1, 1}, {40, 1, 1}, {80, 1, 1}, {160, 1, 1},
                                         {20, 2, 2}, {40, 2, 2}, {80, 2, 2}};
     for (int i = 0; i < (quick ? 1 : 7); ++i) {
-        const two_bar_config bar = {LFEM_MODEL_PAPER, {bars[i][0], bars[i][1], bars[i][2]}, 0.0, 0.9, 0.0, 200e-6, 1};
+        const two_bar_config bar = {LFEM_MODEL_PAPER, {bars[i][0], bars[i][1], bars[i][2]}, 0.0, 0.9, 0.0, 200e-6, 1, 0.0};
         if (run_two_bar(list, &bar, NULL) != 0) return -1;
     }
     static const uint32_t beams[5][3] = {{10, 1, 1}, {20, 1, 1}, {20, 1, 2}, {30, 1, 3}, {40, 1, 4}};
@@ -310,7 +354,8 @@ static int write_csv(const char* path, const row_list* list) {
      * cells, or the Hertz mesh (cells 0). */
     fprintf(f, "problem,contact,model,cells_x,cells_y,cells_z,tets,safety,step_s,steps,wall_s,stable,"
                "error,impulse_err,plateau_err,peak_force_err,duration_err,v1_err,v2_err,"
-               "max_penetration_m,momentum_err,kinetic_err,volume_change,element,nodes,mesh\n");
+               "max_penetration_m,momentum_err,kinetic_err,volume_change,element,nodes,mesh,"
+               "mass_scaling,added_mass_share\n");
     for (size_t i = 0; i < list->count; ++i) {
         const run_row* r = &list->rows[i];
         fprintf(f, "%s,%s,%s,%u,%u,%u,%u,%.4g,%.6g,%llu,%.4f,%d", r->problem, r->contact, r->model,
@@ -327,7 +372,10 @@ static int write_csv(const char* path, const row_list* list) {
         csv_number(f, r->momentum);
         csv_number(f, r->kinetic);
         csv_number(f, r->volume);
-        fprintf(f, ",%s,%u,%s\n", element_name(r), r->nodes, r->mesh);
+        fprintf(f, ",%s,%u,%s", element_name(r), r->nodes, r->mesh);
+        csv_number(f, r->mass_scaling);
+        csv_number(f, r->added_mass);
+        fputc('\n', f);
     }
     if (fclose(f) != 0) {
         fprintf(stderr, "cannot write %s\n", path);
@@ -343,7 +391,7 @@ static const run_row* fastest_within(const row_list* list, const char* problem, 
     for (size_t i = 0; i < list->count; ++i) {
         const run_row* r = &list->rows[i];
         if (strcmp(r->problem, problem) != 0 || r->quadratic != quadratic || !r->stable ||
-            strncmp(r->contact, "penalty", 7) == 0 || !(fabs(r->error) <= level))
+            strncmp(r->contact, "penalty", 7) == 0 || !isnan(r->mass_scaling) || !(fabs(r->error) <= level))
             continue;
         if (!best || r->wall < best->wall) best = r;
     }
@@ -383,7 +431,8 @@ static const run_row* best_within_time(const row_list* list, const char* problem
     for (size_t i = 0; i < list->count; ++i) {
         const run_row* r = &list->rows[i];
         if (strcmp(r->problem, problem) != 0 || r->quadratic != quadratic || !r->stable ||
-            strncmp(r->contact, "penalty", 7) == 0 || strcmp(r->contact, "no_contact") == 0 || r->wall > max_wall)
+            strncmp(r->contact, "penalty", 7) == 0 || strcmp(r->contact, "no_contact") == 0 ||
+            !isnan(r->mass_scaling) || r->wall > max_wall)
             continue;
         if (!best || fabs(r->error) < fabs(best->error)) best = r;
     }
@@ -430,6 +479,23 @@ static void print_quadratic_targets(const row_list* list) {
            worse ? "NOT met" : "met", worse, runs);
 }
 
+/* The mass-scaling series: per problem, the requested step's factor, the step, the added mass,
+ * the wall time and the errors. */
+static void print_mass_scaling_table(const row_list* list) {
+    printf("\n| problem | mesh | requested step | step | added mass | wall time | error |\n");
+    printf("| --- | --- | --- | --- | --- | --- | --- |\n");
+    for (size_t i = 0; i < list->count; ++i) {
+        const run_row* r = &list->rows[i];
+        if (isnan(r->mass_scaling)) continue;
+        printf("| %s (%s) | %s | x%g | %.3g s | %.1f %% | %.3f s | %+.2f %%", r->problem,
+               strcmp(r->problem, "two_bar") == 0 ? "impulse" : "acceleration", r->mesh, r->mass_scaling,
+               r->step, 100 * r->added_mass, r->wall, 100 * r->error);
+        if (strcmp(r->problem, "two_bar") == 0)
+            printf(" (contact time %+.1f %%, bar 2's final velocity %+.1f %%)", 100 * r->duration, 100 * r->v2);
+        printf(" |\n");
+    }
+}
+
 /* "1.05e-06 s (x1.000)", with the isolated stable steps above it when there are any. */
 static void stable_cell(char* out, size_t size, double ratio, double highest, double elastic_step) {
     if (highest > ratio * 1.001)
@@ -465,7 +531,7 @@ int main(int argc, char** argv) {
 
     /* Two-bar impact, nu = 0, Lagrange multipliers. Refining along the bar is what pays: with
      * nu = 0 nothing couples the cross-section, so one cell across is enough. */
-    two_bar_config bar = {LFEM_MODEL_PAPER, {40, 1, 1}, 0.0, 0.9, 0.0, 200e-6, 0};
+    two_bar_config bar = {LFEM_MODEL_PAPER, {40, 1, 1}, 0.0, 0.9, 0.0, 200e-6, 0, 0.0};
     static const uint32_t ladder[5] = {40, 80, 160, 240, 320};
     const int ladder_count = quick ? 2 : 5;
     for (int m = 0; m < (quick ? 2 : 4); ++m)
@@ -534,6 +600,7 @@ int main(int argc, char** argv) {
     /* 10-node tets (issue 20): the same problems, the cantilever with one to three elements
      * through the depth, and the two bars along and across. */
     if (run_quadratic_cases(&list, quick) != 0) return 1;
+    if (run_mass_scaling(&list, quick) != 0) return 1;
     /* Hertz impact of the Gmsh sphere (tests/bench/data/hertz_*.msh: element kind, element
      * size at the pole in 0.1 mm), linear model, at 1 m/s, and at 10 m/s (a / R = 0.11, where
      * the finite sphere departs from Hertz's half-space: the meshes converge to ~5 % off). */
@@ -559,12 +626,12 @@ int main(int argc, char** argv) {
     two_bar_result pen[4];
     size_t pen_row[4];
     {
-        const two_bar_config c = {LFEM_MODEL_PAPER, {penalty_cells, 1, 1}, 0.0, 1.0, -1.0, 200e-6, 0};
+        const two_bar_config c = {LFEM_MODEL_PAPER, {penalty_cells, 1, 1}, 0.0, 1.0, -1.0, 200e-6, 0, 0.0};
         if (find_stable_ratio(c, 2.0, grid, confirm, refine, &free_ratio, &free_highest) != 0) return 1;
     }
     for (int f = 0; f < 4; ++f) {
         if (quick && (f == 1 || f == 3)) continue; /* multipliers and k = 10x only */
-        two_bar_config c = {LFEM_MODEL_PAPER, {penalty_cells, 1, 1}, 0.0, 1.0, factors[f], 200e-6, 0};
+        two_bar_config c = {LFEM_MODEL_PAPER, {penalty_cells, 1, 1}, 0.0, 1.0, factors[f], 200e-6, 0, 0.0};
         if (find_stable_ratio(c, 2.0, grid, confirm, refine, &stable_ratio[f], &highest_ratio[f]) != 0)
             return 1;
         c.step_ratio = 0.9 * stable_ratio[f];
@@ -577,7 +644,7 @@ int main(int argc, char** argv) {
         for (int f = 1; f < 4; ++f)
             for (int i = 0; i < (f == 1 ? 3 : 1); i += 2) {
                 two_bar_config c = {LFEM_MODEL_PAPER, {ladder[i], 1, 1}, 0.0,
-                                    0.9 * stable_ratio[f], factors[f], 200e-6, 0};
+                                    0.9 * stable_ratio[f], factors[f], 200e-6, 0, 0.0};
                 if (run_two_bar(&list, &c, NULL) != 0) return 1;
             }
 
@@ -601,6 +668,9 @@ int main(int argc, char** argv) {
     else
         printf("\ntarget (two-bar impulse error <= 0.5 %% in <= 1 s): NOT met (no run within 0.5 %%)\n");
     print_quadratic_targets(&list);
+    printf("\nMass scaling (lfem_world_def.mass_scaling_step), the step requested at a multiple of the "
+           "automatic step without it:\n");
+    print_mass_scaling_table(&list);
 
     printf("\nPenalty baseline against Lagrange multipliers: two-bar impact, %ux1x1 cells a bar, paper "
            "model, elastic stable limit %.4g s; k in multiples of E A2 / l_e\n\n",

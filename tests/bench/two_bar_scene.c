@@ -56,6 +56,7 @@ int two_bar_run(const two_bar_config* config, two_bar_result* r) {
     lfem_world_def wd = lfem_world_def_default();
     wd.gravity[2] = 0.0;                               /* the bars fly along x */
     wd.allow_unstable_step = config->step_ratio >= 1.0; /* finding where a step blows up */
+    wd.mass_scaling_step = config->mass_scaling_step;
     BENCH_TRY(lfem_world_create(&wd, &world));
 
     /* Bar 1 on the left moving +x, bar 2 on the right moving -x, the gap split about x = 0.
@@ -91,6 +92,10 @@ int two_bar_run(const two_bar_config* config, two_bar_result* r) {
     double mass[2], p0[2][3], p[2][3];
     for (int b = 0; b < 2; ++b) {
         BENCH_TRY(lfem_body_get_mass(world, bars[b], &mass[b]));
+        double added = 0;
+        BENCH_TRY(lfem_body_get_added_mass(world, bars[b], &added));
+        r->added_mass += added;
+        r->mass += mass[b];
         BENCH_TRY(lfem_body_get_momentum(world, bars[b], p0[b], NULL));
     }
     if (config->penalty_factor > 0) {

@@ -36,6 +36,7 @@ typedef struct two_bar_config {
                                bars' own critical step, for comparison */
     double end_time;        /* s, 200 us: contact is over by ~124 us */
     int quadratic;          /* 1: 10-node tets (lfem_mesh_make_quadratic), 0: 4-node tets */
+    double mass_scaling_step; /* s, lfem_world_def.mass_scaling_step (0: no mass scaling) */
 } two_bar_config;
 
 typedef struct two_bar_result {
@@ -53,6 +54,8 @@ typedef struct two_bar_result {
     double max_penetration; /* m, largest over the steps: the solver's stats for multipliers, the
                                deepest spring for the penalty baseline */
     double energy_change;   /* relative change of kinetic + strain energy, start to end */
+    double added_mass;      /* kg, what mass scaling added to both bars */
+    double mass;            /* kg, both bars with it */
     double wall;            /* s, wall time of the whole run: set-up, stable step, stepping */
 } two_bar_result;
 

@@ -189,7 +189,8 @@ int incline_run(const case_config* c, case_result* r) {
     /* The incline is a horizontal static floor with gravity tilted by 30 degrees: the same
      * physics without a rotated mesh. */
     const double angle = M_PI / 6, g = 9.81, mu = 0.3;
-    const lfem_world_def wd = world_def(c->safety, g * sin(angle), -g * cos(angle));
+    lfem_world_def wd = world_def(c->safety, g * sin(angle), -g * cos(angle));
+    wd.mass_scaling_step = c->mass_scaling_step;
     BENCH_TRY(lfem_world_create(&wd, &world));
     lfem_body_def floor_def = lfem_body_def_default();
     floor_def.type = LFEM_BODY_STATIC;
@@ -208,6 +209,9 @@ int incline_run(const case_config* c, case_result* r) {
     double mass = 0, p0[3], p1[3];
     lfem_world_stats s0, s1;
     BENCH_TRY(lfem_body_get_mass(world, block, &mass));
+    double added = 0;
+    BENCH_TRY(lfem_body_get_added_mass(world, block, &added));
+    r->added_mass_share = added / mass;
     /* Undamped: the normal force rings after the sudden load at the block's axial frequency
      * (~1 kHz); averaged over 0.4 s the ringing cancels. */
     BENCH_TRY(lfem_world_step(world, 0.05));

@@ -15,6 +15,8 @@ typedef struct case_config {
     double safety;      /* step as a fraction of the elastic stable limit (step_safety) */
     double duration;    /* s of simulated time; 0 = the case's own (see each function) */
     int quadratic;      /* 1: the body of 10-node tets (lfem_mesh_make_quadratic) */
+    double mass_scaling_step; /* s, lfem_world_def.mass_scaling_step (0: no mass scaling);
+                                 the incline only */
 } case_config;
 
 typedef struct case_result {
@@ -26,6 +28,7 @@ typedef struct case_result {
     uint64_t steps;
     double step;         /* s */
     double wall;         /* s */
+    double added_mass_share; /* what mass scaling added over the body's mass with it */
 } case_result;
 
 /* A free undamped 0.2 x 0.1 x 0.05 m box (E 1e7, nu 0.3) spinning at one turn a second about

@@ -1,6 +1,7 @@
 // libFuzzer target: bytes become a sequence of C API calls on one world (create, bodies, meshes
 // with arbitrary numbers, shapes, node constraints and forces, steps with arbitrary dt, queries
-// with arbitrary buffers, checkpoints, destroy). Checked after every call:
+// with arbitrary buffers, skins and their reads, rays and boxes, checkpoints, destroy). Checked
+// after every call:
 // - the status is one of lfem's, and a failure leaves a message;
 // - a failed call leaves the world's statistics bit for bit as they were;
 // - nothing crashes, leaks or reads out of bounds (the sanitizers watch).
@@ -9,6 +10,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -58,7 +60,7 @@ void check(lfem_status s, const char* call) {
 // One call chosen by the input. Returns the status and the call's name.
 lfem_status one_call(Session& s, Input& in, const char*& name) {
     lfem_world* w = s.world;
-    switch (in.below(16)) {
+    switch (in.below(19)) {
         case 0: {
             name = "body_create";
             lfem_body_def d = lfem_body_def_default();
@@ -207,6 +209,54 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             }
             unlink(path);
             return st;
+        }
+        case 15: {
+            name = "body_add_skin";
+            const uint32_t n = in.below(12), t = in.below(6);
+            std::vector<double> x(3 * n);
+            std::vector<uint32_t> tris(3 * t);
+            for (double& v : x) v = in.number(-0.5, 1);
+            for (uint32_t& v : tris) v = in.below(14);
+            uint32_t index = 0;
+            return lfem_body_add_skin(w, pick_body(s, in), x.data(), n, tris.data(), t, &index);
+        }
+        case 16: {
+            name = "body_get_skin_vertices(_f32)/triangles";
+            const lfem_body b = pick_body(s, in);
+            const uint32_t skin = in.below(3), capacity = in.below(20);
+            const uint32_t stride = in.below(8), normal_stride = in.below(8);
+            std::vector<double> p(3 * std::size_t(capacity)), nrm(3 * std::size_t(capacity));
+            std::vector<float> f(8 * std::size_t(capacity) + 8);
+            std::vector<uint32_t> tri(3 * std::size_t(capacity));
+            switch (in.below(3)) {
+                case 0: return lfem_body_get_skin_vertices(w, b, skin, capacity ? p.data() : nullptr,
+                                                           in.byte() & 1 ? nrm.data() : nullptr, capacity);
+                case 1: return lfem_body_get_skin_vertices_f32(w, b, skin, f.data(), stride,
+                                                               in.byte() & 1 ? f.data() + 3 : nullptr,
+                                                               normal_stride, std::min(capacity, 1u + capacity / 8));
+                default: return lfem_body_get_skin_triangles(w, b, skin, capacity ? tri.data() : nullptr, capacity);
+            }
+        }
+        case 17: {
+            name = "world_cast_ray(_all)/overlap_box";
+            const double a[3] = {in.number(-2, 2), in.number(-2, 2), in.number(-2, 2)};
+            const double b[3] = {in.number(-2, 2), in.number(-2, 2), in.number(-2, 2)};
+            lfem_query_filter f = lfem_query_filter_default();
+            if (in.byte() < 64) f.category_bits = in.u32(), f.mask_bits = in.u32();
+            const uint32_t capacity = in.below(8);
+            std::vector<lfem_ray_hit> hits(capacity);
+            std::vector<lfem_body> found(capacity);
+            uint32_t count = 0;
+            switch (in.below(3)) {
+                case 0: {
+                    int hit = 0;
+                    return lfem_world_cast_ray(w, a, b, in.number(0, 5), f, &hits.emplace_back(), &hit);
+                }
+                case 1: return lfem_world_cast_ray_all(w, a, b, in.number(0, 5), f,
+                                                       capacity ? hits.data() : nullptr, capacity, &count);
+                default: return lfem_world_overlap_box(w, a, b, f, capacity ? found.data() : nullptr, capacity,
+                                                       &count);
+            }
         }
         default: {
             name = "body_release_nodes";

@@ -131,3 +131,44 @@ p.byte(0)
 p.below(1)
 p.step(0.005)
 write('rigid_shape_destroy', p)
+
+# A skin in a soft block, read back, and rays and boxes across it and a floor.
+p = Program()
+p.header()
+p.body(1)
+p.box(0, (0.6, 0.6, 0.1), (2, 2, 1), (-0.3, -0.3, -0.1))
+p.body(0, model=1)
+p.box(1, (0.1, 0.1, 0.1), (2, 2, 2), (-0.05, -0.05, 0.0))
+p.below(15)                   # add a skin of 4 vertices and 2 triangles to body 1
+p.below(4)
+p.below(2)
+for v in (-0.02, -0.02, 0.02, 0.02, -0.02, 0.02, -0.02, 0.02, 0.02, 0.02, 0.02, 0.08):
+    p.number(-0.5, 1, v)
+for i in (0, 1, 2, 1, 3, 2):
+    p.below(i)
+p.byte(0)
+p.below(1)
+p.step(0.005)
+p.below(16)                   # read its vertices and normals
+p.byte(0)
+p.below(1)
+p.below(0)
+p.below(4)
+p.below(3)
+p.below(3)
+p.below(0)
+p.byte(1)
+p.below(17)                   # all hits of a ray down through the block and the floor
+for v in (0.001, 0.002, 1.0, 0.0, 0.0, -1.0):
+    p.number(-2, 2, v)
+p.byte(255)
+p.below(6)
+p.below(1)
+p.number(0, 5, 4.0)
+p.below(17)                   # a box about the block
+for v in (-0.1, -0.1, -0.1, 0.1, 0.1, 0.1):
+    p.number(-2, 2, v)
+p.byte(255)
+p.below(4)
+p.below(2)
+write('skin_and_rays', p)

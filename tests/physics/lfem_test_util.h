@@ -152,7 +152,9 @@ inline std::vector<unsigned char> fingerprint(lfem_world* w, const std::vector<l
         const int valid = lfem_body_is_valid(w, b);
         append(&valid, sizeof valid);
         if (!valid) continue;
-        const std::vector<double> x = positions(w, b), v = velocities(w, b);
+        const bool nodes = node_count(w, b) > 0;  // a body of shapes alone has none
+        const std::vector<double> x = nodes ? positions(w, b) : std::vector<double>();
+        const std::vector<double> v = nodes ? velocities(w, b) : std::vector<double>();
         append(x.data(), x.size() * sizeof(double));
         append(v.data(), v.size() * sizeof(double));
         uint32_t tets = 0, tris = 0;
@@ -163,6 +165,20 @@ inline std::vector<unsigned char> fingerprint(lfem_world* w, const std::vector<l
         std::vector<double> vm(tets);
         if (tets) lfem_body_get_von_mises_stress(w, b, vm.data(), tets);
         append(vm.data(), vm.size() * sizeof(double));
+        uint32_t skins = 0;
+        lfem_body_get_skin_count(w, b, &skins);
+        append(&skins, sizeof skins);
+        for (uint32_t k = 0; k < skins; ++k) {  // every skin: its triangles and vertices
+            uint32_t nv = 0, nt = 0;
+            lfem_body_get_skin_sizes(w, b, k, &nv, &nt);
+            std::vector<uint32_t> t(3 * std::size_t(nt));
+            std::vector<double> p(3 * std::size_t(nv)), n(3 * std::size_t(nv));
+            lfem_body_get_skin_triangles(w, b, k, t.data(), nt);
+            lfem_body_get_skin_vertices(w, b, k, p.data(), n.data(), nv);
+            append(t.data(), t.size() * sizeof(uint32_t));
+            append(p.data(), p.size() * sizeof(double));
+            append(n.data(), n.size() * sizeof(double));
+        }
     }
     return out;
 }

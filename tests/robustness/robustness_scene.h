@@ -1,7 +1,7 @@
 // One scene that exercises every kind of state a world holds: a static box mesh and a static
 // sphere shape, a kinematic plank, a rigid box, a corotational and a neo-Hookean soft body
-// (one with fixed nodes and node forces, one spinning), a corotational body of 10-node tets, a
-// destroyed body (a free slot), and contact between all of them. The checkpoint, out-of-memory and thread tests all run it. With
+// (one with fixed nodes and node forces, one spinning, one with a skin), a corotational body of
+// 10-node tets, a destroyed body (a free slot), and contact between all of them. The checkpoint, out-of-memory and thread tests all run it. With
 // `cells` = 10 the corotational body has 6000 tets and 1331 nodes: enough for many element
 // blocks and colours and two node blocks, so every parallel loop of a multi-threaded world
 // really splits.
@@ -56,6 +56,7 @@ struct RobustnessScene {
         const double force[3] = {0.5, 0.0, 0.0};
         const uint32_t node = 0;
         EXPECT_EQ(lfem_body_set_node_forces(w, bodies.back(), &node, 1, force), LFEM_OK);
+        add_skin_to(bodies.back(), 0.0, 0.0, 0.07);
 
         d.model = LFEM_MODEL_NEO_HOOKEAN;
         d.angular_velocity[0] = 0.0;
@@ -93,6 +94,15 @@ struct RobustnessScene {
     }
 
     std::vector<unsigned char> state() const { return fingerprint(w, bodies); }
+
+    // A small render mesh about (x, y, z): a tetrahedron's surface, one vertex just outside
+    // the body when it is near a face.
+    void add_skin_to(lfem_body b, double x, double y, double z) {
+        const double p[12] = {x - 0.03, y - 0.03, z - 0.03, x + 0.03, y - 0.03, z - 0.03,
+                              x - 0.03, y + 0.03, z - 0.03, x - 0.03, y - 0.03, z + 0.04};
+        const uint32_t t[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+        EXPECT_EQ(lfem_body_add_skin(w, b, p, 4, t, 4, nullptr), LFEM_OK) << lfem_last_error();
+    }
 };
 
 }  // namespace lfem_test

@@ -4,6 +4,7 @@
 // uses too: the test fails the 1st, 2nd, ... allocation of a call in turn, until the call
 // needs no more than that.
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
@@ -135,4 +136,83 @@ TEST(OutOfMemory, FailedCreateAddMeshSaveAndLoadChangeNothing) {
     EXPECT_EQ(saved, fingerprint(loaded, all));
     lfem_world_destroy(loaded);
     std::remove(path.c_str());
+}
+
+namespace {
+
+// Everything a fixed set of rays and boxes answers, as bytes (generations left out: they are
+// process-wide).
+std::vector<unsigned char> query_answers(lfem_world* w) {
+    std::vector<unsigned char> out;
+    const lfem_query_filter f = lfem_query_filter_default();
+    for (int i = 0; i < 6; ++i) {
+        const double o[3] = {-0.3 + 0.1 * i, -0.02, 0.4}, d[3] = {0.05 * i - 0.1, 0.03, -1.0};
+        lfem_ray_hit hits[32];
+        uint32_t n = 0;
+        EXPECT_EQ(lfem_world_cast_ray_all(w, o, d, HUGE_VAL, f, hits, 32, &n), LFEM_OK) << lfem_last_error();
+        for (uint32_t k = 0; k < n; ++k) {
+            hits[k].body.generation = 0;
+            const unsigned char* p = reinterpret_cast<const unsigned char*>(&hits[k]);
+            out.insert(out.end(), p, p + sizeof hits[k]);
+        }
+        const double lo[3] = {-0.3 + 0.1 * i, -0.1, 0.0}, hi[3] = {-0.2 + 0.1 * i, 0.1, 0.2};
+        lfem_body found[16];
+        EXPECT_EQ(lfem_world_overlap_box(w, lo, hi, f, found, 16, &n), LFEM_OK) << lfem_last_error();
+        for (uint32_t k = 0; k < n; ++k) out.push_back(uint8_t(found[k].index));
+    }
+    return out;
+}
+
+}  // namespace
+
+// A skin added, a step taken with the queries' cache in use (the step keeps its boxes), and
+// the queries themselves, each failing at every allocation in turn: each failure leaves the
+// world as it was, and the answers afterwards are those of a twin world that never failed.
+TEST(OutOfMemory, FailedSkinsStepsAndQueriesChangeNothing) {
+    RobustnessScene scene, twin;
+    scene.run(5), twin.run(5);
+    EXPECT_EQ(query_answers(scene.w), query_answers(twin.w));  // both now in use
+    std::vector<unsigned char> before = scene.state();
+    const lfem_body soft = scene.bodies[4];  // the neo-Hookean body
+    long points = fail_each_allocation(
+        [&] {
+            const double p[9] = {0.0, -0.02, 0.18, 0.03, -0.02, 0.18, 0.0, 0.01, 0.2};
+            const uint32_t t[3] = {0, 1, 2};
+            return lfem_body_add_skin(scene.w, soft, p, 3, t, 1, nullptr);
+        },
+        [&](long k) { ASSERT_EQ(before, scene.state()) << "add_skin, allocation " << k; });
+    EXPECT_GT(points, 2);
+    {
+        const double p[9] = {0.0, -0.02, 0.18, 0.03, -0.02, 0.18, 0.0, 0.01, 0.2};
+        const uint32_t t[3] = {0, 1, 2};
+        ASSERT_EQ(lfem_body_add_skin(twin.w, twin.bodies[4], p, 3, t, 1, nullptr), LFEM_OK);
+    }
+    EXPECT_EQ(scene.state(), twin.state());
+    before = scene.state();
+    points = fail_each_allocation([&] { return lfem_world_step(scene.w, 0.005); },
+                                  [&](long k) { ASSERT_EQ(before, scene.state()) << "step, allocation " << k; });
+    ASSERT_EQ(lfem_world_step(twin.w, 0.005), LFEM_OK);
+    EXPECT_EQ(scene.state(), twin.state());
+    EXPECT_EQ(query_answers(scene.w), query_answers(twin.w));
+    // A new body makes the cache stale: the query itself then boxes the bodies and builds trees.
+    Mesh extra;
+    make_box_mesh(extra, 0.05, 0.05, 0.05, 1, 1, 1, -0.28, -0.02, 0.0);
+    for (lfem_world* w : {scene.w.w, twin.w.w}) {
+        lfem_body_def d = lfem_body_def_default();
+        d.type = LFEM_BODY_STATIC;
+        add_body(w, d, extra);
+    }
+    before = scene.state();
+    points = fail_each_allocation(
+        [&] {
+            const double o[3] = {-0.3, 0.0, 0.5}, d[3] = {0.0, 0.0, -1.0};
+            lfem_ray_hit hits[16];
+            uint32_t n = 0;
+            return lfem_world_cast_ray_all(scene.w, o, d, HUGE_VAL, lfem_query_filter_default(), hits, 16, &n);
+        },
+        [&](long k) { ASSERT_EQ(before, scene.state()) << "cast_ray_all, allocation " << k; });
+    EXPECT_GT(points, 2);
+    EXPECT_EQ(query_answers(scene.w), query_answers(twin.w));
+    std::printf("add_skin, a step with queries in use and a ray cast into a stale cache failed at each of "
+                "their allocations in turn, world and answers unchanged\n");
 }

@@ -8,6 +8,11 @@
  * initial overlaps, a checkpoint round trip and bodies of 10-node tets.
  *
  *   scene_digest [scene-name]      (all scenes when no name is given)
+ *   scene_digest --queries [name]  the same, casting rays and overlapping boxes after every
+ *                                  call, with a digest of their answers: the physics and
+ *                                  profile digests must not change
+ *   scene_digest --check-queries   runs each scene with and without the queries and fails when
+ *                                  a digest differs, or the answers differ between thread counts
  */
 #include <math.h>
 #include <stddef.h>
@@ -32,6 +37,11 @@ static void hash_into(uint64_t* h, const void* p, size_t n) {
 }
 
 static void hash_bytes(const void* p, size_t n) { hash_into(&g_hash, p, n); }
+
+/* With --queries: after every call, rays and boxes through the scene, their answers digested
+ * apart (a query is a read: the other digests must stay as they are without it). */
+static int g_queries;
+static uint64_t g_query_hash;
 
 static void check(lfem_status s, const char* what) {
     if (s != LFEM_OK) {
@@ -125,8 +135,43 @@ static void digest_world(lfem_world* w, const lfem_body* bodies, int count) {
     hash_into(&g_profile_hash, calls, sizeof calls);
 }
 
+/* Rays from a ring 3 m around the scenes towards points near the origin, rays straight down
+ * on a grid, boxes about the origin; every body's skins read. Handles' generations are left
+ * out of the digest (they come from a process-wide counter). */
+static void ask_queries(lfem_world* w) {
+    const lfem_query_filter f = lfem_query_filter_default();
+    lfem_ray_hit hits[256];
+    for (int i = 0; i < 24; ++i) {
+        const double a = 0.2618 * i, o[3] = {3.0 * cos(a), 3.0 * sin(a), 0.05 * (i % 5)};
+        const double down[3] = {-0.4 + 0.1 * (i % 9), -0.3 + 0.1 * (i / 9), 2.0};
+        const double d[3] = {0.1 * (i % 3) - o[0], 0.07 * (i % 4) - o[1], -0.02 * i - o[2]};
+        const double dz[3] = {0.001 * i, 0.0, -1.0};
+        uint32_t n = 0;
+        check(lfem_world_cast_ray_all(w, o, d, HUGE_VAL, f, hits, 256, &n), "cast_ray_all");
+        for (uint32_t k = 0; k < n; ++k) hits[k].body.generation = 0;
+        hash_into(&g_query_hash, hits, sizeof(lfem_ray_hit) * n);
+        int hit = 0;
+        lfem_ray_hit one;
+        memset(&one, 0, sizeof one);
+        check(lfem_world_cast_ray(w, down, dz, 5.0, f, &one, &hit), "cast_ray");
+        one.body.generation = 0;
+        hash_into(&g_query_hash, &hit, sizeof hit);
+        hash_into(&g_query_hash, &one, sizeof one);
+    }
+    for (int i = 0; i < 6; ++i) {
+        const double r = 0.02 + 0.1 * i, lo[3] = {-r, -r, -0.3 * r}, hi[3] = {r, 0.5 * r, r};
+        lfem_body found[64];
+        uint32_t n = 0;
+        check(lfem_world_overlap_box(w, lo, hi, f, found, 64, &n), "overlap_box");
+        for (uint32_t k = 0; k < n; ++k) hash_into(&g_query_hash, &found[k].index, sizeof found[k].index);
+    }
+}
+
 static void step(lfem_world* w, int calls, double dt) {
-    for (int i = 0; i < calls; ++i) check(lfem_world_step(w, dt), "step");
+    for (int i = 0; i < calls; ++i) {
+        check(lfem_world_step(w, dt), "step");
+        if (g_queries) ask_queries(w);
+    }
 }
 
 /* A spinning soft cube of each model dropped on a static box-mesh floor, with friction and
@@ -422,23 +467,42 @@ static const struct scene scenes[] = {
     {"quadratic", scene_quadratic},
 };
 
-/* Exits 1 when a scene's digest depends on the thread count (results must not), 2 for an
- * unknown scene name. */
+/* One run of a scene; the digests in *physics, *profile and *queries. */
+static void run_scene(size_t i, uint32_t threads, int queries, uint64_t* physics, uint64_t* profile,
+                      uint64_t* answers) {
+    g_hash = g_profile_hash = g_query_hash = 1469598103934665603ull;
+    g_queries = queries;
+    scenes[i].run(threads);
+    *physics = g_hash, *profile = g_profile_hash, *answers = g_query_hash;
+}
+
+/* Exits 1 when a scene's digest depends on the thread count (results must not) or, with
+ * --check-queries, on whether queries were made; 2 for an unknown scene name. */
 int main(int argc, char** argv) {
-    const char* only = argc > 1 ? argv[1] : NULL;
+    int queries = 0, check_queries = 0, arg = 1;
+    if (argc > arg && strcmp(argv[arg], "--queries") == 0) queries = 1, ++arg;
+    else if (argc > arg && strcmp(argv[arg], "--check-queries") == 0) check_queries = 1, ++arg;
+    const char* only = argc > arg ? argv[arg] : NULL;
     int differ = 0, ran = 0;
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; ++i) {
         if (only && strcmp(only, scenes[i].name) != 0) continue;
-        uint64_t first = 0, first_profile = 0;
+        uint64_t first = 0, first_profile = 0, first_answers = 0;
         for (uint32_t threads = 1; threads <= 3; ++threads) {
-            g_hash = g_profile_hash = 1469598103934665603ull;
-            scenes[i].run(threads);
-            if (threads == 1) first = g_hash, first_profile = g_profile_hash;
-            const int different = g_hash != first || g_profile_hash != first_profile;
+            uint64_t physics, profile, answers;
+            run_scene(i, threads, queries || check_queries, &physics, &profile, &answers);
+            if (threads == 1) first = physics, first_profile = profile, first_answers = answers;
+            int different = physics != first || profile != first_profile || answers != first_answers;
+            const char* why = different ? "  DIFFERS from 1 thread" : "";
+            if (check_queries) {  /* and the same run without the queries */
+                uint64_t quiet, quiet_profile, none;
+                run_scene(i, threads, 0, &quiet, &quiet_profile, &none);
+                if (quiet != physics || quiet_profile != profile) different = 1, why = "  CHANGED BY THE QUERIES";
+            }
             differ |= different;
-            printf("%-20s threads %u  physics %016llx  profile %016llx%s\n", scenes[i].name, threads,
-                   (unsigned long long)g_hash, (unsigned long long)g_profile_hash,
-                   different ? "  DIFFERS from 1 thread" : "");
+            printf("%-20s threads %u  physics %016llx  profile %016llx", scenes[i].name, threads,
+                   (unsigned long long)physics, (unsigned long long)profile);
+            if (queries || check_queries) printf("  queries %016llx", (unsigned long long)answers);
+            printf("%s\n", why);
             fflush(stdout);
         }
         ++ran;

@@ -98,10 +98,14 @@ public static class LfemTests
                            "RotationDrift", 152, "AddedMass", 160, "InvertedTets", 168, "MinJacobian", 176);
         Layout<Warning>(24, "Count", 0, "LastTime", 8, "LastBody", 16);
         Layout<PhaseTime>(16, "Seconds", 0, "Calls", 8);
-        Layout<Profile>(192, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
+        Layout<Profile>(224, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
                         "BroadPhase", 56, "NarrowPhase", 72, "ShapeQueries", 88, "ShapeTests", 104, "CcdQueries", 112,
                         "NormalSolve", 120, "Friction", 136, "GlobalRotation", 152, "Commit", 168,
-                        "CandidateSearches", 184);
+                        "CandidateSearches", 184, "Queries", 192, "QueryBodies", 200, "QueryPrimitives", 208,
+                        "QueryRefits", 216);
+        Layout<QueryFilter>(8, "CategoryBits", 0, "MaskBits", 4);
+        Layout<RayHit>(88, "Body", 0, "Triangle", 8, "Shape", 12, "Barycentric1", 16, "Barycentric2", 24, "Point", 32,
+                       "Normal", 56, "Distance", 80);
         Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
                         "UserData", 104, "internalValue", 112, "EnableSleep", 116, "SelfContact", 117);
@@ -695,5 +699,108 @@ public static class LfemTests
         }
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 && passed > 0 ? 0 : 1;
+    }
+
+    public static void TestASkinFallsWithItsBlock()
+    {
+        // A render mesh inside a falling block: free fall moves every tet by -g t^2 / 2 exactly
+        // (up to round-off), so every skin vertex follows p - g t^2 / 2; the float buffer holds
+        // the same numbers rounded to float.
+        using (World world = new World())
+        {
+            Body block = AddBlock(world, Model.Corotational);
+            Vec3[] p = { new Vec3(0.05, 0.05, 2.02), new Vec3(0.25, 0.05, 2.02), new Vec3(0.05, 0.15, 2.02),
+                         new Vec3(0.05, 0.05, 2.08) };
+            uint[] t = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };  // a tetrahedron's faces, outward
+            Equal(0u, world.AddSkin(block, p, t), "skin index");
+            Equal(1, world.SkinCount(block), "skin count");
+            int nv, nt;
+            world.GetSkinSizes(block, 0, out nv, out nt);
+            Equal(4, nv, "vertices");
+            Equal(4, nt, "triangles");
+            Equal(string.Join(",", t), string.Join(",", world.GetSkinTriangles(block, 0)), "triangles as given");
+            world.Step(0.1);
+            double time = world.Stats.Time;
+            Vec3[] normals;
+            Vec3[] x = world.GetSkinVertices(block, 0, out normals);
+            for (int v = 0; v < 4; ++v)
+            {
+                Close(p[v].X, x[v].X, 1e-11, "x of vertex " + v);
+                Close(p[v].Z - 0.5 * G * time * time, x[v].Z, 1e-11, "z of vertex " + v);
+                Close(1.0, normals[v].Length, 1e-12, "unit normal " + v);
+            }
+            // Vertex 0 is the corner of three axis faces of areas 0.01, 0.006 and 0.003 m^2 (z, y, x):
+            // its normal is -(0.006, 0.012, 0.02) / |.| (twice the areas).
+            double len = Math.Sqrt(0.006 * 0.006 + 0.012 * 0.012 + 0.02 * 0.02);
+            Close(-0.006 / len, normals[0].X, 1e-12, "corner normal x");
+            Close(-0.012 / len, normals[0].Y, 1e-12, "corner normal y");
+            Close(-0.02 / len, normals[0].Z, 1e-12, "corner normal z");
+            float[] buffer = new float[4 * 8];
+            for (int i = 0; i < buffer.Length; ++i) buffer[i] = -1f;
+            world.GetSkinVertexBuffer(block, 0, buffer, 8, true);
+            for (int v = 0; v < 4; ++v)
+            {
+                Equal((float)x[v].Z, buffer[8 * v + 2], "float z " + v);
+                Equal((float)normals[v].Y, buffer[8 * v + 4], "float normal y " + v);
+                Equal(-1f, buffer[8 * v + 6], "untouched " + v);
+            }
+            LfemException e = Throws(() => world.GetSkinVertices(block, 3, out normals), "skin 3");
+            Equal(Status.InvalidArgument, e.Status, "status");
+            Check(e.Message.StartsWith("lfem_body_get_skin_vertices:"), "message names the call: " + e.Message);
+            Vec3[] far = { new Vec3(5, 5, 5), new Vec3(5.1, 5, 5), new Vec3(5, 5.1, 5) };
+            Equal(Status.InvalidArgument, Throws(() => world.AddSkin(block, far, new uint[] { 0, 1, 2 }), "far").Status, "far");
+            Equal(1, world.SkinCount(block), "nothing added");
+        }
+    }
+
+    public static void TestRaysAndBoxesFindWhatIsThere()
+    {
+        // A static sphere of radius 0.5 about (2, 0, 0): a ray along +x at height 0.3 meets it at
+        // 2 - sqrt(0.25 - 0.09) = 1.6 with normal (p - c) / r; a cube [0, 0.2]^3 is crossed at 1
+        // and 1.2 by a ray from x = -1.
+        WorldDef def = WorldDef.Default;
+        def.Gravity = Vec3.Zero;
+        using (World world = new World(def))
+        {
+            BodyDef sd = BodyDef.Default;
+            sd.Type = BodyType.Static;
+            Body ground = world.CreateBody(sd);
+            ShapeDef shape = ShapeDef.Default;
+            shape.Type = ShapeType.Sphere;
+            shape.Center = new Vec3(2, 0, 0);
+            shape.Radius = 0.5;
+            world.AddShape(ground, shape);
+            Body cube = world.CreateBody(BodyDef.Default);
+            using (Mesh mesh = Mesh.Box(new Vec3(0.2, 0.2, 0.2), 2, 2, 2)) world.AddMesh(cube, mesh);
+            QueryFilter filter = QueryFilter.Default;
+            Equal(1u, filter.CategoryBits, "default category");
+            Equal(0xFFFFFFFFu, filter.MaskBits, "default mask");
+            RayHit hit;
+            Check(world.CastRay(new Vec3(0, 0, 0.3), new Vec3(3, 0, 0), double.PositiveInfinity, filter, out hit), "sphere hit");
+            Equal(ground, hit.Body, "body");
+            Check(hit.HitsShape, "a shape");
+            Close(1.6, hit.Distance, 1e-12, "distance");
+            Close(-0.8, hit.Normal.X, 1e-12, "normal x");
+            Close(0.6, hit.Normal.Z, 1e-12, "normal z");
+            RayHit[] all = world.CastRayAll(new Vec3(-1, 0.07, 0.03), new Vec3(1, 0, 0), double.PositiveInfinity, filter);
+            Equal(4, all.Length, "crossings");
+            Close(1.0, all[0].Distance, 1e-12, "cube entry");
+            Close(1.2, all[1].Distance, 1e-12, "cube exit");
+            Equal(cube, all[0].Body, "cube first");
+            Check(!all[0].HitsShape && all[0].Triangle != RayHit.None, "a triangle");
+            for (int i = 1; i < all.Length; ++i) Check(all[i - 1].Distance <= all[i].Distance, "sorted");
+            Check(!world.CastRay(new Vec3(-1, 0.07, 0.03), new Vec3(1, 0, 0), 0.99, filter, out hit), "too short");
+            QueryFilter blind = filter;
+            blind.MaskBits = 2;
+            Check(!world.CastRay(new Vec3(0, 0, 0.3), new Vec3(1, 0, 0), double.PositiveInfinity, blind, out hit), "filtered");
+            Body[] inside = world.OverlapBox(new Vec3(0.1, 0.1, 0.1), new Vec3(0.12, 0.12, 0.12), filter);
+            Equal(1, inside.Length, "box in the cube");
+            Equal(cube, inside[0], "the cube");
+            Equal(2, world.OverlapBox(new Vec3(-5, -5, -5), new Vec3(5, 5, 5), filter).Length, "everything");
+            Equal(0, world.OverlapBox(new Vec3(0.5, 0.5, 0.5), new Vec3(0.6, 0.6, 0.6), filter).Length, "nothing");
+            LfemException e = Throws(() => world.CastRay(Vec3.Zero, Vec3.Zero, 1, filter, out hit), "zero direction");
+            Equal(Status.InvalidArgument, e.Status, "status");
+            Check(world.Profile.Queries >= 7, "counted");
+        }
     }
 }

@@ -18,7 +18,9 @@ Deformable bodies simulated by an explicit local finite element method. SI units
   keywords; enum fields read back as enums; a vector of the wrong length is refused.
 - Positions and velocities come as numpy float64 arrays of shape (n, 3) that lfem writes into
   directly; pass out= to reuse a buffer. Contacts come as a numpy structured array whose dtype
-  (CONTACT_DTYPE) is the C struct lfem_contact, also filled in place.
+  (CONTACT_DTYPE) is the C struct lfem_contact, also filled in place, and so do all of a ray's
+  hits (RAY_HIT_DTYPE). A skin's vertices go straight into an engine's float32 vertex buffer
+  (World.skin_vertex_buffer).
 - World, Mesh and VtkSeries free their native object on close(), at the end of a with block, or
   when garbage collected. Body is a value handle; a destroyed body's handle raises
   LfemError(Status.INVALID_HANDLE).
@@ -31,6 +33,7 @@ then liblfem.so.0 through the dynamic loader); library_path tells which.
 from __future__ import annotations
 
 import ctypes
+import math
 from typing import Any, Optional, Tuple
 
 import numpy as np
@@ -41,16 +44,17 @@ from ._errors import InvalidArgumentError, LfemError, Status
 from ._native import c_string as _c_string
 from ._native import lib as native
 from ._native import library_path
-from ._structs import (CONTACT_DTYPE, NO_SHAPE, Attachment, Body, BodyDef, BodyType, Contact, Event,
-                       EventType, Model, PhaseTime, Profile, ShapeDef, ShapeType, Warning,
-                       WarningKind, WorldDef, WorldStats)
+from ._structs import (CONTACT_DTYPE, NO_SHAPE, RAY_HIT_DTYPE, Attachment, Body, BodyDef, BodyType,
+                       Contact, Event, EventType, Model, PhaseTime, Profile, QueryFilter, RayHit,
+                       ShapeDef, ShapeType, Warning, WarningKind, WorldDef, WorldStats)
 from ._version import __version__
 
 __all__ = [
     "__version__", "Status", "BodyType", "Model", "ShapeType", "WarningKind", "Warning", "LfemError",
     "Attachment", "Event", "EventType",
     "InvalidArgumentError", "WorldDef", "WorldStats", "PhaseTime", "Profile", "Body", "BodyDef",
-    "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeDef", "World", "Mesh", "VtkSeries", "version",
+    "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeDef", "QueryFilter", "RayHit", "RAY_HIT_DTYPE",
+    "World", "Mesh", "VtkSeries", "version",
     "version_string", "status_string", "last_error", "library_path", "native", "VERSION_MAJOR",
     "VERSION_MINOR", "VERSION_PATCH",
 ]
@@ -500,6 +504,141 @@ class World:
         native.lfem_body_set_kinematic_velocity(
             self.handle, _body(body), _dptr(_convert.vector(linear, "linear")),
             _dptr(_convert.vector(angular, "angular")))
+
+    # -- skins --
+
+    def add_skin(self, body: Body, positions: npt.ArrayLike, triangles: npt.ArrayLike) -> int:
+        """Bind a render mesh to the body's tets: positions (m, (n, 3), the body's rest frame)
+        and triangles ((k, 3) vertex indices); returns the skin's index on the body."""
+        x = _convert.vectors(positions, "positions")
+        t = _convert.indices(triangles, "triangles")
+        if t.size % 3:
+            raise InvalidArgumentError("lfem: triangles must hold 3 indices per triangle, got %d"
+                                       % t.size)
+        index = ctypes.c_uint32()
+        native.lfem_body_add_skin(self.handle, _body(body), _dptr(x), x.shape[0], _uptr(t),
+                                  t.size // 3, ctypes.byref(index))
+        return index.value
+
+    def skin_count(self, body: Body) -> int:
+        """The number of skins of a body."""
+        out = ctypes.c_uint32()
+        native.lfem_body_get_skin_count(self.handle, _body(body), ctypes.byref(out))
+        return out.value
+
+    def skin_sizes(self, body: Body, skin: int) -> Tuple[int, int]:
+        """The vertex and triangle counts of a skin."""
+        return self._skin_sizes(body, skin, "")
+
+    def _skin_sizes(self, body: Body, skin: int, reported_as: str) -> Tuple[int, int]:
+        """The sizes asked before the call the user made; an error names that call."""
+        vertices, triangles = ctypes.c_uint32(), ctypes.c_uint32()
+        try:
+            native.lfem_body_get_skin_sizes(self.handle, _body(body), _convert.count(skin, "skin"),
+                                            ctypes.byref(vertices), ctypes.byref(triangles))
+        except LfemError as e:
+            if not reported_as:
+                raise
+            raise _errors.renamed(e, "lfem_body_get_skin_sizes", reported_as) from None
+        return vertices.value, triangles.value
+
+    def skin_triangles(self, body: Body, skin: int) -> Indices:
+        """A skin's triangles as given, a (k, 3) uint32 array."""
+        f = native.lfem_body_get_skin_triangles
+        _, k = self._skin_sizes(body, skin, f.__name__)
+        out = np.empty((k, 3), dtype=np.uint32)
+        f(self.handle, body, skin, _uptr(out), k)
+        return out
+
+    def skin_vertices(self, body: Body, skin: int) -> Tuple[Vectors, Vectors]:
+        """A skin's deformed vertices (m) and unit smooth normals (area-weighted over its
+        triangles), two float64 (n, 3) arrays."""
+        f = native.lfem_body_get_skin_vertices
+        n, _ = self._skin_sizes(body, skin, f.__name__)
+        positions, normals = np.empty((n, 3)), np.empty((n, 3))
+        f(self.handle, body, skin, _dptr(positions), _dptr(normals), n)
+        return positions, normals
+
+    def skin_vertex_buffer(self, body: Body, skin: int, out: np.ndarray,
+                           normals: bool = True) -> np.ndarray:
+        """A skin's vertices into an engine's vertex buffer: out, a writeable C-contiguous
+        float32 (m, stride) array (m >= the vertex count, stride >= 6 with normals, else 3),
+        gets each vertex's position in columns 0..2 and its unit normal in columns 3..5; the
+        other columns are left alone. Returns out."""
+        f = native.lfem_body_get_skin_vertices_f32
+        n, _ = self._skin_sizes(body, skin, f.__name__)
+        width = 6 if normals else 3
+        if not isinstance(out, np.ndarray):
+            raise TypeError("lfem: out must be a numpy array, not %s" % type(out).__name__)
+        if (out.dtype != np.float32 or out.ndim != 2 or out.shape[1] < width
+                or not out.flags.c_contiguous or not out.flags.writeable):
+            raise InvalidArgumentError("lfem: out must be a writeable C-contiguous float32 "
+                                       "(m, >= %d) array, got %s %s" % (width, out.dtype, out.shape))
+        if out.shape[0] < n:
+            raise _errors.error(int(Status.BUFFER_TOO_SMALL), "lfem: out has %d rows, below the "
+                                "skin's %d vertices" % (out.shape[0], n))
+        base = out.ctypes.data
+        fp = ctypes.POINTER(ctypes.c_float)
+        f(self.handle, body, skin, ctypes.cast(base, fp), out.shape[1],
+          ctypes.cast(base + 12, fp) if normals else None, out.shape[1], n)
+        return out
+
+    # -- queries --
+
+    def _ray(self, origin: npt.ArrayLike, direction: npt.ArrayLike, max_distance: float,
+             flt: Optional[QueryFilter]) -> Tuple[Any, Any, float, QueryFilter]:
+        return (_convert.vector(origin, "origin"), _convert.vector(direction, "direction"),
+                _convert.real(max_distance, "max_distance"),
+                _definition(flt, QueryFilter, "filter"))
+
+    def cast_ray(self, origin: npt.ArrayLike, direction: npt.ArrayLike,
+                 max_distance: float = math.inf,
+                 filter: Optional[QueryFilter] = None) -> Optional[RayHit]:
+        """The nearest crossing of the ray origin + t direction / |direction| (t in [0,
+        max_distance], m) with the surface of a body the filter sees, or None."""
+        o, d, m, flt = self._ray(origin, direction, max_distance, filter)
+        out, hit = RayHit(), ctypes.c_int()
+        native.lfem_world_cast_ray(self.handle, _dptr(o), _dptr(d), m, flt, ctypes.byref(out),
+                                   ctypes.byref(hit))
+        return out if hit.value == 1 else None
+
+    def cast_ray_all(self, origin: npt.ArrayLike, direction: npt.ArrayLike,
+                     max_distance: float = math.inf,
+                     filter: Optional[QueryFilter] = None) -> np.ndarray:
+        """Every crossing along the ray, nearest first: a numpy structured array of
+        RAY_HIT_DTYPE (fields body, triangle, shape, barycentric, point, normal, distance)."""
+        o, d, m, flt = self._ray(origin, direction, max_distance, filter)
+        count = ctypes.c_uint32()
+        try:
+            native.lfem_world_cast_ray_all(self.handle, _dptr(o), _dptr(d), m, flt, None, 0,
+                                           ctypes.byref(count))
+        except LfemError as e:
+            if e.status != Status.BUFFER_TOO_SMALL:
+                raise
+        out = np.zeros(count.value, dtype=RAY_HIT_DTYPE)
+        if count.value:
+            native.lfem_world_cast_ray_all(self.handle, _dptr(o), _dptr(d), m, flt,
+                                           out.ctypes.data, out.size, ctypes.byref(count))
+        return out
+
+    def overlap_box(self, lo: npt.ArrayLike, hi: npt.ArrayLike,
+                    filter: Optional[QueryFilter] = None) -> "list[Body]":
+        """The bodies the filter sees whose current geometry overlaps the box [lo, hi] (m),
+        in body order."""
+        lo, hi = _convert.vector(lo, "lo"), _convert.vector(hi, "hi")
+        flt = _definition(filter, QueryFilter, "filter")
+        count = ctypes.c_uint32()
+        try:
+            native.lfem_world_overlap_box(self.handle, _dptr(lo), _dptr(hi), flt, None, 0,
+                                          ctypes.byref(count))
+        except LfemError as e:
+            if e.status != Status.BUFFER_TOO_SMALL:
+                raise
+        out = (Body * count.value)()
+        if count.value:
+            native.lfem_world_overlap_box(self.handle, _dptr(lo), _dptr(hi), flt,
+                                          ctypes.addressof(out), count.value, ctypes.byref(count))
+        return [Body(b.index, b.generation) for b in out]
 
     # -- contacts --
 

@@ -7,7 +7,8 @@ import ctypes
 from typing import Any
 
 from . import _errors, _library, _structs
-from ._structs import (Attachment, AttachmentDef, Body, BodyDef, Event, Profile, ShapeDef, Warning, WorldDef,
+from ._structs import (Attachment, AttachmentDef, Body, BodyDef, Event, Profile, QueryFilter, RayHit,
+                       ShapeDef, Warning, WorldDef,
                        WorldStats)
 
 lib, library_path = _library.load()
@@ -108,6 +109,20 @@ _declare("lfem_body_add_shape", _st, _vp, Body, _p(ShapeDef), _up)
 
 _declare("lfem_world_query_contacts", _st, _vp, _vp, _u32, _up)
 
+_fp = _p(ctypes.c_float)
+_declare("lfem_body_add_skin", _st, _vp, Body, _dp, _u32, _up, _u32, _up)
+_declare("lfem_body_get_skin_count", _st, _vp, Body, _up)
+_declare("lfem_body_get_skin_sizes", _st, _vp, Body, _u32, _up, _up)
+_declare("lfem_body_get_skin_triangles", _st, _vp, Body, _u32, _up, _u32)
+_declare("lfem_body_get_skin_vertices", _st, _vp, Body, _u32, _dp, _dp, _u32)
+_declare("lfem_body_get_skin_vertices_f32", _st, _vp, Body, _u32, _fp, _u32, _fp, _u32, _u32)
+
+_declare("lfem_query_filter_default", QueryFilter)
+_declare("lfem_world_cast_ray", _st, _vp, _dp, _dp, _dbl, QueryFilter, _p(RayHit),
+         _p(ctypes.c_int))
+_declare("lfem_world_cast_ray_all", _st, _vp, _dp, _dp, _dbl, QueryFilter, _vp, _u32, _up)
+_declare("lfem_world_overlap_box", _st, _vp, _dp, _dp, QueryFilter, _vp, _u32, _up)
+
 _declare("lfem_mesh_create_box", _st, _dp, _up, _p(_vp))
 _declare("lfem_mesh_create_cylinder", _st, _dbl, _dbl, _u32, _u32, _u32, _p(_vp))
 _declare("lfem_mesh_create_cup", _st, _dbl, _dbl, _dbl, _dbl, _u32, _u32, _p(_vp))
@@ -130,3 +145,4 @@ _declare("lfem_vtk_series_destroy", None, _vp)
 _structs.DEFAULTS[WorldDef] = lib.lfem_world_def_default
 _structs.DEFAULTS[BodyDef] = lib.lfem_body_def_default
 _structs.DEFAULTS[ShapeDef] = lib.lfem_shape_def_default
+_structs.DEFAULTS[QueryFilter] = lib.lfem_query_filter_default

@@ -268,6 +268,10 @@ class Profile(ctypes.Structure):
         ("global_rotation", PhaseTime),
         ("commit", PhaseTime),
         ("candidate_searches", ctypes.c_uint64),  # contact's searches for candidate faces anew
+        ("queries", ctypes.c_uint64),           # rays and boxes the queries answered
+        ("query_bodies", ctypes.c_uint64),      # bodies a query reached (box met, filter passed)
+        ("query_primitives", ctypes.c_uint64),  # triangles and shapes a query tested exactly
+        ("query_refits", ctypes.c_uint64),      # moving bodies' trees built or refitted for queries
     ]
 
 
@@ -358,8 +362,32 @@ class Contact(ctypes.Structure):
     ]
 
 
-#: Contact.shape of a contact with a triangle (not a rigid shape).
+#: Contact.shape of a contact with a triangle (not a rigid shape); RayHit.shape of a hit on a
+#: triangle, and RayHit.triangle of a hit on a shape.
 NO_SHAPE = 0xFFFFFFFF
+
+
+class QueryFilter(_Definition):
+    """lfem_query_filter: what a query sees, as the bodies' own filter (a body is seen when
+    body.category_bits & mask_bits and category_bits & body.mask_bits). QueryFilter() is
+    lfem_query_filter_default(): category 1, every mask bit."""
+
+    _fields_ = [("category_bits", ctypes.c_uint32), ("mask_bits", ctypes.c_uint32)]
+
+
+class RayHit(ctypes.Structure):
+    """lfem_ray_hit: where a ray crossed a surface (World.cast_ray_all gives them as a numpy
+    array of RAY_HIT_DTYPE, the same layout)."""
+
+    _fields_ = [
+        ("body", Body),
+        ("triangle", ctypes.c_uint32),        # the body's boundary triangle, or NO_SHAPE
+        ("shape", ctypes.c_uint32),           # the body's shape, or NO_SHAPE
+        ("barycentric", ctypes.c_double * 2),  # t1, t2 as in Contact (0 for a shape)
+        ("point", _d3),                       # m, on the ray
+        ("normal", _d3),                      # unit, out of the surface hit
+        ("distance", ctypes.c_double),        # m from the origin along the unit ray
+    ]
 
 _BODY_DTYPE = np.dtype([("index", "<u4"), ("generation", "<u4")])
 
@@ -373,4 +401,15 @@ CONTACT_DTYPE = np.dtype({
                 (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8, np.uint32],
     "offsets": [getattr(Contact, name).offset for name in _CONTACT_FIELDS],
     "itemsize": ctypes.sizeof(Contact),
+})
+
+_RAY_HIT_FIELDS = ["body", "triangle", "shape", "barycentric", "point", "normal", "distance"]
+
+#: The numpy dtype of lfem_ray_hit (same offsets and size as RayHit).
+RAY_HIT_DTYPE = np.dtype({
+    "names": _RAY_HIT_FIELDS,
+    "formats": [_BODY_DTYPE, np.uint32, np.uint32, (np.float64, 2), (np.float64, 3),
+                (np.float64, 3), np.float64],
+    "offsets": [getattr(RayHit, name).offset for name in _RAY_HIT_FIELDS],
+    "itemsize": ctypes.sizeof(RayHit),
 })

@@ -62,11 +62,20 @@ class Layout(unittest.TestCase):
             "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152,
             "added_mass": 160, "inverted_tets": 168, "min_jacobian": 176})
         self.check(lfem.PhaseTime, 16, {"seconds": 0, "calls": 8})
-        self.check(lfem.Profile, 192, {
+        self.check(lfem.Profile, 224, {
             "substeps": 0, "internal_forces": 8, "predictor": 24, "kinematic_motion": 40,
             "broad_phase": 56, "narrow_phase": 72, "shape_queries": 88, "shape_tests": 104,
             "ccd_queries": 112, "normal_solve": 120, "friction": 136, "global_rotation": 152,
-            "commit": 168, "candidate_searches": 184})
+            "commit": 168, "candidate_searches": 184, "queries": 192, "query_bodies": 200,
+            "query_primitives": 208, "query_refits": 216})
+        self.check(lfem.QueryFilter, 8, {"category_bits": 0, "mask_bits": 4})
+        self.check(lfem.RayHit, 88, {
+            "body": 0, "triangle": 8, "shape": 12, "barycentric": 16, "point": 32, "normal": 56,
+            "distance": 80})
+        dt = lfem.RAY_HIT_DTYPE
+        self.assertEqual(dt.itemsize, 88)
+        for name in ("body", "triangle", "shape", "barycentric", "point", "normal", "distance"):
+            self.assertEqual(dt.fields[name][1], getattr(lfem.RayHit, name).offset, name)
         self.check(lfem.BodyDef, 120, {
             "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
@@ -636,3 +645,82 @@ class Contacts(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class SkinsAndQueries(unittest.TestCase):
+    def test_a_skin_falls_with_its_block(self):
+        # A render mesh (a tetrahedron's surface) inside a falling block: free fall moves every
+        # tet by -g t^2 / 2 exactly (up to round-off), so every skin vertex follows p - g t^2 / 2;
+        # vertex 0 is the corner of three axis faces of areas 0.01, 0.006 and 0.003 m^2, so its
+        # area-weighted normal is -(0.006, 0.012, 0.02) / |.|.
+        with lfem.World() as world:
+            block = add_block(world, lfem.Model.COROTATIONAL)
+            p = np.array([[0.05, 0.05, 2.02], [0.25, 0.05, 2.02], [0.05, 0.15, 2.02],
+                          [0.05, 0.05, 2.08]])
+            t = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+            self.assertEqual(world.add_skin(block, p, t), 0)
+            self.assertEqual(world.skin_count(block), 1)
+            self.assertEqual(world.skin_sizes(block, 0), (4, 4))
+            np.testing.assert_array_equal(world.skin_triangles(block, 0), t)
+            world.step(0.1)
+            time = world.stats.time
+            x, n = world.skin_vertices(block, 0)
+            expected = p - [0, 0, 0.5 * G * time * time]
+            np.testing.assert_allclose(x, expected, rtol=0, atol=1e-11)
+            corner = -np.array([0.006, 0.012, 0.02]) / math.sqrt(0.006**2 + 0.012**2 + 0.02**2)
+            np.testing.assert_allclose(n[0], corner, rtol=0, atol=1e-12)
+            buffer = np.full((4, 8), -1.0, dtype=np.float32)
+            world.skin_vertex_buffer(block, 0, buffer)
+            np.testing.assert_array_equal(buffer[:, :3], x.astype(np.float32))
+            np.testing.assert_array_equal(buffer[:, 3:6], n.astype(np.float32))
+            np.testing.assert_array_equal(buffer[:, 6:], -1.0)
+            with self.assertRaises(lfem.LfemError) as cm:
+                world.skin_vertex_buffer(block, 0, np.zeros((3, 8), dtype=np.float32))
+            self.assertEqual(cm.exception.status, lfem.Status.BUFFER_TOO_SMALL)
+            with self.assertRaises(lfem.InvalidArgumentError) as cm:
+                world.skin_vertices(block, 1)
+            self.assertTrue(cm.exception.message.startswith("lfem_body_get_skin_vertices:"),
+                            cm.exception.message)
+            with self.assertRaises(lfem.InvalidArgumentError):  # far outside the block
+                world.add_skin(block, [[5, 5, 5], [5.1, 5, 5], [5, 5.1, 5]], [[0, 1, 2]])
+            self.assertEqual(world.skin_count(block), 1)
+
+    def test_rays_and_boxes_find_what_is_there(self):
+        # A static sphere of radius 0.5 about (2, 0, 0): a ray along +x at height 0.3 meets it at
+        # 2 - sqrt(0.25 - 0.09) = 1.6 with normal (p - c) / r; a cube [0, 0.2]^3 is crossed at 1
+        # and 1.2 by a ray from x = -1.
+        with lfem.World(lfem.WorldDef(gravity=(0, 0, 0))) as world:
+            ground = world.create_body(lfem.BodyDef(type=lfem.BodyType.STATIC))
+            world.add_shape(ground, lfem.ShapeDef(type=lfem.ShapeType.SPHERE, center=(2, 0, 0),
+                                                  radius=0.5))
+            cube = world.create_body()
+            mesh = lfem.Mesh.box((0.2, 0.2, 0.2), (2, 2, 2))
+            world.add_mesh(cube, mesh)
+            mesh.close()
+            f = lfem.QueryFilter()
+            self.assertEqual((f.category_bits, f.mask_bits), (1, 0xFFFFFFFF))
+            hit = world.cast_ray((0, 0, 0.3), (3, 0, 0))
+            self.assertIsNotNone(hit)
+            self.assertEqual(hit.body, ground)
+            self.assertEqual((hit.shape, hit.triangle), (0, lfem.NO_SHAPE))
+            self.assertAlmostEqual(hit.distance, 1.6, delta=1e-12)
+            np.testing.assert_allclose(list(hit.normal), [-0.8, 0, 0.6], rtol=0, atol=1e-12)
+            hits = world.cast_ray_all((-1, 0.07, 0.03), (1, 0, 0))
+            self.assertEqual(len(hits), 4)
+            chord = math.sqrt(0.25 - 0.07**2 - 0.03**2)
+            np.testing.assert_allclose(hits["distance"], [1.0, 1.2, 3 - chord, 3 + chord],
+                                       rtol=0, atol=1e-12)
+            self.assertEqual(int(hits[0]["body"]["index"]), cube.index)
+            self.assertNotEqual(int(hits[0]["triangle"]), lfem.NO_SHAPE)
+            self.assertIsNone(world.cast_ray((-1, 0.07, 0.03), (1, 0, 0), 0.99))
+            self.assertIsNone(world.cast_ray((0, 0, 0.3), (1, 0, 0),
+                                             filter=lfem.QueryFilter(mask_bits=2)))
+            self.assertEqual(world.overlap_box((0.1, 0.1, 0.1), (0.12, 0.12, 0.12)), [cube])
+            self.assertEqual(world.overlap_box((-5, -5, -5), (5, 5, 5)), [ground, cube])
+            self.assertEqual(world.overlap_box((0.5, 0.5, 0.5), (0.6, 0.6, 0.6)), [])
+            with self.assertRaises(lfem.InvalidArgumentError) as cm:
+                world.cast_ray((0, 0, 0), (0, 0, 0))
+            self.assertIn("direction", cm.exception.message)
+            with self.assertRaises(lfem.InvalidArgumentError):
+                world.overlap_box((1, 1, 1), (0, 0, 0))
+            self.assertGreaterEqual(world.profile.queries, 7)

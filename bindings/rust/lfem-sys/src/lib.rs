@@ -247,6 +247,14 @@ pub struct lfem_profile {
     /// How often contact searched for candidate faces anew (only when a body moved beyond the
     /// margin of the last search, or the bodies changed).
     pub candidate_searches: u64,
+    /// Rays and boxes the queries answered.
+    pub queries: u64,
+    /// Bodies a query reached (their box met, the filter passed).
+    pub query_bodies: u64,
+    /// Triangles and shapes a query tested exactly.
+    pub query_primitives: u64,
+    /// Trees of moving bodies' triangles built or refitted for the queries.
+    pub query_refits: u64,
 }
 
 /// A body handle: a value, `{0, 0}` is the null handle.
@@ -310,6 +318,31 @@ pub struct lfem_shape_def {
     pub padding: u32,
 }
 
+/// A query's collision filter (lfem_query_filter): a body is seen when each one's category is
+/// in the other's mask.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct lfem_query_filter {
+    pub category_bits: u32,
+    pub mask_bits: u32,
+}
+
+/// Where a ray crossed a surface (lfem_ray_hit).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_ray_hit {
+    pub body: lfem_body,
+    /// Boundary triangle of the body, or u32::MAX when a shape was hit.
+    pub triangle: u32,
+    /// Shape index, or u32::MAX when a triangle was hit.
+    pub shape: u32,
+    /// t1, t2 as in lfem_contact (0 for a shape).
+    pub barycentric: [c_double; 2],
+    pub point: [c_double; 3],
+    pub normal: [c_double; 3],
+    pub distance: c_double,
+}
+
 // The C sizes (bindings/abi_layout.c asserts the same numbers with _Static_assert).
 const _: () = assert!(size_of::<lfem_status>() == 4);
 const _: () = assert!(size_of::<lfem_body_type>() == 4);
@@ -326,7 +359,9 @@ const _: () = assert!(size_of::<lfem_warning_kind>() == 4);
 const _: () = assert!(size_of::<lfem_warning>() == 24);
 const _: () = assert!(size_of::<lfem_contact>() == 128);
 const _: () = assert!(size_of::<lfem_phase_time>() == 16);
-const _: () = assert!(size_of::<lfem_profile>() == 192);
+const _: () = assert!(size_of::<lfem_profile>() == 224);
+const _: () = assert!(size_of::<lfem_query_filter>() == 8);
+const _: () = assert!(size_of::<lfem_ray_hit>() == 88);
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(size_of::<lfem_body_def>() == 120);
 #[cfg(target_pointer_width = "64")]
@@ -533,6 +568,81 @@ extern "C" {
     pub fn lfem_world_query_contacts(
         world: *const lfem_world,
         out: *mut lfem_contact,
+        capacity: u32,
+        count: *mut u32,
+    ) -> lfem_status;
+
+    // skins
+    pub fn lfem_body_add_skin(
+        world: *mut lfem_world,
+        body: lfem_body,
+        positions: *const c_double,
+        vertex_count: u32,
+        triangles: *const u32,
+        triangle_count: u32,
+        skin_index: *mut u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_skin_count(world: *const lfem_world, body: lfem_body, out: *mut u32) -> lfem_status;
+    pub fn lfem_body_get_skin_sizes(
+        world: *const lfem_world,
+        body: lfem_body,
+        skin: u32,
+        vertex_count: *mut u32,
+        triangle_count: *mut u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_skin_triangles(
+        world: *const lfem_world,
+        body: lfem_body,
+        skin: u32,
+        out: *mut u32,
+        triangle_capacity: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_skin_vertices(
+        world: *const lfem_world,
+        body: lfem_body,
+        skin: u32,
+        positions: *mut c_double,
+        normals: *mut c_double,
+        vertex_capacity: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_skin_vertices_f32(
+        world: *const lfem_world,
+        body: lfem_body,
+        skin: u32,
+        positions: *mut f32,
+        position_stride: u32,
+        normals: *mut f32,
+        normal_stride: u32,
+        vertex_capacity: u32,
+    ) -> lfem_status;
+
+    // queries
+    pub fn lfem_query_filter_default() -> lfem_query_filter;
+    pub fn lfem_world_cast_ray(
+        world: *const lfem_world,
+        origin: *const c_double,
+        direction: *const c_double,
+        max_distance: c_double,
+        filter: lfem_query_filter,
+        out: *mut lfem_ray_hit,
+        hit: *mut c_int,
+    ) -> lfem_status;
+    pub fn lfem_world_cast_ray_all(
+        world: *const lfem_world,
+        origin: *const c_double,
+        direction: *const c_double,
+        max_distance: c_double,
+        filter: lfem_query_filter,
+        out: *mut lfem_ray_hit,
+        capacity: u32,
+        count: *mut u32,
+    ) -> lfem_status;
+    pub fn lfem_world_overlap_box(
+        world: *const lfem_world,
+        lo: *const c_double,
+        hi: *const c_double,
+        filter: lfem_query_filter,
+        out: *mut lfem_body,
         capacity: u32,
         count: *mut u32,
     ) -> lfem_status;

@@ -24,7 +24,9 @@ fn sizes_match_c() {
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
     assert_eq!(size_of::<lfem_phase_time>(), 16);
-    assert_eq!(size_of::<lfem_profile>(), 192);
+    assert_eq!(size_of::<lfem_profile>(), 224);
+    assert_eq!(size_of::<lfem_query_filter>(), 8);
+    assert_eq!(size_of::<lfem_ray_hit>(), 88);
     assert_eq!(align_of::<lfem_world_def>(), 8);
     assert_eq!(align_of::<lfem_body>(), 4);
 }
@@ -75,6 +77,18 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_profile, global_rotation), 152);
     assert_eq!(offset!(lfem_profile, commit), 168);
     assert_eq!(offset!(lfem_profile, candidate_searches), 184);
+    assert_eq!(offset!(lfem_profile, queries), 192);
+    assert_eq!(offset!(lfem_profile, query_bodies), 200);
+    assert_eq!(offset!(lfem_profile, query_primitives), 208);
+    assert_eq!(offset!(lfem_profile, query_refits), 216);
+
+    assert_eq!(offset!(lfem_query_filter, mask_bits), 4);
+    assert_eq!(offset!(lfem_ray_hit, triangle), 8);
+    assert_eq!(offset!(lfem_ray_hit, shape), 12);
+    assert_eq!(offset!(lfem_ray_hit, barycentric), 16);
+    assert_eq!(offset!(lfem_ray_hit, point), 32);
+    assert_eq!(offset!(lfem_ray_hit, normal), 56);
+    assert_eq!(offset!(lfem_ray_hit, distance), 80);
 
     assert_eq!(offset!(lfem_body_def, model), 4);
     assert_eq!(offset!(lfem_body_def, young_modulus), 8);
@@ -150,6 +164,9 @@ fn defaults_are_the_documented_ones() {
     assert_eq!(s.radius, 0.5);
     assert_eq!(s.half_length, 0.5);
     assert!(s.points.is_null());
+    // SAFETY: returns a value.
+    let f = unsafe { lfem_query_filter_default() };
+    assert_eq!(f, lfem_query_filter { category_bits: 1, mask_bits: u32::MAX });
 }
 
 #[test]

@@ -667,6 +667,83 @@ pub struct Inversion {
     /// s, for how long the body has had inverted tets without a break (0 when none).
     pub inverted_for: f64,
 }
+/// A query's collision filter (lfem_query_filter), as the bodies' own: a body is seen when
+/// `body.category_bits & mask_bits != 0` and `category_bits & body.mask_bits != 0`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct QueryFilter {
+    /// What the query is; default 1.
+    pub category_bits: u32,
+    /// What it sees; default all bits.
+    pub mask_bits: u32,
+}
+
+impl Default for QueryFilter {
+    fn default() -> QueryFilter {
+        // SAFETY: returns a value.
+        let f = unsafe { sys::lfem_query_filter_default() };
+        QueryFilter { category_bits: f.category_bits, mask_bits: f.mask_bits }
+    }
+}
+
+impl QueryFilter {
+    fn raw(self) -> sys::lfem_query_filter {
+        sys::lfem_query_filter { category_bits: self.category_bits, mask_bits: self.mask_bits }
+    }
+}
+
+/// Where a ray crossed a surface (lfem_ray_hit; same layout).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RayHit {
+    /// The body hit.
+    pub body: Body,
+    /// Its boundary triangle ([`World::boundary_triangles`] order), u32::MAX for a shape.
+    pub triangle: u32,
+    /// Its shape ([`World::add_shape`]'s index), u32::MAX for a triangle.
+    pub shape: u32,
+    /// t1, t2 as in [`Contact`]: the point is (1 - t1 - t2) a + t2 b + t1 c (0 for a shape).
+    pub barycentric: [f64; 2],
+    /// m, on the ray.
+    pub point: [f64; 3],
+    /// Unit, out of the surface hit.
+    pub normal: [f64; 3],
+    /// m from the origin along the unit ray.
+    pub distance: f64,
+}
+
+impl RayHit {
+    /// The triangle hit, `None` for a shape.
+    pub fn triangle(&self) -> Option<u32> {
+        if self.triangle == u32::MAX {
+            None
+        } else {
+            Some(self.triangle)
+        }
+    }
+
+    /// The shape hit, `None` for a triangle.
+    pub fn shape(&self) -> Option<u32> {
+        if self.shape == u32::MAX {
+            None
+        } else {
+            Some(self.shape)
+        }
+    }
+}
+
+const _: () = assert!(size_of::<RayHit>() == size_of::<sys::lfem_ray_hit>());
+const _: () = assert!(align_of::<RayHit>() == align_of::<sys::lfem_ray_hit>());
+
+/// A skin's deformed vertices: positions (m) and unit smooth normals, one each per vertex.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SkinVertices {
+    /// m, the vertices where the tets have carried them.
+    pub positions: Vec<[f64; 3]>,
+    /// Unit, area-weighted over the skin's triangles around each vertex (zero where they have
+    /// no area).
+    pub normals: Vec<[f64; 3]>,
+}
+
 /// Where the step spends its time (lfem_profile): seconds and call counts per phase.
 pub type Profile = sys::lfem_profile;
 /// Time and count of one phase (lfem_phase_time).
@@ -1230,6 +1307,197 @@ impl World {
         check(unsafe {
             sys::lfem_body_set_kinematic_velocity(self.ptr_mut(), body.raw(), linear.as_ptr(), angular.as_ptr())
         })
+    }
+
+    // -- skins --
+
+    /// Bind a render mesh (vertices in the body's rest frame, m; triangles of vertex indices)
+    /// to the body's tets; returns the skin's index on the body (lfem_body_add_skin).
+    pub fn add_skin(&mut self, body: Body, positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<u32> {
+        let vertex_count = to_u32(positions.len(), "vertex count")?;
+        let triangle_count = to_u32(triangles.len(), "triangle count")?;
+        let mut index = 0u32;
+        // SAFETY: live world; the arrays hold 3*vertex_count doubles and 3*triangle_count indices.
+        check(unsafe {
+            sys::lfem_body_add_skin(
+                self.ptr_mut(),
+                body.raw(),
+                positions.as_ptr() as *const f64,
+                vertex_count,
+                triangles.as_ptr() as *const u32,
+                triangle_count,
+                &mut index,
+            )
+        })?;
+        Ok(index)
+    }
+
+    /// The number of skins of a body.
+    pub fn skin_count(&self, body: Body) -> Result<usize> {
+        let mut out = 0u32;
+        // SAFETY: live world, valid output.
+        check(unsafe { sys::lfem_body_get_skin_count(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out as usize)
+    }
+
+    /// The vertex and triangle counts of a skin.
+    pub fn skin_sizes(&self, body: Body, skin: u32) -> Result<(usize, usize)> {
+        let (mut vertices, mut triangles) = (0u32, 0u32);
+        // SAFETY: live world, two valid outputs.
+        check(unsafe { sys::lfem_body_get_skin_sizes(self.ptr(), body.raw(), skin, &mut vertices, &mut triangles) })?;
+        Ok((vertices as usize, triangles as usize))
+    }
+
+    /// A skin's triangles, as given.
+    pub fn skin_triangles(&self, body: Body, skin: u32) -> Result<Vec<[u32; 3]>> {
+        let (_, n) =
+            self.skin_sizes(body, skin).map_err(|e| e.renamed("lfem_body_get_skin_sizes", "lfem_body_get_skin_triangles"))?;
+        let mut out = vec![[0u32; 3]; n];
+        // SAFETY: out holds n triangles of 3 indices.
+        check(unsafe {
+            sys::lfem_body_get_skin_triangles(self.ptr(), body.raw(), skin, out.as_mut_ptr() as *mut u32, n as u32)
+        })?;
+        Ok(out)
+    }
+
+    /// A skin's deformed vertices and smooth normals.
+    pub fn skin_vertices(&self, body: Body, skin: u32) -> Result<SkinVertices> {
+        let (n, _) =
+            self.skin_sizes(body, skin).map_err(|e| e.renamed("lfem_body_get_skin_sizes", "lfem_body_get_skin_vertices"))?;
+        let mut out = SkinVertices { positions: vec![[0.0; 3]; n], normals: vec![[0.0; 3]; n] };
+        // SAFETY: both outputs hold n vertices of 3 doubles.
+        check(unsafe {
+            sys::lfem_body_get_skin_vertices(
+                self.ptr(),
+                body.raw(),
+                skin,
+                out.positions.as_mut_ptr() as *mut f64,
+                out.normals.as_mut_ptr() as *mut f64,
+                n as u32,
+            )
+        })?;
+        Ok(out)
+    }
+
+    /// A skin's vertices into an interleaved float vertex buffer, `stride` floats per vertex:
+    /// the position at `[i * stride ..][..3]` and, with `normals`, the unit normal right after
+    /// it (`[i * stride + 3 ..][..3]`); the other floats are left alone. `stride` >= 3 (6 with
+    /// normals); `buffer` must hold every vertex (else `Status::BufferTooSmall`, nothing
+    /// written).
+    pub fn skin_vertex_buffer(&self, body: Body, skin: u32, buffer: &mut [f32], stride: usize, normals: bool) -> Result<()> {
+        let (n, _) = self
+            .skin_sizes(body, skin)
+            .map_err(|e| e.renamed("lfem_body_get_skin_sizes", "lfem_body_get_skin_vertices_f32"))?;
+        let width = if normals { 6 } else { 3 };
+        if stride < width {
+            return Err(Error::local(
+                Status::InvalidArgument,
+                format!("lfem (Rust): stride {} is below the {} floats of a vertex", stride, width),
+            ));
+        }
+        if n > 0 && buffer.len() < (n - 1) * stride + width {
+            return Err(Error::local(
+                Status::BufferTooSmall,
+                format!("lfem (Rust): a buffer of {} floats is below the {} that {} vertices need", buffer.len(), (n - 1) * stride + width, n),
+            ));
+        }
+        let stride32 = to_u32(stride, "stride")?;
+        let base = buffer.as_mut_ptr();
+        // SAFETY: the buffer holds (n - 1) * stride + width floats (checked above); normals, when
+        // asked for, start 3 floats in.
+        check(unsafe {
+            sys::lfem_body_get_skin_vertices_f32(
+                self.ptr(),
+                body.raw(),
+                skin,
+                base,
+                stride32,
+                if normals { base.add(3) } else { ptr::null_mut() },
+                stride32,
+                n as u32,
+            )
+        })
+    }
+
+    // -- queries --
+
+    /// The nearest crossing of the ray `origin + t direction / |direction|`, t in
+    /// [0, max_distance] (m; `f64::INFINITY` for no limit), with the surface of a body the
+    /// filter sees; `None` when it meets nothing (lfem_world_cast_ray).
+    pub fn cast_ray(&self, origin: [f64; 3], direction: [f64; 3], max_distance: f64, filter: QueryFilter) -> Result<Option<RayHit>> {
+        let mut out = RayHit::default();
+        let mut hit = 0;
+        // SAFETY: 3 + 3 doubles; RayHit has the layout of lfem_ray_hit.
+        check(unsafe {
+            sys::lfem_world_cast_ray(
+                self.ptr(),
+                origin.as_ptr(),
+                direction.as_ptr(),
+                max_distance,
+                filter.raw(),
+                &mut out as *mut RayHit as *mut sys::lfem_ray_hit,
+                &mut hit,
+            )
+        })?;
+        Ok(if hit == 1 { Some(out) } else { None })
+    }
+
+    /// Every crossing along the ray, nearest first (lfem_world_cast_ray_all).
+    pub fn cast_ray_all(&self, origin: [f64; 3], direction: [f64; 3], max_distance: f64, filter: QueryFilter) -> Result<Vec<RayHit>> {
+        let call = |out: &mut [RayHit], count: &mut u32| {
+            // SAFETY: out holds out.len() hits of lfem_ray_hit's layout (none: a null pointer).
+            unsafe {
+                sys::lfem_world_cast_ray_all(
+                    self.ptr(),
+                    origin.as_ptr(),
+                    direction.as_ptr(),
+                    max_distance,
+                    filter.raw(),
+                    if out.is_empty() { ptr::null_mut() } else { out.as_mut_ptr() as *mut sys::lfem_ray_hit },
+                    out.len() as u32,
+                    count,
+                )
+            }
+        };
+        let mut count = 0u32;
+        let first = call(&mut [], &mut count);
+        if first != sys::LFEM_BUFFER_TOO_SMALL {
+            check(first)?;
+        }
+        let mut out = vec![RayHit::default(); count as usize];
+        if count > 0 {
+            check(call(&mut out, &mut count))?;
+        }
+        Ok(out)
+    }
+
+    /// The bodies the filter sees whose current geometry overlaps the box [lo, hi] (m), in body
+    /// order (lfem_world_overlap_box).
+    pub fn overlap_box(&self, lo: [f64; 3], hi: [f64; 3], filter: QueryFilter) -> Result<Vec<Body>> {
+        let call = |out: &mut [Body], count: &mut u32| {
+            // SAFETY: out holds out.len() handles of lfem_body's layout (none: a null pointer).
+            unsafe {
+                sys::lfem_world_overlap_box(
+                    self.ptr(),
+                    lo.as_ptr(),
+                    hi.as_ptr(),
+                    filter.raw(),
+                    if out.is_empty() { ptr::null_mut() } else { out.as_mut_ptr() as *mut sys::lfem_body },
+                    out.len() as u32,
+                    count,
+                )
+            }
+        };
+        let mut count = 0u32;
+        let first = call(&mut [], &mut count);
+        if first != sys::LFEM_BUFFER_TOO_SMALL {
+            check(first)?;
+        }
+        let mut out = vec![Body::NULL; count as usize];
+        if count > 0 {
+            check(call(&mut out, &mut count))?;
+        }
+        Ok(out)
     }
 
     // -- contacts --

@@ -1,6 +1,9 @@
 //! Real simulations through the safe API, checked against closed forms, plus error handling,
 //! handle invalidation, buffers and contacts.
-use lfem::{AttachTo, Body, BodyDef, BodyType, Contact, EventType, Mesh, Model, ShapeDef, ShapeType, Status, WarningKind, World, WorldDef};
+use lfem::{
+    AttachTo, Body, BodyDef, BodyType, Contact, EventType, Mesh, Model, QueryFilter, ShapeDef, ShapeType, Status,
+    WarningKind, World, WorldDef,
+};
 
 const G: f64 = 9.81;
 
@@ -518,6 +521,123 @@ fn self_contact_is_for_deformable_bodies_only() {
     assert!(err.message().contains("self_contact"), "message: {}", err.message());
     d.body_type = BodyType::Deformable;
     world.create_body(&d).unwrap();
+}
+
+#[test]
+fn a_skin_falls_with_its_body() {
+    // A render mesh inside a falling block: free fall moves every tet by -g t^2 / 2 exactly (up
+    // to round-off, as the block's own nodes), so every skin vertex follows p - g t^2 / 2, the
+    // flat box skin's normals stay the face normals, and the float buffer holds the same
+    // numbers rounded to f32.
+    let (mut world, block) = block_world(Model::Corotational, [0.3, 0.2, 0.1], 400.0);
+    let (lo, hi) = ([0.05, 0.05, 2.02], [0.25, 0.15, 2.08]);
+    let mut positions = Vec::new();
+    let mut triangles = Vec::new();
+    for axis in 0..3 {
+        for side in 0..2 {
+            // One square per face (two triangles), vertices of its own: flat normals.
+            let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
+            let first = positions.len() as u32;
+            for (i, j) in [(0, 0), (1, 0), (1, 1), (0, 1)] {
+                let mut p = [0.0; 3];
+                p[axis] = if side == 1 { hi[axis] } else { lo[axis] };
+                p[u] = if i == 1 { hi[u] } else { lo[u] };
+                p[w] = if j == 1 { hi[w] } else { lo[w] };
+                positions.push(p);
+            }
+            let (a, b, c, d) = (first, first + 1, first + 2, first + 3);
+            if side == 1 {
+                triangles.extend_from_slice(&[[a, b, c], [a, c, d]]);
+            } else {
+                triangles.extend_from_slice(&[[a, c, b], [a, d, c]]);
+            }
+        }
+    }
+    assert_eq!(world.add_skin(block, &positions, &triangles).unwrap(), 0);
+    assert_eq!(world.skin_count(block).unwrap(), 1);
+    assert_eq!(world.skin_sizes(block, 0).unwrap(), (24, 12));
+    assert_eq!(world.skin_triangles(block, 0).unwrap(), triangles);
+    world.step(0.1).unwrap();
+    let t = world.stats().unwrap().time;
+    let skin = world.skin_vertices(block, 0).unwrap();
+    for (v, (p, p0)) in skin.positions.iter().zip(&positions).enumerate() {
+        assert!(close(p[0], p0[0], 1e-11) && close(p[1], p0[1], 1e-11), "vertex {} drifted", v);
+        assert!(close(p[2], p0[2] - 0.5 * G * t * t, 1e-11), "vertex {}: z = {}", v, p[2]);
+        let n = skin.normals[v];
+        let axis = (v / 8) as usize; // 8 vertices per axis (two faces)
+        let sign = if (v / 4) % 2 == 1 { 1.0 } else { -1.0 };
+        for k in 0..3 {
+            let expected = if k == axis { sign } else { 0.0 };
+            assert!(close(n[k], expected, 1e-12), "vertex {} normal {:?}", v, n);
+        }
+    }
+    let mut buffer = vec![-1.0f32; 24 * 8];
+    world.skin_vertex_buffer(block, 0, &mut buffer, 8, true).unwrap();
+    for v in 0..24 {
+        for k in 0..3 {
+            assert_eq!(buffer[8 * v + k], skin.positions[v][k] as f32);
+            assert_eq!(buffer[8 * v + 3 + k], skin.normals[v][k] as f32);
+        }
+        assert_eq!(buffer[8 * v + 6], -1.0);
+    }
+    let err = world.skin_vertex_buffer(block, 0, &mut buffer[..100], 8, true).unwrap_err();
+    assert_eq!(err.status(), Status::BufferTooSmall);
+    let err = world.skin_vertices(block, 1).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().starts_with("lfem_body_get_skin_vertices:"), "message: {}", err.message());
+    let far = [[5.0, 5.0, 5.0], [5.1, 5.0, 5.0], [5.0, 5.1, 5.0]];
+    assert_eq!(world.add_skin(block, &far, &[[0, 1, 2]]).unwrap_err().status(), Status::InvalidArgument);
+    assert_eq!(world.skin_count(block).unwrap(), 1);
+}
+
+#[test]
+fn rays_and_boxes_find_what_is_there() {
+    // A static sphere of radius 0.5 about (2, 0, 0) and a cube [0, 0.2]^3: a ray along +x at
+    // height z = 0.3 misses the cube and meets the sphere where its chord starts,
+    // 2 - sqrt(0.25 - 0.09) = 1.6 from the origin, with normal (p - c) / r.
+    let mut def = WorldDef::default();
+    def.gravity = [0.0; 3];
+    let mut world = World::new(&def).unwrap();
+    let mut sd = BodyDef::default();
+    sd.body_type = BodyType::Static;
+    let ground = world.create_body(&sd).unwrap();
+    let mut shape = ShapeDef::default();
+    shape.shape_type = ShapeType::Sphere;
+    shape.center = [2.0, 0.0, 0.0];
+    shape.radius = 0.5;
+    assert_eq!(world.add_shape(ground, &shape).unwrap(), 0);
+    let cube = world.create_body(&BodyDef::default()).unwrap();
+    world.add_mesh(cube, &Mesh::new_box([0.2, 0.2, 0.2], [2, 2, 2]).unwrap()).unwrap();
+    let filter = QueryFilter::default();
+    assert_eq!(filter, QueryFilter { category_bits: 1, mask_bits: u32::MAX });
+    let hit = world.cast_ray([0.0, 0.0, 0.3], [2.0, 0.0, 0.0], f64::INFINITY, filter).unwrap().unwrap();
+    assert_eq!(hit.body, ground);
+    assert_eq!((hit.shape(), hit.triangle()), (Some(0), None));
+    assert!(close(hit.distance, 1.6, 1e-12), "distance {}", hit.distance);
+    for (k, n) in [-0.4 / 0.5, 0.0, 0.3 / 0.5].iter().enumerate() {
+        assert!(close(hit.normal[k], *n, 1e-12), "normal {:?}", hit.normal);
+    }
+    // Through the cube (x = 0 and 0.2) and then the sphere (1.5 and 2.5), nearest first.
+    let all = world.cast_ray_all([-1.0, 0.07, 0.03], [1.0, 0.0, 0.0], f64::INFINITY, filter).unwrap();
+    let d: Vec<f64> = all.iter().map(|h| h.distance).collect();
+    assert_eq!(all.len(), 4, "{:?}", d);
+    let expected = [1.0, 1.2, 3.0 - (0.25f64 - 0.07 * 0.07 - 0.03 * 0.03).sqrt(), 3.0 + (0.25f64 - 0.0058).sqrt()];
+    for (got, want) in d.iter().zip(&expected) {
+        assert!(close(*got, *want, 1e-12), "{:?} against {:?}", d, expected);
+    }
+    assert_eq!((all[0].body, all[0].shape()), (cube, None));
+    assert!(world.cast_ray([-1.0, 0.07, 0.03], [1.0, 0.0, 0.0], 0.99, filter).unwrap().is_none());
+    let blind = QueryFilter { category_bits: 1, mask_bits: 2 };
+    assert!(world.cast_ray([0.0, 0.0, 0.3], [1.0, 0.0, 0.0], f64::INFINITY, blind).unwrap().is_none());
+    assert_eq!(world.overlap_box([0.1, 0.1, 0.1], [0.12, 0.12, 0.12], filter).unwrap(), vec![cube]);
+    assert_eq!(world.overlap_box([1.9, -0.1, -0.1], [2.1, 0.1, 0.1], filter).unwrap(), vec![ground]);
+    assert_eq!(world.overlap_box([-5.0, -5.0, -5.0], [5.0, 5.0, 5.0], filter).unwrap(), vec![ground, cube]);
+    assert!(world.overlap_box([0.5, 0.5, 0.5], [0.6, 0.6, 0.6], filter).unwrap().is_empty());
+    let err = world.cast_ray([0.0; 3], [0.0; 3], 1.0, filter).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    assert!(err.message().contains("direction"), "message: {}", err.message());
+    assert_eq!(world.overlap_box([1.0; 3], [0.0; 3], filter).unwrap_err().status(), Status::InvalidArgument);
+    assert!(world.profile().unwrap().queries >= 10);
 }
 
 #[test]

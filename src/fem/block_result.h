@@ -1,0 +1,46 @@
+// What the element loops (4-node tets: internal_forces.cpp; 10-node: quadratic_forces.cpp)
+// report besides their forces: each block of tets gives one BlockResult, the blocks' results
+// are summed in block order (so the sum is the same for any thread count), and the sum becomes
+// the body's ElasticResult.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "fem/internal_forces.h"
+
+namespace lfem {
+
+struct BlockResult {
+    double energy = 0;      // J, strain energy
+    double tangent = 0;     // the largest tangent estimate (kTangent) or barrier stiffness (kBarrier)
+    uint32_t inverted = 0;  // tets with J = det F <= 0 (a 10-node tet: at one of its quadrature points)
+    double min_J = HUGE_VAL;  // the smallest J (a 10-node tet's: at its quadrature points)
+};
+
+// The blocks' results summed in block order.
+inline BlockResult sum_blocks(const std::vector<BlockResult>& per_block) {
+    BlockResult total;
+    for (const BlockResult& r : per_block) {
+        total.energy += r.energy;
+        total.tangent = std::max(total.tangent, r.tangent);
+        total.inverted += r.inverted;
+        total.min_J = std::min(total.min_J, r.min_J);
+    }
+    return total;
+}
+
+// The body's result from the sum; stiffening 1 (the caller sets it from total.tangent for the
+// models that have one).
+inline ElasticResult elastic_result(const BlockResult& total) {
+    ElasticResult out;
+    out.strain_energy = total.energy;
+    out.inverted_tets = total.inverted;
+    out.min_jacobian = total.min_J < HUGE_VAL ? total.min_J : 1.0;  // (no tets: nothing crushed)
+    out.stiffening = 1.0;
+    return out;
+}
+
+}  // namespace lfem

@@ -1,0 +1,114 @@
+// Rays against the world: the bodies whose box the ray meets, nearest first (the tree of body
+// boxes), each body's triangles the ray meets (its tree of triangles) and its shapes (in
+// closed form, hulls by GJK). Every crossing of a surface counts, from either side: a ray that
+// starts inside a body or a shape meets its surface on the way out.
+#include <algorithm>
+#include <cmath>
+
+#include "common/ray_triangle.h"
+#include "query/query_scene.h"
+#include "query/ray_shape.h"
+
+namespace lfem {
+namespace {
+
+Vec3 node(const double* x, uint32_t i) { return Vec3(x[3 * std::size_t(i)], x[3 * std::size_t(i) + 1], x[3 * std::size_t(i) + 2]); }
+
+// Ray against boundary triangle t of body b: true, with the hit, when it crosses it at a
+// distance in [0, t_max].
+bool ray_triangle(const QueryBody& b, uint32_t t, const QueryRay& ray, double t_max, uint32_t slot, RayHit& hit) {
+    const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
+    const Vec3 a = node(b.x, tri[0]), e1 = node(b.x, tri[1]) - a, e2 = node(b.x, tri[2]) - a;
+    double s, u, v;
+    if (!line_meets_triangle(ray.origin, ray.dir, a, e1, e2, s, u, v) || !(s >= 0.0 && s <= t_max)) return false;
+    const Vec3 n = e1.cross(e2);
+    hit.slot = slot, hit.triangle = t, hit.shape = UINT32_MAX;
+    hit.t1 = v, hit.t2 = u;  // the point is (1 - u - v) a + u b + v c
+    hit.distance = s;
+    hit.point = ray.origin + s * ray.dir;
+    hit.normal = n / n.norm();
+    return true;
+}
+
+}  // namespace
+
+template <class Visit>
+void QueryScene::for_bodies_on_ray(const QueryRay& ray, const Visit& visit) {
+    double t_max = ray.max_distance;
+    for (uint32_t slot : unbounded_) t_max = visit(slot, t_max);
+    const double d[3] = {ray.dir[0], ray.dir[1], ray.dir[2]}, o[3] = {ray.origin[0], ray.origin[1], ray.origin[2]};
+    const RaySlabs slabs(o, d);
+    tree_.cast(slabs, t_max, [&](uint32_t item, double bound) {
+        double enter, exit;  // a leaf holds a few bodies: each one's own box first
+        const uint32_t slot = bounded_[item];
+        return ray_interval(slots_[slot].box, slabs, 0.0, bound, enter, exit) ? visit(slot, bound) : bound;
+    });
+}
+
+template <class Add>
+double QueryScene::body_crossings(uint32_t slot, const QueryBody& b, const QueryRay& ray, double t_max,
+                                  const Add& add) {
+    counts_.bodies += 1;
+    if (b.triangle_count > 0) {
+        const double d[3] = {ray.dir[0], ray.dir[1], ray.dir[2]}, o[3] = {ray.origin[0], ray.origin[1], ray.origin[2]};
+        tree_of(slot, b).tree().cast(RaySlabs(o, d), t_max, [&](uint32_t t, double bound) {
+            counts_.primitives += 1;
+            RayHit hit;
+            if (ray_triangle(b, t, ray, bound, slot, hit)) bound = t_max = add(hit);
+            return bound;
+        });
+    }
+    for (uint32_t j = 0; j < b.shape_count; ++j) {
+        counts_.primitives += 1;
+        LineInterval line;
+        if (!line_through_shape(b.shapes[j], ShapePose::load(b.shape_pose + 7 * std::size_t(j)), ray.origin, ray.dir,
+                                line))
+            continue;
+        for (int end = 0; end < 2; ++end) {
+            const double t = end == 0 ? line.t_in : line.t_out;
+            if (!(t >= 0.0 && t <= t_max)) continue;  // behind the origin, too far, or infinite
+            RayHit hit;
+            hit.slot = slot, hit.shape = j;
+            hit.distance = t;
+            hit.point = ray.origin + t * ray.dir;
+            hit.normal = end == 0 ? line.n_in : line.n_out;
+            t_max = add(hit);
+        }
+    }
+    return t_max;
+}
+
+bool QueryScene::cast_ray(const QueryWorld& world, const QueryRay& ray, const QueryFilter& filter, RayHit& out) {
+    in_use_ = true;
+    counts_.queries += 1;
+    bool found = false;
+    RayHit best;
+    for_bodies_on_ray(ray, [&](uint32_t slot, double t_max) {
+        QueryBody b;
+        if (!world.body(slot, b) || !filter.sees(b)) return t_max;
+        return body_crossings(slot, b, ray, t_max, [&](const RayHit& hit) {
+            if (!found || hit_before(hit, best)) best = hit, found = true;
+            return best.distance;  // only as near (a tie may still come first in hit order)
+        });
+    });
+    if (found) out = best;
+    return found;
+}
+
+void QueryScene::cast_ray_all(const QueryWorld& world, const QueryRay& ray, const QueryFilter& filter,
+                              std::vector<RayHit>& out) {
+    in_use_ = true;
+    counts_.queries += 1;
+    out.clear();
+    for_bodies_on_ray(ray, [&](uint32_t slot, double t_max) {
+        QueryBody b;
+        if (!world.body(slot, b) || !filter.sees(b)) return t_max;
+        return body_crossings(slot, b, ray, t_max, [&](const RayHit& hit) {
+            out.push_back(hit);
+            return ray.max_distance;
+        });
+    });
+    std::sort(out.begin(), out.end(), hit_before);
+}
+
+}  // namespace lfem

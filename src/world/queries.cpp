@@ -1,0 +1,70 @@
+// The queries of the world's current geometry (query/query_scene.h) on the bodies as they are:
+// the world lends each body's arrays, the scene keeps its boxes and trees current through the
+// world's revision, which moves with every change of positions or geometry.
+#include "world/world.h"
+
+namespace lfem {
+namespace {
+
+class BodiesForQueries final : public QueryWorld {
+public:
+    explicit BodiesForQueries(const BodyRegistry& bodies) : bodies_(bodies) {}
+    uint32_t slot_count() const override { return bodies_.slot_count(); }
+    bool body(uint32_t slot, QueryBody& out) const override {
+        if (!bodies_.live(slot)) return false;
+        const Body& b = bodies_.slot(slot);
+        if (!b.has_geometry()) return false;
+        out.identity = b.geometry_identity();
+        out.moves = b.def.type != LFEM_BODY_STATIC;
+        out.solid = b.ref.tet_count() > 0;
+        out.category = b.def.category_bits, out.mask = b.def.mask_bits;
+        out.x = b.state.x.data();
+        out.triangles = b.ref.surface.triangles.data();
+        out.triangle_count = b.ref.surface.triangle_count();
+        out.surface_nodes = b.ref.surface.nodes.data();
+        out.surface_node_count = uint32_t(b.ref.surface.nodes.size());
+        out.static_tree = b.def.type == LFEM_BODY_STATIC ? &b.ref.bvh : nullptr;
+        out.shapes = b.shapes.data();
+        out.shape_count = uint32_t(b.shapes.size());
+        out.shape_pose = b.state.shape_pose.data();
+        return true;
+    }
+
+private:
+    const BodyRegistry& bodies_;
+};
+
+}  // namespace
+
+void World::moved(ThreadPool* pool) {
+    revision_ += 1;
+    if (!pool || !queries_.in_use()) return;
+    try {
+        queries_.prepare(BodiesForQueries(bodies_), revision_, pool);
+    } catch (...) {
+        // Out of memory: the step rolls back, so the boxes made of its positions must not
+        // count for any revision: the next query prepares everything again.
+        revision_ += 1;
+        throw;
+    }
+}
+
+bool World::cast_ray(const QueryRay& ray, const QueryFilter& filter, RayHit& out) const {
+    const BodiesForQueries view(bodies_);
+    queries_.prepare(view, revision_, nullptr);
+    return queries_.cast_ray(view, ray, filter, out);
+}
+
+void World::cast_ray_all(const QueryRay& ray, const QueryFilter& filter, std::vector<RayHit>& out) const {
+    const BodiesForQueries view(bodies_);
+    queries_.prepare(view, revision_, nullptr);
+    queries_.cast_ray_all(view, ray, filter, out);
+}
+
+void World::overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<uint32_t>& slots) const {
+    const BodiesForQueries view(bodies_);
+    queries_.prepare(view, revision_, nullptr);
+    queries_.overlap_box(view, box, filter, slots);
+}
+
+}  // namespace lfem
