@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "pick.h"
 #include "pg_math.h"
 
 #define TRY(call)                                                                  \
@@ -57,9 +56,11 @@ static int grip_nodes(const lfem_world* world, lfem_body body, uint32_t triangle
 
 int pg_grab_begin(pg_grab* grab, pg_room* room, const double origin[3], const double direction[3],
                   const double forward[3]) {
-    pg_hit hit;
-    const int found = pg_pick(room, origin, direction, &hit);
-    if (found <= 0) return found;
+    lfem_ray_hit hit;
+    int found = 0;
+    const lfem_query_filter sees = {PG_PICKABLE, PG_PICKABLE}; /* bodies and furniture, not walls */
+    TRY(lfem_world_cast_ray(room->world, origin, direction, HUGE_VAL, sees, &hit, &found));
+    if (!found || hit.triangle == UINT32_MAX) return 0; /* nothing, or a shape: a wall, the floor */
     const pg_body* pb = pg_room_find(room, hit.body);
     if (!pb || !pb->deformable) return 0;
     uint32_t node_count = 0;

@@ -100,14 +100,20 @@ static int add_solid(pg_room* room, lfem_body ground, lfem_shape_type type, cons
     return made == 0 ? add_shape(room, ground, &def, s) : -1;
 }
 
-/* The static part: floor, three walls and an invisible fourth in front of the camera (so a
- * throw stays in the room), a block, a ball, a log (a capsule) and a ramp. */
+/* The static part, two bodies: the room (floor, three walls and an invisible fourth in front
+ * of the camera, so that a throw stays in the room), in category PG_ROOM_CATEGORY which the
+ * hand's ray does not see (the eye stands behind the front wall, inside its half-space); and
+ * the furniture (a block, a ball, a log and a ramp), in the bodies' category, which hides
+ * what is behind it from the hand. */
 static int build_static(pg_room* room) {
     lfem_body_def def = lfem_body_def_default();
     def.type = LFEM_BODY_STATIC;
     def.friction = 0.6;
-    lfem_body ground;
+    def.category_bits = PG_ROOM_CATEGORY;
+    lfem_body ground, furniture;
     TRY(lfem_body_create(room->world, &def, &ground));
+    def.category_bits = lfem_body_def_default().category_bits;
+    TRY(lfem_body_create(room->world, &def, &furniture));
     if (add_floor(room, ground) != 0) return -1;
     const double back[3] = {0, 2.5, 1.5}, front[3] = {0, -2.5, 1.5};
     const double left[3] = {-3, 0, 1.5}, right[3] = {3, 0, 1.5};
@@ -121,10 +127,10 @@ static int build_static(pg_room* room) {
     const double log_c[3] = {0.0, 1.4, 0.18}, log_s[3] = {0.18, 0.7, 0};
     const double ramp_c[3] = {-1.7, -0.6, 0.05}, ramp_h[3] = {0.7, 0.5, 0.25};
     const double ramp_q[4] = {0.98480775301220806, 0.17364817766693033, 0, 0}; /* 20 deg about x */
-    return add_solid(room, ground, LFEM_SHAPE_BOX, block_c, kFacePlusZ, block_h, 0.45, 0.55, 0.70) ||
-           add_solid(room, ground, LFEM_SHAPE_SPHERE, ball_c, kFacePlusZ, ball_r, 0.85, 0.75, 0.35) ||
-           add_solid(room, ground, LFEM_SHAPE_CAPSULE, log_c, kAlongX, log_s, 0.60, 0.42, 0.30) ||
-           add_solid(room, ground, LFEM_SHAPE_BOX, ramp_c, ramp_q, ramp_h, 0.50, 0.62, 0.50);
+    return add_solid(room, furniture, LFEM_SHAPE_BOX, block_c, kFacePlusZ, block_h, 0.45, 0.55, 0.70) ||
+           add_solid(room, furniture, LFEM_SHAPE_SPHERE, ball_c, kFacePlusZ, ball_r, 0.85, 0.75, 0.35) ||
+           add_solid(room, furniture, LFEM_SHAPE_CAPSULE, log_c, kAlongX, log_s, 0.60, 0.42, 0.30) ||
+           add_solid(room, furniture, LFEM_SHAPE_BOX, ramp_c, ramp_q, ramp_h, 0.50, 0.62, 0.50);
 }
 
 /* A body of a box mesh (size, cells) with its corner at `at`, and its skin: the box rounded by

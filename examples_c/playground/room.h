@@ -9,6 +9,11 @@
 
 enum { PG_MAX_BODIES = 8, PG_MAX_SHAPES = 16 };
 
+/* Collision categories: the room's floor and walls are PG_ROOM_CATEGORY, everything else the
+ * bodies' default 1 (PG_PICKABLE), and every mask is all bits, so all of it collides; the
+ * hand's ray sees only PG_PICKABLE. */
+enum { PG_PICKABLE = 1, PG_ROOM_CATEGORY = 2 };
+
 typedef struct pg_body {
     lfem_body body;
     int deformable;      /* 1: the mouse may grab it (attachments hold deformable bodies) */
