@@ -7,15 +7,6 @@
 
 #include "pg_math.h"
 
-#define TRY(call)                                                                  \
-    do {                                                                           \
-        lfem_status s_ = (call);                                                   \
-        if (s_ != LFEM_OK) {                                                       \
-            fprintf(stderr, "playground: %s failed: %s\n", #call, lfem_last_error()); \
-            return -1;                                                             \
-        }                                                                          \
-    } while (0)
-
 /* A hand's width: the grip holds the boundary nodes within this of the point hit (and always
  * the hit triangle's three). Three nodes alone tear a patch out of a soft body when it is
  * swung; a hand-sized patch carries it. */
@@ -25,8 +16,8 @@ static const double kGripRadius = 0.12;
 static int grip_nodes(const lfem_world* world, lfem_body body, uint32_t triangle, const double hit[3],
                       uint32_t* nodes) {
     uint32_t node_count = 0, triangle_count = 0;
-    TRY(lfem_body_get_node_count(world, body, &node_count));
-    TRY(lfem_body_get_boundary_triangle_count(world, body, &triangle_count));
+    PG_TRY(lfem_body_get_node_count(world, body, &node_count));
+    PG_TRY(lfem_body_get_boundary_triangle_count(world, body, &triangle_count));
     double* x = (double*)malloc(sizeof(double) * 3 * node_count);
     uint32_t* tris = (uint32_t*)malloc(sizeof(uint32_t) * 3 * triangle_count);
     unsigned char* taken = (unsigned char*)calloc(node_count, 1);
@@ -59,12 +50,12 @@ int pg_grab_begin(pg_grab* grab, pg_room* room, const double origin[3], const do
     lfem_ray_hit hit;
     int found = 0;
     const lfem_query_filter sees = {PG_PICKABLE, PG_PICKABLE}; /* bodies and furniture, not walls */
-    TRY(lfem_world_cast_ray(room->world, origin, direction, HUGE_VAL, sees, &hit, &found));
+    PG_TRY(lfem_world_cast_ray(room->world, origin, direction, HUGE_VAL, sees, &hit, &found));
     if (!found || hit.triangle == UINT32_MAX) return 0; /* nothing, or a shape: a wall, the floor */
     const pg_body* pb = pg_room_find(room, hit.body);
     if (!pb || !pb->deformable) return 0;
     uint32_t node_count = 0;
-    TRY(lfem_body_get_node_count(room->world, hit.body, &node_count));
+    PG_TRY(lfem_body_get_node_count(room->world, hit.body, &node_count));
     uint32_t* nodes = (uint32_t*)malloc(sizeof(uint32_t) * node_count);
     const int held = nodes ? grip_nodes(room->world, hit.body, hit.triangle, hit.point, nodes) : -1;
     lfem_attachment_def def = lfem_attachment_def_default();
@@ -75,12 +66,12 @@ int pg_grab_begin(pg_grab* grab, pg_room* room, const double origin[3], const do
     const lfem_status s = held > 0 ? lfem_attachment_create(room->world, &def, &grab->attachment)
                                    : LFEM_OUT_OF_MEMORY;
     free(nodes);
-    TRY(s);
+    PG_TRY(s);
     grab->active = 1;
     grab->body = hit.body;
     grab->node_count = (uint32_t)held;
     memcpy(grab->point, hit.point, sizeof grab->point);
-    memcpy(grab->hit, hit.point, sizeof grab->hit);
+    v3_set(grab->last_move, 0, 0, 0);
     memcpy(grab->plane_normal, forward, sizeof grab->plane_normal);
     return 1;
 }
@@ -102,7 +93,8 @@ int pg_grab_drag(pg_grab* grab, pg_room* room, const double origin[3], const dou
     if (length > 0) v3_add_scaled(grab->point, fmin(length, max_move) / v3_length(move), move, target);
     if (target[2] < 0.02) target[2] = 0.02; /* never drag nodes into the floor */
     double frame[7] = {target[0], target[1], target[2], 1, 0, 0, 0};
-    TRY(lfem_attachment_set_frame(room->world, grab->attachment, frame));
+    PG_TRY(lfem_attachment_set_frame(room->world, grab->attachment, frame));
+    v3_sub(target, grab->point, grab->last_move);
     memcpy(grab->point, target, sizeof grab->point);
     return 0;
 }
@@ -111,11 +103,11 @@ int pg_grab_release(pg_grab* grab, pg_room* room, double velocity[3]) {
     if (!grab->active) return 0;
     grab->active = 0;
     if (lfem_attachment_is_valid(room->world, grab->attachment))
-        TRY(lfem_attachment_destroy(room->world, grab->attachment));
+        PG_TRY(lfem_attachment_destroy(room->world, grab->attachment));
     if (velocity) {
         double momentum[3], mass = 0;
-        TRY(lfem_body_get_momentum(room->world, grab->body, momentum, NULL));
-        TRY(lfem_body_get_mass(room->world, grab->body, &mass));
+        PG_TRY(lfem_body_get_momentum(room->world, grab->body, momentum, NULL));
+        PG_TRY(lfem_body_get_mass(room->world, grab->body, &mass));
         for (int k = 0; k < 3; ++k) velocity[k] = momentum[k] / mass;
     }
     return 0;

@@ -14,7 +14,7 @@ typedef struct pg_grab {
     uint32_t node_count;     /* nodes held */
     double point[3];         /* where the frame is (m): the hit point, then the cursor's */
     double plane_normal[3];  /* the camera's forward direction when the body was grabbed */
-    double hit[3];           /* where the ray hit the body */
+    double last_move[3];     /* how far the frame was moved for the last tick (m) */
 } pg_grab;
 
 /* Casts the ray (unit direction) and grabs the deformable body it hits first, its drag plane

@@ -152,10 +152,19 @@ static int script(app* a, int frame) {
         const double u = (double)(k - kLiftFrames) / kSwingFrames;
         a->mouse[0] = start[0] + swing * u * u;
     } else if (k == kLiftFrames + kSwingFrames + 1) {
+        const double hand = v3_length(a->grab.last_move) / kTick;
         if (release(a) != 0) return -1;
         const double* v = a->released_velocity;
-        printf("throw: frame %d, released at %.2f m/s (%.2f, %.2f, %.2f)\n", frame, v3_length(v), v[0], v[1],
-               v[2]);
+        printf("throw: frame %d, the hand at %.2f m/s, the cube released at %.2f m/s (%.2f, %.2f, %.2f)\n",
+               frame, hand, v3_length(v), v[0], v[1], v[2]);
+        /* The held patch moves with the hand, and after 20 ticks of swinging the soft cube
+         * moves with its grip up to its own wobble; a cube the attachment did not carry would
+         * lie where it was, at rest. Half the hand's speed tells the two apart. */
+        if (!(v3_length(v) >= 0.5 * hand)) {
+            fprintf(stderr, "playground: the throw did not carry the cube (%.2f m/s for a hand at %.2f)\n",
+                    v3_length(v), hand);
+            return -1;
+        }
     }
     return 0;
 }

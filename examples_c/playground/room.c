@@ -8,15 +8,6 @@
 #include "pg_math.h"
 #include "skin.h"
 
-#define TRY(call)                                                                  \
-    do {                                                                           \
-        lfem_status s_ = (call);                                                   \
-        if (s_ != LFEM_OK) {                                                       \
-            fprintf(stderr, "playground: %s failed: %s\n", #call, lfem_last_error()); \
-            return -1;                                                             \
-        }                                                                          \
-    } while (0)
-
 /* Quaternions (w, x, y, z) that turn a plane's normal, local +z, to face each way. */
 static const double kFacePlusZ[4] = {1, 0, 0, 0};
 #define H 0.70710678118654752440
@@ -42,7 +33,7 @@ static pg_shape* new_shape(pg_room* room, double r, double g, double b) {
 
 /* Adds the shape to the static body and the drawing of it (mesh made in the local frame). */
 static int add_shape(pg_room* room, lfem_body ground, const lfem_shape_def* def, pg_shape* drawn) {
-    TRY(lfem_body_add_shape(room->world, ground, def, NULL));
+    PG_TRY(lfem_body_add_shape(room->world, ground, def, NULL));
     if (!drawn) return 0;
     pg_mesh_transform(&drawn->mesh, def->rotation, def->center);
     return 0;
@@ -69,7 +60,7 @@ static int add_floor(pg_room* room, lfem_body ground) {
     lfem_shape_def def = lfem_shape_def_default();
     def.type = LFEM_SHAPE_PLANE;
     memcpy(def.rotation, kFacePlusZ, sizeof def.rotation);
-    TRY(lfem_body_add_shape(room->world, ground, &def, NULL));
+    PG_TRY(lfem_body_add_shape(room->world, ground, &def, NULL));
     for (int parity = 0; parity < 2; ++parity) {
         pg_shape* s = new_shape(room, parity ? 0.55 : 0.75, parity ? 0.57 : 0.77, parity ? 0.62 : 0.80);
         if (!s || pg_mesh_grid(&s->mesh, 3.0, 2.5, 12, parity) != 0) return -1;
@@ -111,9 +102,9 @@ static int build_static(pg_room* room) {
     def.friction = 0.6;
     def.category_bits = PG_ROOM_CATEGORY;
     lfem_body ground, furniture;
-    TRY(lfem_body_create(room->world, &def, &ground));
+    PG_TRY(lfem_body_create(room->world, &def, &ground));
     def.category_bits = lfem_body_def_default().category_bits;
-    TRY(lfem_body_create(room->world, &def, &furniture));
+    PG_TRY(lfem_body_create(room->world, &def, &furniture));
     if (add_floor(room, ground) != 0) return -1;
     const double back[3] = {0, 2.5, 1.5}, front[3] = {0, -2.5, 1.5};
     const double left[3] = {-3, 0, 1.5}, right[3] = {3, 0, 1.5};
@@ -142,7 +133,7 @@ static int add_box_body(pg_room* room, const lfem_body_def* def, const double at
     pg_body* pb = &room->bodies[room->body_count];
     memset(pb, 0, sizeof *pb);
     lfem_mesh* mesh = NULL;
-    TRY(lfem_mesh_create_box(size, cells, &mesh));
+    PG_TRY(lfem_mesh_create_box(size, cells, &mesh));
     lfem_status s = lfem_mesh_translate(mesh, at);
     if (s == LFEM_OK) s = lfem_body_create(room->world, def, &pb->body);
     if (s == LFEM_OK)
@@ -150,7 +141,7 @@ static int add_box_body(pg_room* room, const lfem_body_def* def, const double at
                                lfem_mesh_get_node_count(mesh), lfem_mesh_get_tets(mesh),
                                lfem_mesh_get_tet_count(mesh));
     lfem_mesh_destroy(mesh);
-    TRY(s);
+    PG_TRY(s);
     if (pg_skin_bind(room->world, pb->body, size, at, rounding, skin_cells, &pb->skin) != 0) return -1;
     pb->deformable = def->type == LFEM_BODY_DEFORMABLE;
     set_colour(pb->colour, r, g, b);

@@ -4,8 +4,21 @@
 #ifndef LFEM_PLAYGROUND_ROOM_H
 #define LFEM_PLAYGROUND_ROOM_H
 
+#include <stdio.h>
+
 #include "lfem.h"
 #include "meshes.h"
+
+/* Every lfem call of the playground is checked: on failure, say which call and why, and
+ * return -1 from the calling function. */
+#define PG_TRY(call)                                                                 \
+    do {                                                                             \
+        lfem_status s_ = (call);                                                     \
+        if (s_ != LFEM_OK) {                                                         \
+            fprintf(stderr, "playground: %s failed: %s\n", #call, lfem_last_error()); \
+            return -1;                                                               \
+        }                                                                            \
+    } while (0)
 
 enum { PG_MAX_BODIES = 8, PG_MAX_SHAPES = 16 };
 
