@@ -35,6 +35,15 @@ PACKAGES=(
   python3-venv
   python3-setuptools
   python3-wheel
+  # the interactive example (examples_c/playground): SDL2 and OpenGL headers; its ctest renders
+  # offscreen under xvfb-run (xvfb, and xauth which xvfb-run needs but xvfb only recommends)
+  # with Mesa's software OpenGL (llvmpipe: libglx-mesa0, libgl1-mesa-dri), no display or GPU
+  libsdl2-dev
+  libgl-dev
+  xvfb
+  xauth
+  libglx-mesa0
+  libgl1-mesa-dri
   # fuzzing (tests/fuzz/run.sh): clang with libFuzzer and the sanitizer runtimes
   clang-14
   libclang-rt-14-dev

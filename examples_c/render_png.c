@@ -91,14 +91,17 @@ int rp_text_width(int scale, const char* text) {
     return n > 0 ? scale * (6 * n - 1) : 0;
 }
 
+const unsigned char* rp_glyph(char c) {
+    if (c >= 'a' && c <= 'z') c = (char)(c - 'a' + 'A');
+    const char* found = c ? strchr(kGlyphChars, c) : NULL;
+    return found ? kGlyphs[found - kGlyphChars] : NULL;
+}
+
 void rp_draw_text(rp_image* image, int x, int y, int scale, const char* text,
                   const unsigned char rgb[3]) {
     for (; *text; ++text, x += 6 * scale) {
-        char c = *text;
-        if (c >= 'a' && c <= 'z') c = (char)(c - 'a' + 'A');
-        const char* found = c ? strchr(kGlyphChars, c) : NULL;
-        if (!found) continue;
-        const unsigned char* glyph = kGlyphs[found - kGlyphChars];
+        const unsigned char* glyph = rp_glyph(*text);
+        if (!glyph) continue;
         for (int row = 0; row < 7; ++row)
             for (int col = 0; col < 5; ++col)
                 if (glyph[row] & (0x10 >> col))

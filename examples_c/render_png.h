@@ -31,6 +31,10 @@ void rp_draw_line(rp_image* image, double x0, double y0, double x1, double y1, d
 void rp_draw_text(rp_image* image, int x, int y, int scale, const char* text,
                   const unsigned char rgb[3]);
 int rp_text_width(int scale, const char* text);
+/* The 5x7 glyph of c (lower case as upper case): 7 rows, top first, bit 4 the leftmost column;
+ * NULL for a character without one (drawn as a blank). For drawing the same font elsewhere
+ * (the playground's HUD draws it with OpenGL). */
+const unsigned char* rp_glyph(char c);
 
 /* A perspective camera looking from eye at target; up fixes the roll. */
 typedef struct rp_camera {
