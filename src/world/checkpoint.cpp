@@ -198,6 +198,17 @@ void body_fields(A& a, B& b) {
     for (auto& skin : b.skins) a(skin.nodes_per_vertex), a(skin.nodes), a(skin.weights), a(skin.triangles);
 }
 
+// A C enum of the file as the int its bytes hold: a corrupted one may lie outside the values
+// the enum can hold, and loading it as the enum would be undefined behaviour (UBSan's enum
+// check), so its range is checked on the int before it is used as the enum.
+template <class E>
+int32_t enum_bits(const E& e) {
+    static_assert(sizeof(E) == sizeof(int32_t), "a C enum is stored as an int");
+    int32_t v;
+    std::memcpy(&v, &e, sizeof v);
+    return v;
+}
+
 // Consistency of what a Reader produced: every size and index a step relies on.
 void check_body(const Body& b, const std::string& path, std::size_t slot) {
     const std::string where = "body in slot " + std::to_string(slot) + ": ";
@@ -206,8 +217,9 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     };
     const BodyReference& r = b.ref;
     const BodyState& s = b.state;
-    require(b.def.type >= LFEM_BODY_DEFORMABLE && b.def.type <= LFEM_BODY_RIGID, "bad body type");
-    require(b.def.model >= LFEM_MODEL_PAPER && b.def.model <= LFEM_MODEL_LINEAR, "bad model");
+    const int32_t type = enum_bits(b.def.type), model = enum_bits(b.def.model);
+    require(type >= LFEM_BODY_DEFORMABLE && type <= LFEM_BODY_RIGID, "bad body type");
+    require(model >= LFEM_MODEL_PAPER && model <= LFEM_MODEL_LINEAR, "bad model");
     require(b.def.self_contact <= 1 && (b.def.self_contact == 0 || b.is_deformable()), "bad self-contact flag");
     require(r.X.size() % 3 == 0, "bad reference positions");
     require(r.nodes_per_tet == 4 || r.nodes_per_tet == 10, "bad nodes per tet");
@@ -239,7 +251,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(b.node_force.empty() || b.node_force.size() == 3 * n, "bad node forces");
     require(s.shape_pose.size() == 7 * b.shapes.size(), "shape poses disagree with the shapes");
     for (const RigidShape& sh : b.shapes)
-        require(sh.type >= LFEM_SHAPE_PLANE && sh.type <= LFEM_SHAPE_CONVEX_HULL &&
+        require(enum_bits(sh.type) >= LFEM_SHAPE_PLANE && enum_bits(sh.type) <= LFEM_SHAPE_CONVEX_HULL &&
                     sh.points.size() % 3 == 0,
                 "bad shape");
     for (const Skin& sk : b.skins) {
