@@ -61,14 +61,24 @@ cross_build() {  # cross_build NAME TOOLCHAIN [CMAKE OPTIONS...]
   mkdir -p "$dir"
   if ! { cmake -S "$root" -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$root/src/cmake/$toolchain" \
            -DCMAKE_BUILD_TYPE=Release "$@" &&
-         cmake --build "$dir" -j"$jobs" --target lfem falling_block clamped_beam; } > "$dir/build.log" 2>&1; then
+         cmake --build "$dir" -j"$cross_jobs" --target lfem falling_block clamped_beam; } > "$dir/build.log" 2>&1; then
     tail -n 30 "$dir/build.log" | sed 's/^/   | /'
     fail "the $name build (log: $dir/build.log)"
   fi
   echo "platforms: $name: library built in $((SECONDS - t0)) s ($dir)"
 }
-cross_build win64 toolchain-mingw-w64-x86_64.cmake -DLFEM_WITH_CCD=OFF
-cross_build arm64 toolchain-aarch64-linux-gnu.cmake
+# The two builds side by side, each with half the jobs: a build alone leaves cores idle, since
+# make builds src/'s folders (object libraries) one after the other and the element kernels'
+# variants are one folder's long pole; two builds keep every core busy.
+cross_jobs=$(( jobs > 1 ? jobs / 2 : 1 ))
+cross_build win64 toolchain-mingw-w64-x86_64.cmake -DLFEM_WITH_CCD=OFF &
+win_build=$!
+cross_build arm64 toolchain-aarch64-linux-gnu.cmake &
+arm_build=$!
+built=0
+wait "$win_build" && built=$((built + 1))
+wait "$arm_build" && built=$((built + 1))
+[ "$built" = 2 ] || fail "a cross build failed (its log above)"
 
 # ---- what the Windows DLL is ---------------------------------------------------------------------
 win=$work/win64
