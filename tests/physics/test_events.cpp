@@ -25,6 +25,19 @@ double momentum_z(lfem_world* w, lfem_body b) {
     return P[2];
 }
 
+// A 10 cm soft cube (the default material, damping as given) 0.5 mm above a static
+// 40 x 40 x 5 cm block; returns the cube.
+lfem_body cube_above_block(World& w, Mesh& floor, Mesh& cube, double damping) {
+    make_box_mesh(floor, 0.4, 0.4, 0.05, 2, 2, 1, -0.2, -0.2, -0.05);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    add_body(w, fd, floor);
+    make_box_mesh(cube, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0005);
+    lfem_body_def d = lfem_body_def_default();
+    if (damping > 0) d.damping = damping;
+    return add_body(w, d, cube);
+}
+
 }  // namespace
 
 // A stiff cube (E = 1e7 Pa, 2 cm) dropped at 1 m/s on a static block bounces: one begin, one
@@ -89,17 +102,10 @@ TEST(Events, ABouncingCubeBeginsAndEndsOneContactWithTheImpulseItsMomentumShows)
 
 // A cube resting on the floor: one begin, then no events while it rests, and an end when it is
 // lifted away (destroying a body ends its pairs silently).
-TEST(Events, AResTingContactBeginsOnceAndEndsWhenTheCubeLeaves) {
+TEST(Events, ARestingContactBeginsOnceAndEndsWhenTheCubeLeaves) {
     World w;
     Mesh floor, cube;
-    make_box_mesh(floor, 0.4, 0.4, 0.05, 2, 2, 1, -0.2, -0.2, -0.05);
-    lfem_body_def fd = lfem_body_def_default();
-    fd.type = LFEM_BODY_STATIC;
-    add_body(w, fd, floor);
-    make_box_mesh(cube, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0005);
-    lfem_body_def d = lfem_body_def_default();
-    d.damping = 20;
-    const lfem_body c = add_body(w, d, cube);
+    const lfem_body c = cube_above_block(w, floor, cube, 20);
     int begins = 0, ends = 0;
     for (int call = 0; call < 60; ++call) {
         ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
@@ -120,12 +126,7 @@ TEST(Events, AResTingContactBeginsOnceAndEndsWhenTheCubeLeaves) {
 TEST(Events, TooSmallBuffersAndNullsAreRefused) {
     World w;
     Mesh floor, cube;
-    make_box_mesh(floor, 0.4, 0.4, 0.05, 2, 2, 1, -0.2, -0.2, -0.05);
-    lfem_body_def fd = lfem_body_def_default();
-    fd.type = LFEM_BODY_STATIC;
-    add_body(w, fd, floor);
-    make_box_mesh(cube, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0005);
-    add_body(w, lfem_body_def_default(), cube);
+    cube_above_block(w, floor, cube, 0);
     ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
     uint32_t count = 99;
     lfem_event one{};

@@ -158,6 +158,15 @@ void expect_kept_out(const Drop& d, const Landing& o, const std::string& label) 
     EXPECT_LT(o.rise, 0.05 * o.scale) << label;     // see the top of the file
 }
 
+// Drops d, prints its line and checks it stayed out of what it landed on; the landing.
+Landing checked_drop(const Drop& d) {
+    const Landing o = drop(d);
+    const std::string label = label_of(d);
+    print(label, o);
+    expect_kept_out(d, o, label);
+    return o;
+}
+
 }  // namespace
 
 // The table: a 10 cm cube of 5^3 cells, E = 1e3 Pa (jelly), nu = 0.45, damping 10,
@@ -170,10 +179,8 @@ TEST(ExtremeSoft, JellyCubeLandsOnEveryFloorWithEveryModel) {
         for (Floor f : {Floor::box, Floor::triangles, Floor::plane}) {
             Drop d;
             d.model = m, d.floor = f;
-            const Landing o = drop(d);
+            const Landing o = checked_drop(d);
             const std::string label = label_of(d);
-            print(label, o);
-            expect_kept_out(d, o, label);
             EXPECT_EQ(o.inverted_end, 0u) << label;
             EXPECT_EQ(o.warnings[LFEM_WARNING_STAYS_INVERTED].count, 0u) << label;
         }
@@ -189,10 +196,8 @@ TEST(ExtremeSoft, FromAHundredPascalsToTenKilopascals) {
             for (Floor f : {Floor::box, Floor::triangles, Floor::plane}) {
                 Drop d;
                 d.model = m, d.floor = f, d.E = E;
-                const Landing o = drop(d);
+                const Landing o = checked_drop(d);
                 const std::string label = label_of(d);
-                print(label, o);
-                expect_kept_out(d, o, label);
                 EXPECT_EQ(o.inverted_end, 0u) << label;
             }
 }
@@ -203,10 +208,8 @@ TEST(ExtremeSoft, SmallCubeAtThreeHundredPascals) {
     for (lfem_model m : kModels) {
         Drop d;
         d.model = m, d.E = 300, d.size = 0.03;
-        const Landing o = drop(d);
+        const Landing o = checked_drop(d);
         const std::string label = label_of(d);
-        print(label, o);
-        expect_kept_out(d, o, label);
         EXPECT_EQ(o.inverted_end, 0u) << label;
     }
 }
@@ -219,10 +222,7 @@ TEST(ExtremeSoft, UndampedCubeOnASlabInMillisecondCalls) {
     for (lfem_model m : kModels) {
         Drop d;
         d.model = m, d.floor = Floor::slab, d.nu = 0.3, d.damping = 0, d.cells = 4, d.calls = 1500, d.dt = 1e-3;
-        const Landing o = drop(d);
-        const std::string label = label_of(d);
-        print(label, o);
-        expect_kept_out(d, o, label);
+        checked_drop(d);
     }
 }
 
@@ -253,10 +253,8 @@ TEST(ExtremeSoft, TenNodeCubesLandOnEveryFloorWithEveryModel) {
                 if (E < 1e3 && f != Floor::box) continue;
                 Drop d;
                 d.model = m, d.floor = f, d.E = E, d.cells = 3, d.quadratic = true;
-                const Landing o = drop(d);
+                const Landing o = checked_drop(d);
                 const std::string label = label_of(d);
-                print(label, o);
-                expect_kept_out(d, o, label);
                 EXPECT_EQ(o.inverted_end, 0u) << label;
                 EXPECT_EQ(o.warnings[LFEM_WARNING_STAYS_INVERTED].count, 0u) << label;
             }
