@@ -48,10 +48,11 @@ PACKAGES=(
   clang-14
   libclang-rt-14-dev
   # the other targets (tests/platforms.sh): Windows x64 cross-built with MinGW-w64 (posix
-  # threads, for std::thread) and run under Wine (wine64: console programs need no display);
+  # threads, for std::thread; the cross builds use Ninja) and run under Wine (wine64: console programs need no display);
   # ARM64 Linux cross-built and run under qemu-user, against Debian's arm64 libccd through
   # multiarch (a package named PKG:ARCH makes this script add the architecture ARCH first)
   g++-mingw-w64-x86-64-posix
+  ninja-build
   wine64
   g++-aarch64-linux-gnu
   qemu-user

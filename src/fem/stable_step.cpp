@@ -74,25 +74,27 @@ double gershgorin_bound(const ElementMesh& ref, const Lame& lame) {
     return bound;
 }
 
+// The largest eigenvalue of a symmetric matrix. One dynamic-size solver serves the element
+// matrices (12 x 12, 30 x 30, built only at set-up) and the Lanczos tridiagonal matrix: the
+// fixed-size solvers compiled to much more code (the 30 x 30 one alone took a quarter of the
+// library's build time) for no gain at set-up.
+double largest_eigenvalue(const Eigen::MatrixXd& A) {
+    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+}
+
 // The largest eigenvalue of tet e's M_e^-1 K_e at rest, M_e its lumped shares (share[a] at its
 // node a): of K_e over the equal share for a linear tet (12 x 12), of M_e^-1/2 K_e M_e^-1/2 for a
 // 10-node one (30 x 30).
 double element_frequency2(const ElementMesh& ref, const Lame& lame, uint32_t e, const double* share) {
     const ElementStiffness s = element_stiffness(ref, lame, e);
-    if (s.nodes == 4) {
-        Eigen::Matrix<double, 12, 12> K;
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b) K.block<3, 3>(3 * a, 3 * b) = s.K[4 * a + b];
-        return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>>(K, Eigen::EigenvaluesOnly)
-                   .eigenvalues()
-                   .maxCoeff() /
-               share[0];
-    }
-    Eigen::Matrix<double, 30, 30> A;
+    const bool linear = s.nodes == 4;
+    Eigen::MatrixXd A(3 * s.nodes, 3 * s.nodes);
     for (int a = 0; a < s.nodes; ++a)
-        for (int b = 0; b < s.nodes; ++b)
-            A.block<3, 3>(3 * a, 3 * b) = s.K[s.nodes * a + b] / std::sqrt(share[a] * share[b]);
-    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 30, 30>>(A, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+        for (int b = 0; b < s.nodes; ++b) {
+            const double scale = linear ? 1.0 : 1.0 / std::sqrt(share[a] * share[b]);
+            A.block<3, 3>(3 * a, 3 * b) = scale * s.K[s.nodes * a + b];
+        }
+    return linear ? largest_eigenvalue(A) / share[0] : largest_eigenvalue(A);
 }
 
 }  // namespace
@@ -213,9 +215,7 @@ StableStepEstimate estimate_stable_step(const ElementMesh& ref, const Lame& lame
             Eigen::MatrixXd T = Eigen::MatrixXd::Zero(k, k);
             for (int j = 0; j < k; ++j) T(j, j) = alpha[j];
             for (int j = 0; j + 1 < k; ++j) T(j, j + 1) = T(j + 1, j) = beta[j];
-            ritz = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(T, Eigen::EigenvaluesOnly)
-                       .eigenvalues()
-                       .maxCoeff();
+            ritz = largest_eigenvalue(T);
             // Settled to 1e-6 over five products.
             if (exhausted || std::fabs(ritz - ritz_before) <= 1e-6 * ritz) break;
             ritz_before = ritz;
