@@ -266,6 +266,16 @@ void search_candidates(const std::vector<ContactBody>& bodies, double max_offset
         for (uint32_t n : c.block_triangle_count[b]) c.triangle_begin.push_back(c.triangle_begin.back() + n);
         for (uint32_t n : c.block_shape_count[b]) c.shape_begin.push_back(c.shape_begin.back() + n);
     }
+    c.faces.clear();
+    for (uint64_t key : c.triangles)
+        if (bodies[uint32_t(key >> 32)].moves) c.faces.push_back(key);
+    std::sort(c.faces.begin(), c.faces.end());
+    c.faces.erase(std::unique(c.faces.begin(), c.faces.end()), c.faces.end());
+    c.face_index.resize(c.triangles.size());
+    for (std::size_t k = 0; k < c.triangles.size(); ++k)
+        c.face_index[k] = bodies[uint32_t(c.triangles[k] >> 32)].moves
+                              ? uint32_t(std::lower_bound(c.faces.begin(), c.faces.end(), c.triangles[k]) - c.faces.begin())
+                              : UINT32_MAX;
     c.valid = true;
 }
 

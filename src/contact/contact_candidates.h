@@ -39,6 +39,12 @@ struct ContactCandidates {
     std::vector<uint32_t> triangle_begin, shape_begin;  // +1 at the end
     std::vector<uint64_t> triangles, shapes;
     std::vector<Aabb> static_box;  // per candidate triangle of a static body: its box (it never moves)
+    // The moving bodies' candidate triangles, each once (body << 32 | triangle, ascending):
+    // the narrow phase makes each one's box and normals once per sub-step (node_face.h,
+    // FaceStep), not once per node that may meet it. face_index: per candidate triangle, its
+    // place in `faces` (UINT32_MAX for a static body's).
+    std::vector<uint64_t> faces;
+    std::vector<uint32_t> face_index;
     // Scratch of the search: body boxes, the body hash, pairs.
     std::vector<Aabb> body_box, slave_box;
     std::vector<uint32_t> partner_begin, partners, shape_bodies, found;

@@ -15,6 +15,8 @@ namespace {
 // loops' kNodeBlock: a node's face tests cost much more than a predictor update, and a contact
 // region of a few thousand nodes should still give every thread work.
 constexpr uint32_t kSlaveBlock = 256;
+// Moving candidate faces per block of the pass that makes their FaceSteps (cheap, one each).
+constexpr uint32_t kFaceBlock = 1024;
 
 // How deep the last step left the pair: a kept overlap or the solver's residual.
 double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; }
@@ -23,7 +25,7 @@ double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -r->gap_af
 struct NarrowInput {
     const std::vector<ContactBody>& bodies;
     const std::vector<ContactRecord>& previous;
-    const DetectionScratch& s;
+    const DetectionScratch& s;  // s.faces: this sub-step's moving faces
     bool scan_overlaps;
     double max_offset;  // the deepest overlap being recovered (m)
     bool any_shapes;
@@ -85,10 +87,10 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         if (bi != grow_body)
             grow = triangle_growth(contact_length(a, b), in.max_offset, catches_deep_nodes(a, b, in.scan_overlaps)),
             grow_body = bi;
-        // A static triangle's box is the one the search kept; a moving one's is made anew.
-        Aabb reach = b.moves ? triangle_step_box(b, t, grow) : c.static_box[k];
-        if (!b.moves)
-            for (int d = 0; d < 3; ++d) reach.lo[d] -= grow, reach.hi[d] += grow;
+        // A static triangle's box is the one the search kept; a moving one's is this sub-step's.
+        const FaceStep* face = b.moves ? &in.s.faces[c.face_index[k]] : nullptr;
+        Aabb reach = face ? face->box : c.static_box[k];
+        for (int d = 0; d < 3; ++d) reach.lo[d] -= grow, reach.hi[d] += grow;
         if (!overlaps(reach, box)) continue;
         if (block.touched.empty() || block.touched.back() != bi) {
             block.touched.push_back(bi);
@@ -101,7 +103,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             first_touch = catches_deep_nodes(a, b, in.scan_overlaps) && last == nullptr;
         }
         if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
-        test_node_triangle(a, p, *normal, b, t, allowance, block.best.back(),
+        test_node_triangle(a, p, *normal, b, t, face, allowance, block.best.back(),
                            first_touch ? &block.deep.back() : nullptr);
     }
     // An overlap met for the first time: accepted when nothing of the other body lies between
@@ -243,6 +245,13 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
     uint8_t* ready = s.normal_ready.data();
     {
         PhaseTimer timer(profile.narrow_phase);
+        // The moving faces' boxes and normals over this sub-step, each once.
+        const uint32_t faces = uint32_t(c.faces.size());
+        s.faces.resize(faces);
+        parallel_for(pool, (faces + kFaceBlock - 1) / kFaceBlock, [&](uint32_t b) {
+            for (uint32_t k = b * kFaceBlock; k < std::min(faces, (b + 1) * kFaceBlock); ++k)
+                s.faces[k] = face_step(bodies[uint32_t(c.faces[k] >> 32)], uint32_t(c.faces[k]));
+        });
         parallel_for(pool, blocks, [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], normals, ready); });
         if (!any_shapes) return join_blocks(s, blocks, out, profile);
     }

@@ -49,6 +49,7 @@ struct DetectionScratch {
     ContactCandidates candidates;
     std::vector<Vec3> slave_normals;    // per candidate node: outward unit normal at x*
     std::vector<uint8_t> normal_ready;  // per candidate node: its normal is computed
+    std::vector<FaceStep> faces;        // per moving candidate face (candidates.faces): this sub-step's
     std::vector<DetectionBlock> blocks; // only the first ones may be in use (never shrinks)
 };
 

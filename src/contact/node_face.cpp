@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "common/ray_triangle.h"
+#include "contact/contact_candidates.h"
 #include "contact/detection_tolerances.h"
 #include "contact/warm_start.h"
 
@@ -26,10 +27,23 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, dou
 
 }  // namespace
 
+FaceStep face_step(const ContactBody& b, uint32_t t) {
+    FaceStep f;
+    const uint32_t* tri = &b.triangles[3 * t];
+    f.box = triangle_step_box(b, t, 0.0);
+    const Vec3 pa = position(b.x, tri[0]), qa = position(b.x_start, tri[0]);
+    const Vec3 n_end = (position(b.x, tri[1]) - pa).cross(position(b.x, tri[2]) - pa);
+    const Vec3 n_start = (position(b.x_start, tri[1]) - qa).cross(position(b.x_start, tri[2]) - qa);
+    const double area2 = n_end.norm(), area2_start = n_start.norm();
+    f.valid = area2 > 0.0 && area2_start > 0.0;
+    if (f.valid) f.normal_end = n_end / area2, f.normal_start = n_start / area2_start;
+    return f;
+}
+
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
-void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal,
-                        const ContactBody& b, uint32_t t, double depth_allowance, NodeCandidate& best,
+void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+                        uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
                         NodeCandidate* deep) {
     const uint32_t* tri = &b.triangles[3 * t];
     const Vec3 pa = position(b.x, tri[0]), pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
@@ -37,7 +51,10 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     if (b.face_normals) {  // a static body's, made once
         n = position(b.face_normals, t);
         if (n.squaredNorm() == 0.0) return;  // a collapsed face has no normal
-    } else {
+    } else if (face) {  // a moving body's, made once per sub-step
+        if (!face->valid) return;
+        n = face->normal_end;
+    } else {  // a static body without face normals
         const Vec3 n_end = (pb - pa).cross(pc - pa);
         const double area2 = n_end.norm();
         if (!(area2 > 0.0)) return;
@@ -61,15 +78,7 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     // A static face is where it was at the start (the same bits), so its start normal is n.
     const bool still = !b.moves;
     const Vec3 qa = still ? pa : position(b.x_start, tri[0]);
-    double start_gap;
-    if (still) {
-        start_gap = n.dot(x_start - qa);
-    } else {
-        const Vec3 n_start = (position(b.x_start, tri[1]) - qa).cross(position(b.x_start, tri[2]) - qa);
-        const double area2_start = n_start.norm();
-        if (!(area2_start > 0.0)) return;
-        start_gap = (n_start / area2_start).dot(x_start - qa);
-    }
+    const double start_gap = (still ? n : face->normal_start).dot(x_start - qa);
     NodeCandidate* slot = &best;
     if (start_gap < -depth_allowance) {
         // Deeper than the pair was left: only a possible initial overlap (checked later).

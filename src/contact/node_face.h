@@ -33,12 +33,25 @@ struct ShapeQueryCounts {
     uint64_t shape_tests = 0, ccd_queries = 0;
 };
 
+// A face of a moving body over one sub-step, made once for every node that may meet it: its
+// box over the step (not grown) and its unit normals at x* and at x^n, as the node test would
+// compute them itself. A face collapsed at either end (zero area) is not `valid`: no node
+// meets it.
+struct FaceStep {
+    Aabb box;
+    Vec3 normal_end = Vec3::Zero(), normal_start = Vec3::Zero();
+    bool valid = false;
+};
+FaceStep face_step(const ContactBody& b, uint32_t t);
+
 // Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in `best`
 // if it is a valid contact penetrated less than what best holds. A node that starts the step
 // deeper than depth_allowance behind the face is only a possible initial overlap: kept in
-// *deep (when given) for the caller to check.
+// *deep (when given) for the caller to check. `face` is face_step(b, t), required when b moves
+// (null for a static body: it does not move, and its face normals are made once).
 void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
-                        uint32_t t, double depth_allowance, NodeCandidate& best, NodeCandidate* deep);
+                        uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
+                        NodeCandidate* deep);
 
 // Node p of `a` against rigid shape j of `b`, by the same rules: within the capture band at the
 // end of the step, no deeper at its start than the pair was left, facing the node's surface.
