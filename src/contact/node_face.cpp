@@ -54,7 +54,7 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     } else if (face) {  // a moving body's, made once per sub-step
         if (!face->valid) return;
         n = face->normal_end;
-    } else {  // a static body without face normals
+    } else {  // a sleeping body: static while asleep, its face normals not made
         const Vec3 n_end = (pb - pa).cross(pc - pa);
         const double area2 = n_end.norm();
         if (!(area2 > 0.0)) return;

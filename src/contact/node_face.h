@@ -47,8 +47,9 @@ FaceStep face_step(const ContactBody& b, uint32_t t);
 // Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in `best`
 // if it is a valid contact penetrated less than what best holds. A node that starts the step
 // deeper than depth_allowance behind the face is only a possible initial overlap: kept in
-// *deep (when given) for the caller to check. `face` is face_step(b, t), required when b moves
-// (null for a static body: it does not move, and its face normals are made once).
+// *deep (when given) for the caller to check. `face` is face_step(b, t), required when b moves;
+// null for a static body (its face normals made once) and for a sleeping one (static while
+// asleep: its normals are made here).
 void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
                         uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
                         NodeCandidate* deep);

@@ -25,8 +25,8 @@ double momentum_z(lfem_world* w, lfem_body b) {
     return P[2];
 }
 
-// A 10 cm soft cube (the default material, damping as given) 0.5 mm above a static
-// 40 x 40 x 5 cm block; returns the cube.
+// A 10 cm soft cube (the default material; the damping given, or the default one for 0)
+// 0.5 mm above a static 40 x 40 x 5 cm block; returns the cube.
 lfem_body cube_above_block(World& w, Mesh& floor, Mesh& cube, double damping) {
     make_box_mesh(floor, 0.4, 0.4, 0.05, 2, 2, 1, -0.2, -0.2, -0.05);
     lfem_body_def fd = lfem_body_def_default();
