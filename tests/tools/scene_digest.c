@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "lfem.h"
 
@@ -378,7 +379,12 @@ static void scene_crush(uint32_t threads) {
 
 /* The world saved to path and loaded again (the old one destroyed), when the build has file
  * I/O; else the world itself. */
-static lfem_world* round_trip(lfem_world* w, const char* path) {
+static lfem_world* round_trip(lfem_world* w, const char* name) {
+    /* The file's name carries the process id: ctest runs three scene_digest tests side by
+     * side in one folder, and with one shared name one run's save replaced the file another
+     * was reading ("truncated", "cannot rename"). */
+    char path[256];
+    snprintf(path, sizeof path, "%s.%ld", name, (long)getpid());
     const lfem_status s = lfem_world_save(w, path);
     if (s == LFEM_UNSUPPORTED) return w;
     check(s, "save");
