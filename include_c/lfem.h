@@ -336,7 +336,15 @@ typedef struct lfem_body_def {
                                  with them), by the same multipliers as contact between bodies.
                                  Deformable bodies only; default 0 (it costs a search of the
                                  body's own surface) */
-    uint8_t padding[2];
+    uint8_t composite_tets;   /* 10-node tets only (ignored for 4-node ones): 1 = the composite
+                                 element, whose strain is the projection of its eight linear
+                                 sub-tets' (the ones of its lumped mass) onto a field linear over
+                                 the tet, as the explicit codes' modified tets. A smooth load
+                                 then moves a section's nodes alike (plane waves, impacts carry
+                                 as with 4-node tets) and it still bends without locking; a
+                                 quadratic displacement is no longer reproduced exactly.
+                                 0 (default) = the quadratic shape functions' strain */
+    uint8_t padding;
 } lfem_body_def;
 
 LFEM_API lfem_body_def lfem_body_def_default(void);

@@ -317,8 +317,9 @@ namespace Lfem
 #pragma warning restore 0169, 0649
         public byte EnableSleep;      // 1 (default) = may fall asleep when the world allows it
         public byte SelfContact;      // 1 = the surface collides with itself (deformable only), default 0
+        public byte CompositeTets;    // 1 = 10-node tets as the composite element, default 0
 #pragma warning disable 0169 // C padding
-        private byte padding0, padding1;
+        private byte padding0;
 #pragma warning restore 0169
 
         /// <summary>The defaults (lfem_body_def_default).</summary>

@@ -24,6 +24,7 @@ struct ElementMesh {
     Span<const double> mass;       // per node: lumped mass (kg)
     const ElementColouring* colouring = nullptr;  // blocks of tets for the parallel loop
     uint32_t nodes_per_tet = 4;    // 4 (linear) or 10 (quadratic)
+    bool composite = false;        // quadratic: the composite element's strain (composite_tet.h)
 
     uint32_t node_count() const { return uint32_t(X.size() / 3); }
     uint32_t tet_count() const { return uint32_t(volume.size()); }

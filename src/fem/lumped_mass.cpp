@@ -1,6 +1,6 @@
 #include "fem/lumped_mass.h"
 
-#include "fem/quadratic_tet.h"
+#include "fem/composite_tet.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
@@ -17,20 +17,21 @@ void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, u
 }
 
 void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
-                                  double* Jq_inv, double* qp_volume, double* volume) {
+                                  bool composite, double* Jq_inv, double* qp_volume, double* volume) {
+    const QuadraticGradients& gradients = element_gradients(composite);
     for (uint32_t e = first; e < end; ++e) {
         const uint32_t* t = &tets[kQuadraticTetNodes * std::size_t(e)];
         const double* p[kQuadraticTetNodes];
         for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) p[a] = X + 3 * std::size_t(t[a]);
         double V = 0.0;
         for (int q = 0; q < kQuadraturePoints; ++q) {
-            double J[9];
+            double J[9], J_used[9];
             natural_jacobian(p, kQuadraticGradients.g[q], J);
-            const Mat3 Jm = load_row_major(J);
+            natural_jacobian(p, gradients.g[q], J_used);
             const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
             Eigen::Map<Mat3> inverse(Jq_inv + 9 * k);
-            inverse = Jm.inverse();
-            qp_volume[k] = kQuadratureWeight * Jm.determinant();
+            inverse = load_row_major(J_used).inverse();
+            qp_volume[k] = kQuadratureWeight * load_row_major(J).determinant();
             V += qp_volume[k];
         }
         volume[e] = V;

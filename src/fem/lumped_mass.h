@@ -19,9 +19,11 @@ void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, u
 // The same for 10-node tets (10 node indices each, common/quadratic_tet_nodes.h): at each of the
 // 4 quadrature points the inverse reference Jacobian J_q^-1 (9 each, column-major: 36 per tet)
 // and the volume w_q det J_q (4 per tet), and the tet's volume (their sum). The Jacobians must be
-// positive (smallest_jacobian, checked when the mesh is added).
+// positive (smallest_jacobian, checked when the mesh is added). A composite element's J_q is
+// made of its own gradient table (composite_tet.h); its volumes are the quadratic map's, so
+// that a curved element weighs what it holds.
 void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
-                                  double* Jq_inv, double* qp_volume, double* volume);
+                                  bool composite, double* Jq_inv, double* qp_volume, double* volume);
 
 // The share of a tet's mass rho V that its local node a receives: 1/4 for a linear tet, 1/32 at
 // a corner and 7/48 at a mid-edge node of a 10-node tet.

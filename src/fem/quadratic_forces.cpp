@@ -1,6 +1,8 @@
 // The element kernels of the 10-node tet (fem/quadratic_tet.h): at each of the 4 quadrature
 // points of a tet, Ds_q from the ten nodes, F_q = Ds_q J_q^-1, the stress P_q of the body's
 // model, and the nodal forces -V_q P_q J_q^-T dN_a/dxi; then one scatter per tet, in tet order.
+// The composite element (composite_tet.h) runs the same loop with its own table in place of
+// dN_a/dxi.
 // Plain loops over small fixed arrays, no instruction-set variants: the compiler vectorises
 // them for whatever it targets, and with -ffp-contract=off (CMakeLists.txt) every target rounds
 // alike.
@@ -13,7 +15,7 @@
 #include "fem/block_result.h"
 #include "fem/neo_hookean_tangent.h"
 #include "fem/polar_rotation.h"
-#include "fem/quadratic_tet.h"
+#include "fem/composite_tet.h"
 #include "fem/tet_element.h"
 #include "fem/volume_barrier.h"
 
@@ -147,6 +149,35 @@ LFEM_QUADRATIC_INLINE void add_nodal_forces(const Mat3& G, const PointWeights& p
     }
 }
 
+// The quadratic shape functions' gradients at the quadrature points, through the barycentric
+// split above.
+struct QuadraticShape {
+    LFEM_QUADRATIC_INLINE static Mat3 gradient(const double u[kQuadraticTetNodes][3], int q) {
+        return natural_gradient(u, PointWeights(q));
+    }
+    LFEM_QUADRATIC_INLINE static void add_forces(const Mat3& G, int q, double f[kQuadraticTetNodes][3]) {
+        add_nodal_forces(G, PointWeights(q), f);
+    }
+};
+
+// The composite element's (composite_tet.h): Ds_q = sum_a u_a bhat_qa^T and f_a += G bhat_qa,
+// the table having no structure to exploit.
+struct CompositeShape {
+    LFEM_QUADRATIC_INLINE static Mat3 gradient(const double u[kQuadraticTetNodes][3], int q) {
+        const double(&b)[kQuadraticTetNodes][3] = kCompositeGradients.g[q];
+        Mat3 Ds = Mat3::Zero();
+        for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
+            for (int c = 0; c < 3; ++c)
+                for (int r = 0; r < 3; ++r) Ds(r, c) += u[a][r] * b[a][c];
+        return Ds;
+    }
+    LFEM_QUADRATIC_INLINE static void add_forces(const Mat3& G, int q, double f[kQuadraticTetNodes][3]) {
+        const double(&b)[kQuadraticTetNodes][3] = kCompositeGradients.g[q];
+        for (uint32_t a = 0; a < kQuadraticTetNodes; ++a)
+            for (int r = 0; r < 3; ++r) f[a][r] += G(r, 0) * b[a][0] + G(r, 1) * b[a][1] + G(r, 2) * b[a][2];
+    }
+};
+
 // The volume barrier at one quadrature point of deformation F, added to P and psi (rare: only
 // below J_b); returns the stiffness it adds, 0 above J_b.
 LFEM_QUADRATIC_INLINE double add_barrier(const Mat3& F, double J, const Lame& lame, Mat3& P, double& psi) {
@@ -161,7 +192,7 @@ LFEM_QUADRATIC_INLINE double add_barrier(const Mat3& F, double J, const Lame& la
 
 // One block of tets: its strain energy, inverted tets, smallest volume ratio and (a model with
 // kTangent or kBarrier) largest tangent estimate.
-template <bool displacement, class Model>
+template <bool displacement, class Shape, class Model>
 BlockResult quadratic_block(const QuadraticLoop& d, uint32_t block, const Model& model) {
     BlockResult out;
     double energy = 0.0, worst = 0.0;
@@ -171,11 +202,10 @@ BlockResult quadratic_block(const QuadraticLoop& d, uint32_t block, const Model&
         gather<displacement>(d, e, u);
         double tet_J = HUGE_VAL;
         for (int q = 0; q < kQuadraturePoints; ++q) {
-            const PointWeights p(q);
             const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
             const Eigen::Map<const Mat3> Jinv(d.Jq_inv + 9 * k);
             double psi = 0.0;
-            const Mat3 G = natural_gradient(u, p) * Jinv;  // F, or grad u with displacements
+            const Mat3 G = Shape::gradient(u, q) * Jinv;  // F, or grad u with displacements
             const Mat3 F = displacement ? Mat3(G + Mat3::Identity()) : G;
             const double J = F.determinant();
             tet_J = std::min(tet_J, J);
@@ -183,7 +213,7 @@ BlockResult quadratic_block(const QuadraticLoop& d, uint32_t block, const Model&
             if constexpr (Model::kBarrier) worst = std::max(worst, add_barrier(F, J, model.lame, P, psi));
             const double V = d.qp_volume[k];
             energy += V * psi;
-            add_nodal_forces(-V * (P * Jinv.transpose()), p, f);  // the elastic force is -f_int
+            Shape::add_forces(-V * (P * Jinv.transpose()), q, f);  // the elastic force is -f_int
         }
         out.inverted += !(tet_J > 0.0);
         out.min_J = std::min(out.min_J, tet_J);
@@ -205,8 +235,14 @@ BlockResult quadratic_loop(const ElementMesh& mesh, const double* x, double* f, 
     const QuadraticLoop d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.qp_volume.data(),
                           f, mesh.tet_count(), colouring.block_size};
     std::vector<BlockResult> per_block(colouring.block_count());
-    for_each_block_by_colour(colouring, pool,
-                             [&](uint32_t b) { per_block[b] = quadratic_block<displacement>(d, b, model); });
+    if (mesh.composite)
+        for_each_block_by_colour(colouring, pool, [&](uint32_t b) {
+            per_block[b] = quadratic_block<displacement, CompositeShape>(d, b, model);
+        });
+    else
+        for_each_block_by_colour(colouring, pool, [&](uint32_t b) {
+            per_block[b] = quadratic_block<displacement, QuadraticShape>(d, b, model);
+        });
     return sum_blocks(per_block);
 }
 
@@ -290,7 +326,8 @@ void compute_quadratic_von_mises(const ElementMesh& mesh, const Material& materi
         Mat3 mean = Mat3::Zero();
         for (int q = 0; q < kQuadraturePoints; ++q) {
             const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
-            const Mat3 F = natural_gradient(u, PointWeights(q)) * Eigen::Map<const Mat3>(d.Jq_inv + 9 * k);
+            const Mat3 Ds = mesh.composite ? CompositeShape::gradient(u, q) : QuadraticShape::gradient(u, q);
+            const Mat3 F = Ds * Eigen::Map<const Mat3>(d.Jq_inv + 9 * k);
             mean += d.qp_volume[k] * cauchy_stress(material, F, R_body, tet_rotation, k);
         }
         out[e] = von_mises(mean / mesh.volume[e]);

@@ -9,7 +9,7 @@
 #include "common/thread_pool.h"
 #include "fem/internal_forces.h"
 #include "fem/lumped_mass.h"
-#include "fem/quadratic_tet.h"
+#include "fem/composite_tet.h"
 #include "fem/tet_element.h"
 
 namespace lfem {
@@ -33,7 +33,8 @@ ElementStiffness element_stiffness(const ElementMesh& ref, const Lame& lame, uin
         if (quadratic) {
             const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
             const Eigen::Map<const Mat3> Jq_inv(&ref.Dm_inv[9 * k]);
-            for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) g[a] = Jq_inv.transpose() * Vec3(kQuadraticGradients.g[q][a]);
+            const QuadraticGradients& table = element_gradients(ref.composite);
+            for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) g[a] = Jq_inv.transpose() * Vec3(table.g[q][a]);
             V = ref.qp_volume[k];
         } else {
             const Eigen::Map<const Mat3> Dm_inv(&ref.Dm_inv[9 * e]);

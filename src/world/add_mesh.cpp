@@ -70,7 +70,7 @@ void append_reference_tets(BodyReference& ref, uint32_t old_tets) {
         ref.Dm_inv.resize(9 * std::size_t(kQuadraturePoints) * total);
         ref.qp_volume.resize(std::size_t(kQuadraturePoints) * total);
         ref.volume.resize(total);
-        add_quadratic_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, ref.Dm_inv.data(),
+        add_quadratic_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, ref.composite, ref.Dm_inv.data(),
                                      ref.qp_volume.data(), ref.volume.data());
     } else {
         ref.Dm_inv.resize(9 * std::size_t(total));
@@ -87,6 +87,7 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
                                const lfem_world_def& def, ThreadPool* pool) {
     BodyReference ref = body.ref;
     ref.nodes_per_tet = nodes_per_tet;
+    ref.composite = body.def.composite_tets != 0;
     const uint32_t old_nodes = ref.node_count(), old_tets = ref.tet_count();
     {
         LocalityOrder order = order_for_locality(positions, node_count, tets, tet_count, nodes_per_tet);
@@ -195,6 +196,7 @@ void start_motion(Body& candidate, BodyState& state, ThreadPool* pool) {
 }  // namespace
 
 void derive_reference_data(const Body& body, BodyReference& ref) {
+    ref.composite = body.def.composite_tets != 0;  // a checkpoint's body: from its def
     ref.colouring = colour_tets(ref);
     compute_node_triangles(ref.node_count(), ref.surface);
     ref.every_node.clear();

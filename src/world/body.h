@@ -33,6 +33,8 @@ struct BodyReference {
     std::vector<double> qp_volume;  // quadratic: 4 per tet, each quadrature point's volume
     uint32_t nodes_per_tet = 4;     // 4, or 10 for a body of quadratic tets (fixed by its
                                     // first mesh)
+    bool composite = false;         // 10-node tets as the composite element (the body def's
+                                    // composite_tets; fem/composite_tet.h)
     Surface surface;                // boundary triangles, slave and feature nodes, edge length
     double total_mass = 0;          // the sum of `mass`, added mass included
     double added_mass = 0;          // kg, added by mass scaling (lfem_world_def.mass_scaling_step)
@@ -128,7 +130,7 @@ void derive_reference_data(const Body& body, BodyReference& ref);
 inline ElementMesh element_mesh(const BodyReference& ref) {
     ElementMesh m;
     m.X = ref.X, m.tets = ref.tets, m.Dm_inv = ref.Dm_inv, m.volume = ref.volume, m.mass = ref.mass;
-    m.qp_volume = ref.qp_volume, m.nodes_per_tet = ref.nodes_per_tet;
+    m.qp_volume = ref.qp_volume, m.nodes_per_tet = ref.nodes_per_tet, m.composite = ref.composite;
     m.colouring = &ref.colouring;
     return m;
 }

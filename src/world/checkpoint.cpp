@@ -221,6 +221,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(type >= LFEM_BODY_DEFORMABLE && type <= LFEM_BODY_RIGID, "bad body type");
     require(model >= LFEM_MODEL_PAPER && model <= LFEM_MODEL_LINEAR, "bad model");
     require(b.def.self_contact <= 1 && (b.def.self_contact == 0 || b.is_deformable()), "bad self-contact flag");
+    require(b.def.composite_tets <= 1, "bad composite-tets flag");
     require(r.X.size() % 3 == 0, "bad reference positions");
     require(r.nodes_per_tet == 4 || r.nodes_per_tet == 10, "bad nodes per tet");
     const bool quadratic = r.nodes_per_tet == 10;

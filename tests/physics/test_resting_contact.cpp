@@ -71,17 +71,22 @@ TEST(RestingContact, BlockOnFloorCarriesItsWeightWithoutJitter) {
 
 // The same with a block of 10-node tets (2 x 2 x 2 cells: the same 2.5 cm node spacing), on a
 // floor of 4-node tets and on one of 10-node tets, whose flat faces contact sees as 4 triangles
-// each: the same bounds, as quiet as the linear block.
+// each: the same bounds, as quiet as the linear block. The composite element
+// (def.composite_tets) alike.
 TEST(RestingContact, QuadraticBlockOnFloorCarriesItsWeightWithoutJitter) {
+    for (bool composite : {false, true})
     for (bool quadratic_floor : {false, true}) {
         World w;
         Mesh floor_mesh, block_mesh;
         add_floor(w, floor_mesh, 0.5, quadratic_floor);
         make_quadratic_box_mesh(block_mesh, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.0);
-        const Rest r = settle_and_watch(w, add_body(w, block_def(), block_mesh));
-        std::printf("resting block of 10-node tets on a floor of %s tets: normal force within %.2e of m g, RMS "
+        lfem_body_def def = block_def();
+        def.composite_tets = composite;
+        const Rest r = settle_and_watch(w, add_body(w, def, block_mesh));
+        std::printf("resting block of 10-node%s tets on a floor of %s tets: normal force within %.2e of m g, RMS "
                     "node velocity <= %.2e m/s, penetration <= %.2e m, %u contacts\n",
-                    quadratic_floor ? "10-node" : "4-node", r.force, r.rms, r.penetration, r.contacts);
+                    composite ? " composite" : "", quadratic_floor ? "10-node" : "4-node", r.force, r.rms,
+                    r.penetration, r.contacts);
         EXPECT_LT(r.force, 0.005);
         EXPECT_LT(r.rms, 1e-6);
         EXPECT_LT(r.penetration, 1e-9);

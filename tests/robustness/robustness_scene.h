@@ -76,6 +76,12 @@ struct RobustnessScene {
         make_quadratic_box_mesh(quadratic, 0.06, 0.06, 0.06, 1, 1, 2, -0.2, -0.2, 0.002);
         bodies.push_back(add_body(w, d, quadratic));
         add_skin_to(bodies.back(), -0.17, -0.17, 0.03);  // bound to all ten nodes of its tets
+
+        Mesh composite;  // the composite 10-node element: its table chosen again from the def on load
+        d.composite_tets = 1;
+        d.angular_velocity[2] = -1.0;
+        make_quadratic_box_mesh(composite, 0.05, 0.05, 0.05, 1, 1, 1, -0.2, 0.2, 0.002);
+        bodies.push_back(add_body(w, d, composite));
     }
 
     static lfem_world_def def(uint32_t thread_count) {

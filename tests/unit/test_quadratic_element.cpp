@@ -12,92 +12,14 @@
 
 #include <Eigen/Dense>
 
-#include "fem/element_colouring.h"
-#include "fem/internal_forces.h"
-#include "fem/lumped_mass.h"
-#include "fem/quadratic_tet.h"
 #include "fem/stable_step.h"
 #include "fem/tet_element.h"
-#include "mesh/boundary.h"
-#include "mesh/mesh_builders.h"
-#include "mesh/quadratic_mesh.h"
+#include "quadratic_box.h"
 
 namespace lfem {
 namespace {
 
-constexpr double kRho = 1000.0;
-const double kSize[3] = {0.4, 0.3, 0.5};
-
-// A box of 10-node tets with everything the kernels read.
-struct QuadraticBox {
-    TetMesh mesh;
-    std::vector<double> Jq_inv, qp_volume, volume, mass;
-    ElementColouring colouring;
-    std::vector<uint8_t> boundary;  // per node
-
-    explicit QuadraticBox(uint32_t nx, uint32_t ny, uint32_t nz, uint32_t block = 64) {
-        const uint32_t cells[3] = {nx, ny, nz};
-        mesh = make_quadratic(build_box(kSize, cells));
-        const uint32_t t = mesh.tet_count();
-        Jq_inv.resize(36 * std::size_t(t)), qp_volume.resize(4 * std::size_t(t)), volume.resize(t);
-        mass.assign(mesh.node_count(), 0.0);
-        add_quadratic_reference_tets(mesh.positions.data(), mesh.tets.data(), 0, t, Jq_inv.data(), qp_volume.data(),
-                                     volume.data());
-        add_lumped_mass(mesh.tets.data(), volume.data(), 0, t, kRho, mass.data(), 10);
-        colouring = colour_element_blocks(mesh.tets.data(), t, mesh.node_count(), block, 10);
-        boundary.assign(mesh.node_count(), 0);
-        for (uint32_t i : extract_quadratic_boundary(mesh.tets.data(), t)) boundary[i] = 1;
-    }
-    ElementMesh view() const {
-        ElementMesh m;
-        m.X = mesh.positions, m.tets = mesh.tets, m.Dm_inv = Jq_inv, m.volume = volume, m.qp_volume = qp_volume;
-        m.mass = mass, m.colouring = &colouring, m.nodes_per_tet = 10;
-        return m;
-    }
-    uint32_t nodes() const { return mesh.node_count(); }
-    const double* X(uint32_t i) const { return &mesh.positions[3 * std::size_t(i)]; }
-};
-
-struct Forces {
-    std::vector<double> f;
-    ElasticResult result;
-};
-
-// Elastic forces at positions x; the corotational warm start starts at identity, the paper
-// model's frame is `frame`.
-Forces forces_at(const QuadraticBox& box, lfem_model model, const Lame& lame, const std::vector<double>& x,
-                 const double frame[4] = nullptr) {
-    static const double identity[4] = {1, 0, 0, 0};
-    Forces out;
-    out.f.assign(x.size(), 0.0);
-    std::vector<float> rotations(16 * std::size_t(box.mesh.tet_count()), 0.0f);
-    for (std::size_t k = 0; k < rotations.size(); k += 4) rotations[k] = 1.0f;
-    ElasticState s;
-    s.x = x, s.force = out.f, s.tet_rotation = rotations, s.frame = frame ? frame : identity;
-    out.result = compute_elastic_forces(box.view(), Material{model, lame}, s);
-    return out;
-}
-
-// The largest |f| over the interior nodes and over all nodes.
-void largest_forces(const QuadraticBox& box, const std::vector<double>& f, double& interior, double& any) {
-    interior = any = 0.0;
-    for (uint32_t i = 0; i < box.nodes(); ++i) {
-        const double n = std::sqrt(f[3 * i] * f[3 * i] + f[3 * i + 1] * f[3 * i + 1] + f[3 * i + 2] * f[3 * i + 2]);
-        any = std::max(any, n);
-        if (!box.boundary[i]) interior = std::max(interior, n);
-    }
-}
-
-template <class Field>
-std::vector<double> deformed(const QuadraticBox& box, const Field& u) {
-    std::vector<double> x(box.mesh.positions);
-    for (uint32_t i = 0; i < box.nodes(); ++i) {
-        double d[3];
-        u(box.X(i), d);
-        for (int k = 0; k < 3; ++k) x[3 * i + k] += d[k];
-    }
-    return x;
-}
+using namespace test;
 
 TEST(QuadraticElement, MassesArePositiveAndSumToRhoV) {
     const QuadraticBox box(3, 2, 4);
@@ -119,8 +41,15 @@ TEST(QuadraticElement, MassesArePositiveAndSumToRhoV) {
 
 // x = F X + c, any F: a constant stress; the interior nodes are in equilibrium whatever the
 // model (relative to the forces on the boundary nodes, round-off: 1e-12).
+// The composite element (composite_tet.h) passes it too: a linear field is its own projection.
+void homogeneous_deformation_is_reproduced(bool composite);
 TEST(QuadraticElement, HomogeneousDeformationIsReproducedByEveryModel) {
-    const QuadraticBox box(2, 2, 2);
+    for (bool composite : {false, true}) homogeneous_deformation_is_reproduced(composite);
+}
+
+void homogeneous_deformation_is_reproduced(bool composite) {
+    SCOPED_TRACE(composite ? "composite" : "quadratic");
+    const QuadraticBox box(2, 2, 2, 64, composite);
     const Lame lame = lame_from_young_poisson(1e6, 0.3);
     Mat3 F;
     F << 1.05, 0.02, -0.01, 0.03, 0.97, 0.04, -0.02, 0.01, 1.08;
@@ -236,8 +165,15 @@ TEST(QuadraticElement, RigidRotationStrainsNothing) {
 
 // The stiffness operator K u of the stable step (element by element) is symmetric, annihilates
 // rigid motions, and u.K u is twice the linear model's strain energy at u.
+// The composite element's too.
+void stiffness_operator_is_symmetric(bool composite);
 TEST(QuadraticElement, StiffnessOperatorIsSymmetricAndRigidMotionsFree) {
-    const QuadraticBox box(2, 1, 2);
+    for (bool composite : {false, true}) stiffness_operator_is_symmetric(composite);
+}
+
+void stiffness_operator_is_symmetric(bool composite) {
+    SCOPED_TRACE(composite ? "composite" : "quadratic");
+    const QuadraticBox box(2, 1, 2, 64, composite);
     const Lame lame = lame_from_young_poisson(1e6, 0.3);
     const std::size_t n = 3 * std::size_t(box.nodes());
     std::vector<double> u(n), v(n), Ku(n), Kv(n), rigid(n), Kr(n);
@@ -274,9 +210,11 @@ TEST(QuadraticElement, StiffnessOperatorIsSymmetricAndRigidMotionsFree) {
 // The stable step estimate holds: omega_max used is at least the largest eigenvalue of the
 // assembled M^-1 K (dense, here, from the operator column by column), and within the 2 %
 // margin the Lanczos estimate adds; below the Gershgorin bound.
+// For the composite element too (softer: a lower omega_max on the same masses).
 TEST(QuadraticElement, StableStepEstimateBoundsTheTrueFrequency) {
+    for (bool composite : {false, true})
     for (const uint32_t* cells : {(const uint32_t[]){1, 1, 1}, (const uint32_t[]){2, 1, 2}}) {
-        const QuadraticBox box(cells[0], cells[1], cells[2]);
+        const QuadraticBox box(cells[0], cells[1], cells[2], 64, composite);
         const Lame lame = lame_from_young_poisson(2e9, 0.3);
         const ElementMesh m = box.view();
         const int n = 3 * int(box.nodes());
@@ -293,8 +231,8 @@ TEST(QuadraticElement, StableStepEstimateBoundsTheTrueFrequency) {
                                       .maxCoeff();
         const StableStepEstimate s = estimate_stable_step(m, lame);
         const double omega = std::sqrt(lambda_max);
-        std::printf("10-node box %ux%ux%u: omega_max %.6g (dense), used %.6g, Lanczos %.6g, Gershgorin %.6g\n",
-                    cells[0], cells[1], cells[2], omega, s.omega_max, s.omega_power, s.omega_gershgorin);
+        std::printf("10-node%s box %ux%ux%u: omega_max %.6g (dense), used %.6g, Lanczos %.6g, Gershgorin %.6g\n",
+                    composite ? " composite" : "", cells[0], cells[1], cells[2], omega, s.omega_max, s.omega_power, s.omega_gershgorin);
         EXPECT_GE(s.omega_max, omega);
         EXPECT_LE(s.omega_max, omega * std::sqrt(1.02) * (1 + 1e-9));
         EXPECT_GE(s.omega_gershgorin, omega);

@@ -187,7 +187,8 @@ class BodyDef(_Definition):
         ("_internal_value", ctypes.c_uint32),  # set by the default; never changed
         ("enable_sleep", ctypes.c_uint8),     # 1 (default) = may fall asleep when the world allows
         ("self_contact", ctypes.c_uint8),     # 1 = the surface collides with itself (deformable)
-        ("_padding", ctypes.c_uint8 * 2),
+        ("composite_tets", ctypes.c_uint8),   # 1 = 10-node tets as the composite element
+        ("_padding", ctypes.c_uint8),
     ]
     _enums = ("type", "model")
     type = _enum_property("_type", BodyType)

@@ -80,7 +80,7 @@ class Layout(unittest.TestCase):
             "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
             "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112,
-            "enable_sleep": 116, "self_contact": 117})
+            "enable_sleep": 116, "self_contact": 117, "composite_tets": 118})
         self.check(lfem.Contact, 128, {
             "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
             "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124})
@@ -264,6 +264,14 @@ class Physics(unittest.TestCase):
                 world.create_body(lfem.BodyDef(type=lfem.BodyType.STATIC, self_contact=1))
             self.assertIn("self_contact", str(caught.exception))
             world.create_body(lfem.BodyDef(self_contact=1))
+
+    def test_composite_tets_flag_is_checked(self):
+        with lfem.World() as world:
+            self.assertEqual(lfem.BodyDef().composite_tets, 0)
+            with self.assertRaises(lfem.InvalidArgumentError) as caught:
+                world.create_body(lfem.BodyDef(composite_tets=2))
+            self.assertIn("composite_tets", str(caught.exception))
+            world.create_body(lfem.BodyDef(composite_tets=1))
 
     def test_falling_block_follows_free_fall(self):
         # Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each

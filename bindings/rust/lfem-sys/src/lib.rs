@@ -283,7 +283,8 @@ pub struct lfem_body_def {
     pub internal_value: u32,
     pub enable_sleep: u8,
     pub self_contact: u8,
-    pub padding: [u8; 2],
+    pub composite_tets: u8,
+    pub padding: u8,
 }
 
 #[repr(C)]

@@ -99,6 +99,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_body_def, mask_bits), 100);
     assert_eq!(offset!(lfem_body_def, enable_sleep), 116);
     assert_eq!(offset!(lfem_body_def, self_contact), 117);
+    assert_eq!(offset!(lfem_body_def, composite_tets), 118);
     assert_eq!(offset!(lfem_world_def, enable_sleep), 61);
     assert_eq!(offset!(lfem_world_def, sleep_velocity), 80);
     assert_eq!(offset!(lfem_world_def, sleep_time), 88);

@@ -339,6 +339,9 @@ pub struct BodyDef {
     pub self_contact: bool,
     /// May fall asleep when the world allows it, default true.
     pub enable_sleep: bool,
+    /// 10-node tets as the composite element (linear sub-tets, projected strain: plane waves
+    /// and impacts carry as with 4-node tets), default false.
+    pub composite_tets: bool,
     internal_value: u32,
 }
 
@@ -370,6 +373,7 @@ impl Default for BodyDef {
             mask_bits: d.mask_bits,
             self_contact: d.self_contact != 0,
             enable_sleep: d.enable_sleep != 0,
+            composite_tets: d.composite_tets != 0,
             internal_value: d.internal_value,
         }
     }
@@ -403,7 +407,8 @@ impl BodyDef {
             internal_value: self.internal_value,
             enable_sleep: u8::from(self.enable_sleep),
             self_contact: u8::from(self.self_contact),
-            padding: [0; 2],
+            composite_tets: u8::from(self.composite_tets),
+            padding: 0,
         }
     }
 }
