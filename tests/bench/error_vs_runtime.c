@@ -48,7 +48,7 @@ typedef struct run_row {
     double impulse, plateau, peak_force, duration, v1, v2; /* two_bar (peak force, duration: hertz) */
     double penetration;   /* m */
     double momentum, kinetic, volume; /* spin */
-    int quadratic;        /* 10-node tets */
+    int quadratic;        /* 1: 10-node tets, 2: 10-node composite tets, 0: 4-node tets */
     double mass_scaling;  /* requested step / the step without mass scaling (1: the series'
                              reference run); NAN outside the mass-scaling series */
     double added_mass;    /* what mass scaling added over the body's mass with it */
@@ -88,7 +88,9 @@ static const char* model_name(lfem_model m) {
     }
 }
 
-static const char* element_name(const run_row* r) { return r->quadratic ? "tet10" : "tet4"; }
+static const char* element_name(const run_row* r) {
+    return r->quadratic == 2 ? "tet10c" : r->quadratic ? "tet10" : "tet4";
+}
 
 static void print_row(const run_row* r) {
     printf("%-10s %-13s %-12s %-5s %14s %6u tets %6u nodes  safety %.2f  %7llu steps  %8.3f s  error %+.3e%s\n",
@@ -238,10 +240,10 @@ static int gmsh_reader_built(void) {
     return s != LFEM_UNSUPPORTED;
 }
 
-static int run_hertz(row_list* list, const char* problem, const char* name, double speed) {
+static int run_hertz(row_list* list, const char* problem, const char* name, double speed, int composite) {
     char path[512];
     snprintf(path, sizeof path, "%s/%s.msh", LFEM_BENCH_DATA_DIR, name);
-    const hertz_config c = {path, LFEM_MODEL_LINEAR, 0.9, speed};
+    const hertz_config c = {path, LFEM_MODEL_LINEAR, 0.9, speed, composite};
     hertz_result res, again;
     if (hertz_run(&c, &res) != 0) return -1;
     for (int k = 1; k < g_repeats; ++k) {
@@ -254,7 +256,7 @@ static int run_hertz(row_list* list, const char* problem, const char* name, doub
     snprintf(r->contact, sizeof r->contact, "multipliers");
     r->model = model_name(c.model);
     snprintf(r->mesh, sizeof r->mesh, "%s", name);
-    r->quadratic = res.nodes_per_tet == 10;
+    r->quadratic = res.nodes_per_tet == 10 ? 1 + (composite != 0) : 0;
     r->tets = res.tets;
     r->nodes = res.nodes;
     r->safety = c.step_ratio;
@@ -269,29 +271,30 @@ static int run_hertz(row_list* list, const char* problem, const char* name, doub
     return 0;
 }
 
-/* The runs with 10-node tets: two bars (paper model) along 20 to 160 cells and 2 across,
- * the cantilever (corotational, and one mesh each with the other models), spin and incline. */
-static int run_quadratic_cases(row_list* list, int quick) {
+/* The runs with 10-node tets (kind 1) or composite ones (kind 2): two bars (paper model) along
+ * 20 to 160 cells and 2 across, the cantilever (corotational, and one mesh each with the other
+ * models), spin and incline. */
+static int run_quadratic_cases(row_list* list, int quick, int kind) {
     static const uint32_t bars[7][3] = {{20, 1, 1}, {40, 1, 1}, {80, 1, 1}, {160, 1, 1},
                                         {20, 2, 2}, {40, 2, 2}, {80, 2, 2}};
     for (int i = 0; i < (quick ? 1 : 7); ++i) {
-        const two_bar_config bar = {LFEM_MODEL_PAPER, {bars[i][0], bars[i][1], bars[i][2]}, 0.0, 0.9, 0.0, 200e-6, 1, 0.0};
+        const two_bar_config bar = {LFEM_MODEL_PAPER, {bars[i][0], bars[i][1], bars[i][2]}, 0.0, 0.9, 0.0, 200e-6, kind, 0.0};
         if (run_two_bar(list, &bar, NULL) != 0) return -1;
     }
     static const uint32_t beams[5][3] = {{10, 1, 1}, {20, 1, 1}, {20, 1, 2}, {30, 1, 3}, {40, 1, 4}};
     for (int i = 0; i < (quick ? 1 : 5); ++i)
-        if (run_case(list, "cantilever", cantilever_run, LFEM_MODEL_COROTATIONAL, beams[i], 0.9, 0, 1) != 0)
+        if (run_case(list, "cantilever", cantilever_run, LFEM_MODEL_COROTATIONAL, beams[i], 0.9, 0, kind) != 0)
             return -1;
     if (quick) return 0;
     static const lfem_model others[3] = {LFEM_MODEL_PAPER, LFEM_MODEL_NEO_HOOKEAN, LFEM_MODEL_LINEAR};
     for (int m = 0; m < 3; ++m)
-        if (run_case(list, "cantilever", cantilever_run, others[m], beams[0], 0.9, 0, 1) != 0) return -1;
+        if (run_case(list, "cantilever", cantilever_run, others[m], beams[0], 0.9, 0, kind) != 0) return -1;
     static const uint32_t spins[2][3] = {{2, 1, 1}, {4, 2, 2}};
     static const uint32_t blocks[2][3] = {{2, 2, 2}, {3, 3, 3}};
     for (int i = 0; i < 2; ++i)
-        if (run_case(list, "spin", spin_run, LFEM_MODEL_COROTATIONAL, spins[i], 0.9, 0, 1) != 0 ||
-            run_case(list, "spin", spin_run, LFEM_MODEL_NEO_HOOKEAN, spins[i], 0.9, 0, 1) != 0 ||
-            run_case(list, "incline", incline_run, LFEM_MODEL_PAPER, blocks[i], 0.9, 0, 1) != 0)
+        if (run_case(list, "spin", spin_run, LFEM_MODEL_COROTATIONAL, spins[i], 0.9, 0, kind) != 0 ||
+            run_case(list, "spin", spin_run, LFEM_MODEL_NEO_HOOKEAN, spins[i], 0.9, 0, kind) != 0 ||
+            run_case(list, "incline", incline_run, LFEM_MODEL_PAPER, blocks[i], 0.9, 0, kind) != 0)
             return -1;
     return 0;
 }
@@ -350,7 +353,7 @@ static int write_csv(const char* path, const row_list* list) {
     }
     /* error: two_bar impulse; spin the largest of momentum_err, kinetic_err, volume_change;
      * cantilever tip deflection; incline acceleration; hertz the larger of peak_force_err and
-     * duration_err. All errors relative; penetration in m. element: tet4 or tet10; mesh: the
+     * duration_err. All errors relative; penetration in m. element: tet4, tet10 or tet10c; mesh: the
      * cells, or the Hertz mesh (cells 0). */
     fprintf(f, "problem,contact,model,cells_x,cells_y,cells_z,tets,safety,step_s,steps,wall_s,stable,"
                "error,impulse_err,plateau_err,peak_force_err,duration_err,v1_err,v2_err,"
@@ -413,13 +416,15 @@ static void print_levels_table(const row_list* list) {
                                   "peak force, contact time; 10 m/s"};
     static const double levels[] = {0.05, 0.02, 0.01, 0.005, 0.003};
     printf("\n| problem (error) | level | 4-node tets: mesh, model, safety | wall time | error "
-           "| 10-node tets: mesh, model, safety | wall time | error |\n");
-    printf("| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+           "| 10-node tets: mesh, model, safety | wall time | error "
+           "| 10-node composite tets: mesh, model, safety | wall time | error |\n");
+    printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
     for (int p = 0; p < 6; ++p)
         for (int l = 0; l < 5; ++l) {
             printf("| %s (%s) | %g %% |", problems[p], what[p], 100 * levels[l]);
             print_setting(fastest_within(list, problems[p], 0, levels[l]));
             print_setting(fastest_within(list, problems[p], 1, levels[l]));
+            print_setting(fastest_within(list, problems[p], 2, levels[l]));
             printf("\n");
         }
 }
@@ -439,32 +444,34 @@ static const run_row* best_within_time(const row_list* list, const char* problem
     return best;
 }
 
-/* Issue 20's targets for the 10-node tets, from the runs made. */
-static void print_quadratic_targets(const row_list* list) {
-    const run_row* beam = fastest_within(list, "cantilever", 1, 0.01);
-    printf("\ntarget (10-node cantilever within 1 %% in under 2 s): ");
+/* Issue 20's targets for the 10-node tets (kind 1) or the composite ones (kind 2), from the
+ * runs made. */
+static void print_quadratic_targets(const row_list* list, int kind) {
+    const char* name = kind == 2 ? "10-node composite" : "10-node";
+    const run_row* beam = fastest_within(list, "cantilever", kind, 0.01);
+    printf("\ntarget (%s cantilever within 1 %% in under 2 s): ", name);
     if (beam)
         printf("%s, %s %s safety %.2f, %.3f s, %+.3f %%\n", beam->wall < 2.0 ? "met" : "NOT met", beam->mesh,
                beam->model, beam->safety, beam->wall, 100 * beam->error);
     else
         printf("NOT met (no run within 1 %%)\n");
-    const run_row* hertz = fastest_within(list, "hertz", 1, 0.05);
-    printf("target (10-node Hertz impact, peak force and contact time within 5 %% in under 10 s): ");
+    const run_row* hertz = fastest_within(list, "hertz", kind, 0.05);
+    printf("target (%s Hertz impact, peak force and contact time within 5 %% in under 10 s): ", name);
     if (hertz)
         printf("%s at 1 m/s, %s, %.3f s, peak force %+.2f %%, contact time %+.2f %%\n",
                hertz->wall < 10.0 ? "met" : "NOT met", hertz->mesh, hertz->wall, 100 * hertz->peak_force,
                100 * hertz->duration);
     else
         printf("NOT met at 1 m/s (no run within 5 %%)\n");
-    const run_row* fast10 = best_within_time(list, "hertz_10", 1, 10.0);
+    const run_row* fast10 = best_within_time(list, "hertz_10", kind, 10.0);
     if (fast10)
-        printf("  at 10 m/s the best 10-node run within 10 s: %s, %.3f s, peak force %+.2f %%, contact time %+.2f %%\n",
-               fast10->mesh, fast10->wall, 100 * fast10->peak_force, 100 * fast10->duration);
-    printf("target (two bars with 10-node tets no worse than with linear tets at the same run time):\n");
+        printf("  at 10 m/s the best %s run within 10 s: %s, %.3f s, peak force %+.2f %%, contact time %+.2f %%\n",
+               name, fast10->mesh, fast10->wall, 100 * fast10->peak_force, 100 * fast10->duration);
+    printf("target (two bars with %s tets no worse than with linear tets at the same run time):\n", name);
     int worse = 0, runs = 0;
     for (size_t i = 0; i < list->count; ++i) {
         const run_row* q = &list->rows[i];
-        if (strcmp(q->problem, "two_bar") != 0 || !q->quadratic || strcmp(q->contact, "multipliers") != 0) continue;
+        if (strcmp(q->problem, "two_bar") != 0 || q->quadratic != kind || strcmp(q->contact, "multipliers") != 0) continue;
         const run_row* l = best_within_time(list, "two_bar", 0, q->wall);
         ++runs;
         worse += l && fabs(l->error) < fabs(q->error);
@@ -475,8 +482,8 @@ static void print_quadratic_targets(const row_list* list) {
         else
             printf("none\n");
     }
-    printf("  %s: %d of %d 10-node runs are worse than the best linear run of the same time\n",
-           worse ? "NOT met" : "met", worse, runs);
+    printf("  %s: %d of %d %s runs are worse than the best linear run of the same time\n",
+           worse ? "NOT met" : "met", worse, runs, name);
 }
 
 /* The mass-scaling series: per problem, the requested step's factor, the step, the added mass,
@@ -508,17 +515,20 @@ static void stable_cell(char* out, size_t size, double ratio, double highest, do
 /* ---- the sweep ----------------------------------------------------------------------------- */
 
 int main(int argc, char** argv) {
-    int quick = 0;
+    int quick = 0, only_10_node = 0;
     const char* out = LFEM_BENCH_RESULTS_DIR "/error_vs_runtime.csv";
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--quick") == 0)
             quick = 1;
+        else if (strcmp(argv[i], "--10-node") == 0)
+            only_10_node = 1;
         else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc)
             out = argv[++i];
         else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc && atoi(argv[i + 1]) >= 1)
             g_repeats = atoi(argv[++i]);
         else {
-            fprintf(stderr, "usage: bench_error_vs_runtime [--quick] [--out file.csv] [--repeats n]\n");
+            fprintf(stderr, "usage: bench_error_vs_runtime [--quick] [--10-node] [--out file.csv] [--repeats n]\n"
+                            "  --10-node: the 10-node runs and the 4-node two bars they are compared with only\n");
             return 2;
         }
     }
@@ -534,14 +544,21 @@ int main(int argc, char** argv) {
     two_bar_config bar = {LFEM_MODEL_PAPER, {40, 1, 1}, 0.0, 0.9, 0.0, 200e-6, 0, 0.0};
     static const uint32_t ladder[5] = {40, 80, 160, 240, 320};
     const int ladder_count = quick ? 2 : 5;
-    for (int m = 0; m < (quick ? 2 : 4); ++m)
+    for (int m = 0; m < (quick ? 2 : only_10_node ? 1 : 4); ++m)
         for (int i = 0; i < ladder_count; ++i) {
             bar.model = all_models[m];
             bar.cells[0] = ladder[i];
             bar.cells[1] = bar.cells[2] = 1;
             if (run_two_bar(&list, &bar, NULL) != 0) return 1;
         }
-    if (!quick) {
+    if (only_10_node) {
+        /* The largest safe step, where the 4-node bars are fastest for their error. */
+        for (int i = 0; i < 5; ++i) {
+            bar.cells[0] = ladder[i];
+            bar.step_ratio = 1.0;
+            if (run_two_bar(&list, &bar, NULL) != 0) return 1;
+        }
+    } else if (!quick) {
         /* Step safety factors (paper model), and cells across the bar. */
         static const double safeties[3] = {0.5, 0.7, 1.0};
         for (int s = 0; s < 3; ++s)
@@ -567,7 +584,8 @@ int main(int argc, char** argv) {
     static const uint32_t beam_meshes[7][3] = {{20, 1, 2}, {40, 1, 4}, {60, 1, 6}, {80, 1, 8},
                                                {20, 1, 4}, {20, 1, 8}, {40, 1, 8}};
     static const uint32_t block_meshes[4][3] = {{2, 2, 2}, {3, 3, 3}, {4, 4, 4}, {6, 6, 6}};
-    if (quick) {
+    if (only_10_node) {
+    } else if (quick) {
         if (run_case(&list, "spin", spin_run, LFEM_MODEL_COROTATIONAL, spin_meshes[0], 0.9, 0.2, 0) != 0 ||
             run_case(&list, "cantilever", cantilever_run, LFEM_MODEL_COROTATIONAL, beam_meshes[0], 0.9, 0, 0) != 0 ||
             run_case(&list, "incline", incline_run, LFEM_MODEL_PAPER, block_meshes[0], 0.9, 0, 0) != 0)
@@ -599,8 +617,8 @@ int main(int argc, char** argv) {
 
     /* 10-node tets (issue 20): the same problems, the cantilever with one to three elements
      * through the depth, and the two bars along and across. */
-    if (run_quadratic_cases(&list, quick) != 0) return 1;
-    if (run_mass_scaling(&list, quick) != 0) return 1;
+    if (run_quadratic_cases(&list, quick, 1) != 0 || run_quadratic_cases(&list, quick, 2) != 0) return 1;
+    if (!only_10_node && run_mass_scaling(&list, quick) != 0) return 1;
     /* Hertz impact of the Gmsh sphere (tests/bench/data/hertz_*.msh: element kind, element
      * size at the pole in 0.1 mm), linear model, at 1 m/s, and at 10 m/s (a / R = 0.11, where
      * the finite sphere departs from Hertz's half-space: the meshes converge to ~5 % off). */
@@ -609,9 +627,25 @@ int main(int argc, char** argv) {
     const int hertz = gmsh_reader_built();
     if (!hertz) printf("hertz: left out (this build of lfem has no Gmsh reader: LFEM_WITH_IO=OFF)\n");
     for (int i = 0; i < 6 && hertz; ++i)
-        if ((!quick || i == 0 || i == 3) && run_hertz(&list, "hertz", hertz_meshes[i], 1.0) != 0) return 1;
+        if ((!quick || i == 0 || i == 3) && (!only_10_node || i >= 3) &&
+            run_hertz(&list, "hertz", hertz_meshes[i], 1.0, 0) != 0)
+            return 1;
     for (int i = 1; i < 5 && hertz && !quick; ++i)
-        if (run_hertz(&list, "hertz_10", hertz_meshes[i], 10.0) != 0) return 1;
+        if ((!only_10_node || i >= 3) && run_hertz(&list, "hertz_10", hertz_meshes[i], 10.0, 0) != 0) return 1;
+    /* The composite element on the 10-node spheres. */
+    for (int i = 3; i < 6 && hertz; ++i)
+        if ((!quick || i == 3) && run_hertz(&list, "hertz", hertz_meshes[i], 1.0, 1) != 0) return 1;
+    for (int i = 3; i < 5 && hertz && !quick; ++i)
+        if (run_hertz(&list, "hertz_10", hertz_meshes[i], 10.0, 1) != 0) return 1;
+
+    if (only_10_node) { /* no CSV: the committed one holds the whole sweep */
+        printf("\n%zu runs in %.1f s\n", list.count, bench_now() - start);
+        print_levels_table(&list);
+        print_quadratic_targets(&list, 1);
+        print_quadratic_targets(&list, 2);
+        free(list.rows);
+        return 0;
+    }
 
     /* The penalty baseline against the multipliers on one mesh: the largest step that does not
      * blow up (a sweep down from 2 times the elastic limit in steps of 5 %, refined by
@@ -667,7 +701,8 @@ int main(int argc, char** argv) {
                100 * target->error);
     else
         printf("\ntarget (two-bar impulse error <= 0.5 %% in <= 1 s): NOT met (no run within 0.5 %%)\n");
-    print_quadratic_targets(&list);
+    print_quadratic_targets(&list, 1);
+    print_quadratic_targets(&list, 2);
     printf("\nMass scaling (lfem_world_def.mass_scaling_step), the step requested at a multiple of the "
            "automatic step without it:\n");
     print_mass_scaling_table(&list);

@@ -54,6 +54,7 @@ int hertz_run(const hertz_config* config, hertz_result* r) {
     r->nodes_per_tet = lfem_mesh_get_nodes_per_tet(mesh);
     lfem_body_def def = lfem_body_def_default();
     def.model = config->model;
+    def.composite_tets = (uint8_t)config->composite;
     def.young_modulus = kYoung;
     def.poisson_ratio = kPoisson;
     def.density = kDensity;

@@ -29,6 +29,7 @@ typedef struct hertz_config {
     lfem_model model;
     double step_ratio;      /* fixed step as a fraction of the stable limit */
     double speed;           /* m/s, the impact speed */
+    int composite;          /* 1: 10-node tets as the composite element (composite_tets) */
 } hertz_config;
 
 typedef struct hertz_result {

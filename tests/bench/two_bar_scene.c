@@ -64,6 +64,7 @@ int two_bar_run(const two_bar_config* config, two_bar_result* r) {
      * collide: the springs alone keep them apart. */
     lfem_body_def def = lfem_body_def_default();
     def.model = config->model;
+    def.composite_tets = config->quadratic == 2;
     def.young_modulus = kYoung;
     def.poisson_ratio = config->nu;
     def.density = kDensity;

@@ -35,7 +35,8 @@ typedef struct two_bar_config {
                                < 0: no contact at all (the bars pass through each other): the
                                bars' own critical step, for comparison */
     double end_time;        /* s, 200 us: contact is over by ~124 us */
-    int quadratic;          /* 1: 10-node tets (lfem_mesh_make_quadratic), 0: 4-node tets */
+    int quadratic;          /* 1: 10-node tets (lfem_mesh_make_quadratic), 2: the same as the
+                               composite element (composite_tets), 0: 4-node tets */
     double mass_scaling_step; /* s, lfem_world_def.mass_scaling_step (0: no mass scaling) */
 } two_bar_config;
 

@@ -82,6 +82,7 @@ int spin_run(const case_config* c, case_result* r) {
     BENCH_TRY(lfem_world_create(&wd, &world));
     lfem_body_def def = lfem_body_def_default();
     def.model = c->model;
+    def.composite_tets = c->quadratic == 2;
     def.young_modulus = 1e7;
     def.poisson_ratio = 0.3;
     def.angular_velocity[2] = 2 * M_PI; /* about z, the axis of largest inertia (stable) */
@@ -138,6 +139,7 @@ int cantilever_run(const case_config* c, case_result* r) {
     BENCH_TRY(lfem_world_create(&wd, &world));
     lfem_body_def def = lfem_body_def_default();
     def.model = c->model;
+    def.composite_tets = c->quadratic == 2;
     def.young_modulus = E;
     def.poisson_ratio = 0.0; /* Euler-Bernoulli has no Poisson coupling */
     def.density = rho;
@@ -202,6 +204,7 @@ int incline_run(const case_config* c, case_result* r) {
         goto fail;
     lfem_body_def def = lfem_body_def_default();
     def.model = c->model;
+    def.composite_tets = c->quadratic == 2;
     def.young_modulus = 1e6;
     def.friction = mu;
     const double size[3] = {0.1, 0.1, 0.1}, offset[3] = {-0.05, -0.05, 0.0};

@@ -14,7 +14,8 @@ typedef struct case_config {
     uint32_t cells[3];  /* hexahedra of the body along x, y, z */
     double safety;      /* step as a fraction of the elastic stable limit (step_safety) */
     double duration;    /* s of simulated time; 0 = the case's own (see each function) */
-    int quadratic;      /* 1: the body of 10-node tets (lfem_mesh_make_quadratic) */
+    int quadratic;      /* 1: the body of 10-node tets (lfem_mesh_make_quadratic); 2: the same
+                           as the composite element (composite_tets) */
     double mass_scaling_step; /* s, lfem_world_def.mass_scaling_step (0: no mass scaling);
                                  the incline only */
 } case_config;

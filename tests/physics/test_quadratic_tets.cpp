@@ -112,3 +112,16 @@ TEST(QuadraticTets, GmshFileBoundaryFacesAndVtkFrame) {
     std::remove(vtu.c_str());
     std::remove(pvd.c_str());
 }
+
+// The composite element's flag is 0 or 1; anything else is refused with its name, and nothing is
+// created.
+TEST(QuadraticTets, CompositeFlagIsChecked) {
+    World w;
+    lfem_body_def d = lfem_body_def_default();
+    EXPECT_EQ(d.composite_tets, 0);
+    d.composite_tets = 2;
+    lfem_body b{};
+    EXPECT_EQ(lfem_body_create(w, &d, &b), LFEM_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(lfem_last_error()).find("composite_tets"), std::string::npos) << lfem_last_error();
+    EXPECT_EQ(stats(w).body_count, 0u);
+}

@@ -141,7 +141,7 @@ TEST(TwoBarImpact, PoissonRatioPointThreeStaysWithinTwoAndAHalfPercent) {
 // mid-edge nodes and lose 2.3 % of the impulse on one cell across however fine along (README,
 // known issues). The composite element loads them as it lumps them, so the bars' impulse
 // converges as with 4-node tets: on 20 and 40 cells along it lies within 25 % of the error of
-// 4-node tets with the same nodes (40 and 80 cells; the error is set by the node spacing, the
+// 4-node tets of the same node spacing (40 and 80 cells; the error is set by that spacing, the
 // force's rounding by mesh dispersion and the O(h) impact loss, which the two elements share
 // only to leading order), and it shrinks with refinement at least as O(h) allows (to below
 // 0.65 of the coarser's: 0.5 for O(h), with room for the leading order's share).

@@ -265,13 +265,17 @@ class Physics(unittest.TestCase):
             self.assertIn("self_contact", str(caught.exception))
             world.create_body(lfem.BodyDef(self_contact=1))
 
-    def test_composite_tets_flag_is_checked(self):
+    def test_composite_tets_is_a_flag(self):
         with lfem.World() as world:
             self.assertEqual(lfem.BodyDef().composite_tets, 0)
-            with self.assertRaises(lfem.InvalidArgumentError) as caught:
-                world.create_body(lfem.BodyDef(composite_tets=2))
+            with self.assertRaises(TypeError) as caught:
+                lfem.BodyDef(composite_tets=2)
             self.assertIn("composite_tets", str(caught.exception))
-            world.create_body(lfem.BodyDef(composite_tets=1))
+            mesh = lfem.Mesh.box((0.1, 0.1, 0.1), (1, 1, 1))
+            mesh.make_quadratic()
+            body = world.create_body(lfem.BodyDef(composite_tets=True))
+            world.add_mesh(body, mesh)
+            self.assertEqual(world.nodes_per_tet(body), 10)
 
     def test_falling_block_follows_free_fall(self):
         # Uniform gravity on an unstressed body at rest accelerates every node by exactly g: each
