@@ -105,8 +105,8 @@ constexpr QuadraticGradients composite_gradients() {
         composite_detail::add_sub_tet(v, 1.0, t.g);
     }
     // The octahedron along each of its diagonals, which join the midpoints of opposite edges.
-    // Its other four nodes
-    // form the ring around the diagonal, ordered x, y, x', y' with x, x' and y, y' opposite.
+    // Its other four nodes form the ring around the diagonal, ordered x, y, x', y' with x, x'
+    // and y, y' opposite.
     for (int e = 0; e < 3; ++e) {
         const int A = 4 + composite_detail::kDiagonalEdges[e][0], B = 4 + composite_detail::kDiagonalEdges[e][1];
         int others[4] = {}, k = 0;
