@@ -21,7 +21,8 @@ constexpr uint32_t kFaceBlock = 1024;
 // How deep the last step left the pair: a kept overlap or the solver's residual.
 double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; }
 
-// What the narrow phase's blocks read and none of them writes.
+// What the narrow phase's blocks read and none of them writes (but each its own nodes' tracks
+// and pairs' skips).
 struct NarrowInput {
     const std::vector<ContactBody>& bodies;
     const std::vector<ContactRecord>& previous;
@@ -29,7 +30,40 @@ struct NarrowInput {
     bool scan_overlaps;
     double max_offset;  // the deepest overlap being recovered (m)
     bool any_shapes;
+    NodeTrack* node_tracks;
+    PairSkip* pair_skips;
 };
+
+// Skipping faces a node cannot meet yet. A pair turned away because the node's point on the
+// face lies outside the triangle by a barycentric margin sigma stays turned away while the
+// weights cannot have moved by sigma. A weight moves by at most (the point's move + 2.1 times
+// the vertices' move + the tilt of the face times the point's distance from it) / the
+// triangle's smallest height: 1 / height for the point (a weight is its distance from an edge's
+// line over that height); 1 + 2 (0.26 + 0.26) < 2.1 for the vertices (moving them by d moves the
+// weights as moving the point by sum |w| d would, and a point within 0.26 of the triangle has
+// sum |w| below 2.04); a tilt of 2 d / height for the face. The moves are bounded by the
+// odometers: between two sub-steps the point tested moves by at most its path in the first,
+// the move of its step-start position and its path in the second. A pair is skipped only while
+// that bound stays below half of sigma, and the triangle keeps at least half its height: a
+// skipped pair is one the test would have turned away, so the records are bitwise those of
+// testing every pair. Not while new bodies are searched for overlaps (a half-edge deep reach).
+bool still_outside(const NarrowInput& in, const PairSkip& skip, double node_odometer, double node_path,
+                   const FaceTrack* face_track, const FaceStep* face, double far_reach) {
+    if (!(skip.margin > 0.0) || in.scan_overlaps) return false;
+    const double dp = node_odometer - skip.node_mark + node_path;
+    const double df = face_track ? face_track->odometer - skip.face_mark + face->motion : 0.0;
+    const double h = skip.height - 2.0 * df;
+    if (!(h > 0.5 * skip.height)) return false;
+    return (dp + (2.1 + 2.0 * far_reach / h) * df) / h < 0.5 * skip.margin;
+}
+
+// How far from a face's plane a node may be when it meets the face (its distance bounds the
+// tilt term above): the capture band in front, the depth allowance or an initial overlap's
+// depth behind, and the node's path.
+double far_reach(const ContactCandidates& c, double l, bool deep, double node_path) {
+    const double behind = std::max(1.25 * c.offset_allowed + kResidualDepth * l, deep ? kInitialDepth * l : 0.0);
+    return std::max(kCaptureBand * l, behind) + 2.0 * node_path;
+}
 
 // The outward normal of node p of body a at x*: the sum of the area-weighted normals of the
 // triangles around it (in triangle order), normalised.
@@ -73,22 +107,37 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     const uint32_t ai = c.body[g], p = c.node[g];
     const ContactBody& a = in.bodies[ai];
     const Aabb box = path_box(a, p);
+    NodeTrack& track = in.node_tracks[g];
+    const Vec3 start = position(a.x_start, p);
+    track.odometer += (start - track.last_start).norm();
+    track.last_start = start;
+    const double node_path = (position(a.x, p) - start).norm();
     block.touched.clear();
     block.best.clear();
     block.deep.clear();
     block.last.clear();
-    double allowance = 0.0, grow = 0.0;
+    double allowance = 0.0, grow = 0.0, reach_far = 0.0;
     bool first_touch = false;
     uint32_t grow_body = UINT32_MAX;
     const Vec3* normal = nullptr;
     for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
         const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
         const ContactBody& b = in.bodies[bi];
-        if (bi != grow_body)
-            grow = triangle_growth(contact_length(a, b), in.max_offset, catches_deep_nodes(a, b, in.scan_overlaps)),
+        if (bi != grow_body) {
+            const double l = contact_length(a, b);
+            const bool deep = catches_deep_nodes(a, b, in.scan_overlaps);
+            grow = triangle_growth(l, in.max_offset, deep);
+            reach_far = far_reach(c, l, deep, node_path);
             grow_body = bi;
+        }
         // A static triangle's box is the one the search kept; a moving one's is this sub-step's.
         const FaceStep* face = b.moves ? &in.s.faces[c.face_index[k]] : nullptr;
+        const FaceTrack* face_track = b.moves ? &in.s.face_tracks[c.face_index[k]] : nullptr;
+        PairSkip& skip = in.pair_skips[k];
+        if (skip.margin > 0.0) {
+            if (still_outside(in, skip, track.odometer, node_path, face_track, face, reach_far)) continue;
+            skip.margin = 0.0;
+        }
         Aabb reach = face ? face->box : c.static_box[k];
         for (int d = 0; d < 3; ++d) reach.lo[d] -= grow, reach.hi[d] += grow;
         if (!overlaps(reach, box)) continue;
@@ -103,8 +152,13 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             first_touch = catches_deep_nodes(a, b, in.scan_overlaps) && last == nullptr;
         }
         if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
-        test_node_triangle(a, p, *normal, b, t, face, allowance, block.best.back(),
-                           first_touch ? &block.deep.back() : nullptr);
+        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, block.best.back(),
+                                               first_touch ? &block.deep.back() : nullptr);
+        if (out.margin > 0.0 && out.height > 0.0) {
+            skip.margin = out.margin, skip.height = out.height;
+            skip.node_mark = track.odometer - node_path;
+            skip.face_mark = face_track ? face_track->odometer - face->motion : 0.0;
+        }
     }
     // An overlap met for the first time: accepted when nothing of the other body lies between
     // the node and the face (then the node is inside, and this face is its nearest way out);
@@ -198,6 +252,38 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block,
     block.records.swap(block.merged);
 }
 
+// A moving face's odometer: the largest move of its vertices' step-start positions since the
+// last sub-step.
+void advance_face_track(const ContactBody& b, uint32_t t, FaceTrack& track) {
+    double most = 0.0;
+    for (int v = 0; v < 3; ++v) {
+        const double* x = b.x_start + 3 * std::size_t(b.triangles[3 * t + v]);
+        const Vec3 d(x[0] - track.last_start[3 * v], x[1] - track.last_start[3 * v + 1], x[2] - track.last_start[3 * v + 2]);
+        most = std::max(most, d.squaredNorm());
+        for (int k = 0; k < 3; ++k) track.last_start[3 * v + k] = x[k];
+    }
+    track.odometer += std::sqrt(most);
+}
+
+// After a search: every node and face starts its odometer at its step-start position, and every
+// pair is tested.
+void start_tracks(const std::vector<ContactBody>& bodies, DetectionScratch& s) {
+    const ContactCandidates& c = s.candidates;
+    s.node_tracks.resize(c.body.size());
+    for (std::size_t g = 0; g < c.body.size(); ++g)
+        s.node_tracks[g] = NodeTrack{position(bodies[c.body[g]].x_start, c.node[g]), 0.0};
+    s.face_tracks.resize(c.faces.size());
+    for (std::size_t k = 0; k < c.faces.size(); ++k) {
+        const ContactBody& b = bodies[uint32_t(c.faces[k] >> 32)];
+        FaceTrack& f = s.face_tracks[k];
+        for (int v = 0; v < 3; ++v)
+            for (int d = 0; d < 3; ++d) f.last_start[3 * v + d] = b.x_start[3 * std::size_t(b.triangles[3 * uint32_t(c.faces[k]) + v]) + d];
+        f.odometer = 0.0;
+    }
+    s.pair_skips.assign(c.triangles.size(), PairSkip{});
+    s.tracks_ready = true;
+}
+
 // The blocks' records joined in block order, which is the list's order; their counts added
 // to the profile in the same order.
 FallenIn join_blocks(const DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out, lfem_profile& profile) {
@@ -229,6 +315,7 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
         if (!candidates_hold(bodies, max_offset, scan_overlaps, c, pool)) {
             search_candidates(bodies, max_offset, scan_overlaps, c, pool);
             profile.candidate_searches += 1;
+            s.tracks_ready = false;  // new candidates: the tracks start again
         }
     }
     const uint32_t nodes = uint32_t(c.body.size());
@@ -236,7 +323,9 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
     const bool any_shapes = !c.shapes.empty();
     // Narrow phase: every candidate node against its candidate triangles, in blocks on the
     // pool, each block writing only its own records and scratch.
-    const NarrowInput in{bodies, previous, s, scan_overlaps, max_offset, any_shapes};
+    if (!s.tracks_ready) start_tracks(bodies, s);
+    const NarrowInput in{bodies, previous, s, scan_overlaps, max_offset, any_shapes, s.node_tracks.data(),
+                         s.pair_skips.data()};
     const uint32_t blocks = (nodes + kSlaveBlock - 1) / kSlaveBlock;
     if (s.blocks.size() < blocks) s.blocks.resize(blocks);  // never shrinks: keeps capacity
     s.slave_normals.resize(nodes);
@@ -249,8 +338,11 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
         const uint32_t faces = uint32_t(c.faces.size());
         s.faces.resize(faces);
         parallel_for(pool, (faces + kFaceBlock - 1) / kFaceBlock, [&](uint32_t b) {
-            for (uint32_t k = b * kFaceBlock; k < std::min(faces, (b + 1) * kFaceBlock); ++k)
-                s.faces[k] = face_step(bodies[uint32_t(c.faces[k] >> 32)], uint32_t(c.faces[k]));
+            for (uint32_t k = b * kFaceBlock; k < std::min(faces, (b + 1) * kFaceBlock); ++k) {
+                const ContactBody& body = bodies[uint32_t(c.faces[k] >> 32)];
+                s.faces[k] = face_step(body, uint32_t(c.faces[k]));
+                advance_face_track(body, uint32_t(c.faces[k]), s.face_tracks[k]);
+            }
         });
         parallel_for(pool, blocks, [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], normals, ready); });
         if (!any_shapes) return join_blocks(s, blocks, out, profile);

@@ -45,8 +45,32 @@ struct DetectionBlock {
     FallenIn fallen;                          // of the block's records
 };
 
+// Skipping faces a node cannot meet yet (detect_node_triangle.cpp): how far each candidate node
+// and each moving candidate face has moved since the search (its odometer: the sum of the
+// moves of its step-start positions, a face's the largest of its vertices'), and for each
+// candidate pair turned away as lying outside the face, by how much and since when.
+struct NodeTrack {
+    Vec3 last_start = Vec3::Zero();  // x^n at the last sub-step
+    double odometer = 0;             // m
+};
+struct FaceTrack {
+    double last_start[9] = {};  // its vertices' x^n at the last sub-step
+    double odometer = 0;        // m
+};
+struct PairSkip {
+    double margin = 0;     // barycentric weight short of the face's edge tolerance; 0: test
+    double height = 0;     // smallest height of the triangle tested (m)
+    double node_mark = 0;  // the node's odometer then, less its move in that sub-step
+    double face_mark = 0;  // the face's, alike
+};
+
 struct DetectionScratch {
     ContactCandidates candidates;
+    std::vector<NodeTrack> node_tracks;  // per candidate node
+    std::vector<FaceTrack> face_tracks;  // per moving candidate face
+    std::vector<PairSkip> pair_skips;    // per candidate pair (candidates.triangles)
+    bool tracks_ready = false;           // the three above belong to the candidates (false
+                                         // while they are being made: an allocation may fail)
     std::vector<Vec3> slave_normals;    // per candidate node: outward unit normal at x*
     std::vector<uint8_t> normal_ready;  // per candidate node: its normal is computed
     std::vector<FaceStep> faces;        // per moving candidate face (candidates.faces): this sub-step's

@@ -27,37 +27,46 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, dou
 
 }  // namespace
 
+double smallest_height(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double longest = std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
+    return longest > 0.0 ? (b - a).cross(c - a).norm() / longest : 0.0;
+}
+
 FaceStep face_step(const ContactBody& b, uint32_t t) {
     FaceStep f;
     const uint32_t* tri = &b.triangles[3 * t];
     f.box = triangle_step_box(b, t, 0.0);
     const Vec3 pa = position(b.x, tri[0]), qa = position(b.x_start, tri[0]);
-    const Vec3 n_end = (position(b.x, tri[1]) - pa).cross(position(b.x, tri[2]) - pa);
+    const Vec3 pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
+    const Vec3 n_end = (pb - pa).cross(pc - pa);
     const Vec3 n_start = (position(b.x_start, tri[1]) - qa).cross(position(b.x_start, tri[2]) - qa);
     const double area2 = n_end.norm(), area2_start = n_start.norm();
     f.valid = area2 > 0.0 && area2_start > 0.0;
     if (f.valid) f.normal_end = n_end / area2, f.normal_start = n_start / area2_start;
+    double most = 0.0;
+    for (int v = 0; v < 3; ++v) most = std::max(most, (position(b.x, tri[v]) - position(b.x_start, tri[v])).squaredNorm());
+    f.motion = std::sqrt(most);
     return f;
 }
 
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
-void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
-                        uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
-                        NodeCandidate* deep) {
+Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+                           uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
+                           NodeCandidate* deep) {
     const uint32_t* tri = &b.triangles[3 * t];
     const Vec3 pa = position(b.x, tri[0]), pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
     Vec3 n;
     if (b.face_normals) {  // a static body's, made once
         n = position(b.face_normals, t);
-        if (n.squaredNorm() == 0.0) return;  // a collapsed face has no normal
+        if (n.squaredNorm() == 0.0) return {};  // a collapsed face has no normal
     } else if (face) {  // a moving body's, made once per sub-step
-        if (!face->valid) return;
+        if (!face->valid) return {};
         n = face->normal_end;
     } else {  // a sleeping body: static while asleep, its face normals not made
         const Vec3 n_end = (pb - pa).cross(pc - pa);
         const double area2 = n_end.norm();
-        if (!(area2 > 0.0)) return;
+        if (!(area2 > 0.0)) return {};
         n = n_end / area2;
     }
     // Surfaces in contact face each other. A face whose normal points the same way as the
@@ -70,11 +79,11 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     const Vec3 x_end = position(a.x, p), x_start = position(a.x_start, p);
     const double gap = n.dot(x_end - pa);
     const double l = contact_length(a, b);
-    if (gap > kCaptureBand * l) return;
-    if (gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return;
+    if (gap > kCaptureBand * l) return {};
+    if (gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return {};
     // A body's own face is met only by a part of its surface that comes at it from outside:
     // facing it, at any depth (a node behind a face of its own body is inside the body).
-    if (&a == &b && !(n.dot(node_normal) < 0.0)) return;
+    if (&a == &b && !(n.dot(node_normal) < 0.0)) return {};
     // A static face is where it was at the start (the same bits), so its start normal is n.
     const bool still = !b.moves;
     const Vec3 qa = still ? pa : position(b.x_start, tri[0]);
@@ -82,11 +91,11 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     NodeCandidate* slot = &best;
     if (start_gap < -depth_allowance) {
         // Deeper than the pair was left: only a possible initial overlap (checked later).
-        if (start_gap < -kInitialDepth * l || !deep) return;
+        if (start_gap < -kInitialDepth * l || !deep) return {};
         slot = deep;
     }
     NodeCandidate& c = *slot;
-    if (c.found && gap <= c.gap) return;  // keep the face penetrated least
+    if (c.found && gap <= c.gap) return {};  // keep the face penetrated least
     double w[3];
     if (start_gap >= 0.0 && gap < 0.0) {
         // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
@@ -98,7 +107,7 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
             barycentric(x_start, pa, pb, pc, w_start);
             barycentric(x_end, pa, pb, pc, w_end);
             for (int k = 0; k < 3; ++k)
-                if (w_start[k] < -kEdgeTolerance - 1e-9 && w_end[k] < -kEdgeTolerance - 1e-9) return;
+                if (w_start[k] < -kEdgeTolerance - 1e-9 && w_end[k] < -kEdgeTolerance - 1e-9) return {};
         }
         const Vec3 qb = still ? pb : position(b.x_start, tri[1]), qc = still ? pc : position(b.x_start, tri[2]);
         const double s = start_gap / (start_gap - gap);
@@ -107,8 +116,17 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     } else {
         barycentric(x_end, pa, pb, pc, w);  // at or behind the face: its projection
     }
-    for (double wi : w)
-        if (!(wi >= -kEdgeTolerance)) return;
+    const double lowest = std::min({w[0], w[1], w[2]});
+    if (!(lowest >= -kEdgeTolerance)) {
+        // Outside the triangle that was tested (the crossing's, moved part way, or the end's):
+        // its smallest height, the end's less what the vertices moved on the way.
+        Outside out;
+        const double margin = -kEdgeTolerance - lowest;
+        if (!(margin > 0.0)) return out;  // a NaN
+        out.height = std::max(0.0, smallest_height(pa, pb, pc) - 2.0 * (face ? face->motion : 0.0));
+        out.margin = std::min(margin, 0.25);
+        return out;
+    }
     c.found = true;
     c.triangle = t;
     c.shape = UINT32_MAX;
@@ -119,6 +137,7 @@ void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_norma
     double sum = 0.0;
     for (int k = 0; k < 3; ++k) sum += (c.w[k] = std::max(0.0, w[k]));
     for (int k = 0; k < 3; ++k) c.w[k] /= sum;
+    return {};
 }
 
 // Test node p of `a` against rigid shape j of `b`, same rules as for a triangle: within the

@@ -35,13 +35,18 @@ struct ShapeQueryCounts {
 
 // A face of a moving body over one sub-step, made once for every node that may meet it: its
 // box over the step (not grown) and its unit normals at x* and at x^n, as the node test would
-// compute them itself. A face collapsed at either end (zero area) is not `valid`: no node
-// meets it.
+// compute them itself, and how far its vertices move in the sub-step (what the narrow phase's
+// skipping of faces needs, detect_node_triangle.cpp). A face collapsed at either end (zero
+// area) is not `valid`: no node meets it.
 struct FaceStep {
     Aabb box;
     Vec3 normal_end = Vec3::Zero(), normal_start = Vec3::Zero();
+    double motion = 0;  // the largest |x* - x^n| of its vertices (m)
     bool valid = false;
 };
+
+// The smallest height of triangle abc: twice its area over its longest edge.
+double smallest_height(const Vec3& a, const Vec3& b, const Vec3& c);
 FaceStep face_step(const ContactBody& b, uint32_t t);
 
 // Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in `best`
@@ -50,9 +55,19 @@ FaceStep face_step(const ContactBody& b, uint32_t t);
 // *deep (when given) for the caller to check. `face` is face_step(b, t), required when b moves;
 // null for a static body (its face normals made once) and for a sleeping one (static while
 // asleep: its normals are made here).
-void test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
-                        uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
-                        NodeCandidate* deep);
+//
+// Returns, when the node was turned away because its point on the face lies outside the
+// triangle (a barycentric weight below -kEdgeTolerance), by how much: the margin sigma of the
+// lowest weight below -kEdgeTolerance (at most 0.25), in `outside`, and the smallest height of
+// the triangle that was tested, in `height`; both 0 when it was turned away for any other reason
+// or kept. A weight moves by at most (point's move + 2.1 times the vertices' move) / height, so
+// until they have moved that much between them the node cannot meet this face.
+struct Outside {
+    double margin = 0, height = 0;
+};
+Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+                           uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
+                           NodeCandidate* deep);
 
 // Node p of `a` against rigid shape j of `b`, by the same rules: within the capture band at the
 // end of the step, no deeper at its start than the pair was left, facing the node's surface.

@@ -3,7 +3,10 @@
 // bitwise those of a search at every step. A far-away marker body that receives a shape before
 // every call changes the world's geometry, which throws the candidates away: that run searches
 // at every call, the other only when a budget of motion runs out, and both must agree bit for
-// bit (the marker's shapes touch nothing: they lie 100 m away).
+// bit (the marker's shapes touch nothing: they lie 100 m away). Between searches the narrow
+// phase also skips the faces a node lies clear of (src/contact/detect_node_triangle.cpp); a
+// search starts every pair afresh, so with calls of one sub-step each the searching run tests
+// every pair at every sub-step, and the skipping run must agree with it bit for bit.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -14,11 +17,13 @@ using namespace lfem_test;
 
 namespace {
 
-std::vector<unsigned char> run_scene(bool search_every_call, uint32_t* contacts_seen, lfem_profile* profile) {
+// The scene on a static floor of floor_cells^2 cells, `calls` calls of dt.
+std::vector<unsigned char> run_scene(bool search_every_call, uint32_t* contacts_seen, lfem_profile* profile,
+                                     uint32_t floor_cells = 6, int calls = 50, double dt = 0.004) {
     lfem_world_def wd = lfem_world_def_default();
     World w(wd);
     Mesh floor_mesh, a, b, c;
-    make_box_mesh(floor_mesh, 0.8, 0.8, 0.1, 6, 6, 1, -0.4, -0.4, -0.1);  // coarse static floor
+    make_box_mesh(floor_mesh, 0.8, 0.8, 0.1, floor_cells, floor_cells, 1, -0.4, -0.4, -0.1);
     lfem_body_def f = lfem_body_def_default();
     f.type = LFEM_BODY_STATIC;
     std::vector<lfem_body> bodies{add_body(w, f, floor_mesh)};
@@ -41,7 +46,7 @@ std::vector<unsigned char> run_scene(bool search_every_call, uint32_t* contacts_
     make_box_mesh(c, 0.05, 0.05, 0.05, 1, 1, 1, -0.18, -0.03, 0.15);  // lands on the first block
     bodies.push_back(add_body(w, d, c));
     *contacts_seen = 0;
-    for (int call = 0; call < 50; ++call) {
+    for (int call = 0; call < calls; ++call) {
         if (search_every_call) {
             lfem_shape_def s = lfem_shape_def_default();
             s.type = LFEM_SHAPE_SPHERE;
@@ -49,7 +54,7 @@ std::vector<unsigned char> run_scene(bool search_every_call, uint32_t* contacts_
             s.center[0] = 100.0 + call;
             EXPECT_EQ(lfem_body_add_shape(w, marker, &s, nullptr), LFEM_OK) << lfem_last_error();
         }
-        EXPECT_EQ(lfem_world_step(w, 0.004), LFEM_OK) << lfem_last_error();
+        EXPECT_EQ(lfem_world_step(w, dt), LFEM_OK) << lfem_last_error();
         *contacts_seen = std::max(*contacts_seen, stats(w).contact_count);
     }
     EXPECT_EQ(lfem_world_get_profile(w, profile), LFEM_OK);
@@ -83,4 +88,27 @@ TEST(ContactCandidates, CachedCandidatesGiveBitwiseTheContactsOfASearchAtEveryCa
     EXPECT_EQ(seen_cached, seen_searched);
     ASSERT_EQ(cached.size(), searched.size());
     EXPECT_EQ(0, std::memcmp(cached.data(), searched.data(), cached.size()));
+}
+
+// On a fine floor (3.3 cm cells, as fine as the blocks' own) a resting or sliding node has
+// several candidate faces and lies clear of most of them, which are skipped; calls of one
+// sub-step each (2.5e-4 s, below the stable step), so that the searching run tests every pair at
+// every sub-step. The blocks slide over several floor cells (0.6 m/s for 0.1 s), so skips run out
+// and faces are tested again.
+TEST(ContactCandidates, SkippedFacesGiveBitwiseTheContactsOfTestingEveryFace) {
+    uint32_t seen_skipping = 0, seen_testing = 0;
+    lfem_profile skipping_profile{}, testing_profile{};
+    const std::vector<unsigned char> skipping = run_scene(false, &seen_skipping, &skipping_profile, 24, 400, 2.5e-4);
+    const std::vector<unsigned char> testing = run_scene(true, &seen_testing, &testing_profile, 24, 400, 2.5e-4);
+    EXPECT_GT(seen_skipping, 20u);
+    EXPECT_EQ(skipping_profile.substeps, 400u);  // one sub-step a call
+    EXPECT_EQ(testing_profile.candidate_searches, 400u);
+    EXPECT_LT(skipping_profile.candidate_searches, 100u);
+    std::printf("fine floor: candidate searches %llu for %llu sub-steps (testing every pair: %llu)\n",
+                (unsigned long long)skipping_profile.candidate_searches,
+                (unsigned long long)skipping_profile.substeps,
+                (unsigned long long)testing_profile.candidate_searches);
+    EXPECT_EQ(seen_skipping, seen_testing);
+    ASSERT_EQ(skipping.size(), testing.size());
+    EXPECT_EQ(0, std::memcmp(skipping.data(), testing.data(), skipping.size()));
 }
