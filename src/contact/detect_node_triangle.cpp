@@ -47,9 +47,10 @@ struct NarrowInput {
 // that bound stays below half of sigma, and the triangle keeps at least half its height: a
 // skipped pair is one the test would have turned away, so the records are bitwise those of
 // testing every pair. Not while new bodies are searched for overlaps (a half-edge deep reach).
-bool still_outside(const NarrowInput& in, const PairSkip& skip, double node_odometer, double node_path,
+// skip.margin > 0: the pair was turned away as lying outside.
+bool still_outside(const PairSkip& skip, bool scan_overlaps, double node_odometer, double node_path,
                    const FaceTrack* face_track, const FaceStep* face, double far_reach) {
-    if (!(skip.margin > 0.0) || in.scan_overlaps) return false;
+    if (scan_overlaps) return false;
     const double dp = node_odometer - skip.node_mark + node_path;
     const double df = face_track ? face_track->odometer - skip.face_mark + face->motion : 0.0;
     const double h = skip.height - 2.0 * df;
@@ -135,7 +136,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         const FaceTrack* face_track = b.moves ? &in.s.face_tracks[c.face_index[k]] : nullptr;
         PairSkip& skip = in.pair_skips[k];
         if (skip.margin > 0.0) {
-            if (still_outside(in, skip, track.odometer, node_path, face_track, face, reach_far)) continue;
+            if (still_outside(skip, in.scan_overlaps, track.odometer, node_path, face_track, face, reach_far)) continue;
             skip.margin = 0.0;
         }
         Aabb reach = face ? face->box : c.static_box[k];
@@ -274,11 +275,8 @@ void start_tracks(const std::vector<ContactBody>& bodies, DetectionScratch& s) {
         s.node_tracks[g] = NodeTrack{position(bodies[c.body[g]].x_start, c.node[g]), 0.0};
     s.face_tracks.resize(c.faces.size());
     for (std::size_t k = 0; k < c.faces.size(); ++k) {
-        const ContactBody& b = bodies[uint32_t(c.faces[k] >> 32)];
-        FaceTrack& f = s.face_tracks[k];
-        for (int v = 0; v < 3; ++v)
-            for (int d = 0; d < 3; ++d) f.last_start[3 * v + d] = b.x_start[3 * std::size_t(b.triangles[3 * uint32_t(c.faces[k]) + v]) + d];
-        f.odometer = 0.0;
+        advance_face_track(bodies[uint32_t(c.faces[k] >> 32)], uint32_t(c.faces[k]), s.face_tracks[k]);
+        s.face_tracks[k].odometer = 0.0;  // from here
     }
     s.pair_skips.assign(c.triangles.size(), PairSkip{});
     s.tracks_ready = true;

@@ -60,8 +60,8 @@ FaceStep face_step(const ContactBody& b, uint32_t t);
 // triangle (a barycentric weight below -kEdgeTolerance), by how much: the margin sigma of the
 // lowest weight below -kEdgeTolerance (at most 0.25), in `outside`, and the smallest height of
 // the triangle that was tested, in `height`; both 0 when it was turned away for any other reason
-// or kept. A weight moves by at most (point's move + 2.1 times the vertices' move) / height, so
-// until they have moved that much between them the node cannot meet this face.
+// or kept. How far node and face must then move before the node could meet the face:
+// still_outside in detect_node_triangle.cpp.
 struct Outside {
     double margin = 0, height = 0;
 };

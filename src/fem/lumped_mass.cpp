@@ -18,20 +18,25 @@ void add_reference_tets(const double* X, const uint32_t* tets, uint32_t first, u
 
 void add_quadratic_reference_tets(const double* X, const uint32_t* tets, uint32_t first, uint32_t end,
                                   bool composite, double* Jq_inv, double* qp_volume, double* volume) {
-    const QuadraticGradients& gradients = element_gradients(composite);
     for (uint32_t e = first; e < end; ++e) {
         const uint32_t* t = &tets[kQuadraticTetNodes * std::size_t(e)];
         const double* p[kQuadraticTetNodes];
         for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) p[a] = X + 3 * std::size_t(t[a]);
         double V = 0.0;
         for (int q = 0; q < kQuadraturePoints; ++q) {
-            double J[9], J_used[9];
+            double J[9];
             natural_jacobian(p, kQuadraticGradients.g[q], J);
-            natural_jacobian(p, gradients.g[q], J_used);
+            const Mat3 Jm = load_row_major(J);
             const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
             Eigen::Map<Mat3> inverse(Jq_inv + 9 * k);
-            inverse = load_row_major(J_used).inverse();
-            qp_volume[k] = kQuadratureWeight * load_row_major(J).determinant();
+            if (composite) {
+                double Jc[9];
+                natural_jacobian(p, kCompositeGradients.g[q], Jc);
+                inverse = load_row_major(Jc).inverse();
+            } else {
+                inverse = Jm.inverse();
+            }
+            qp_volume[k] = kQuadratureWeight * Jm.determinant();
             V += qp_volume[k];
         }
         volume[e] = V;

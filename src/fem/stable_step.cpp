@@ -26,6 +26,7 @@ struct ElementStiffness {
 ElementStiffness element_stiffness(const ElementMesh& ref, const Lame& lame, uint32_t e) {
     ElementStiffness s;
     const bool quadratic = ref.nodes_per_tet == kQuadraticTetNodes;
+    const QuadraticGradients& table = element_gradients(ref.composite);
     s.nodes = quadratic ? int(kQuadraticTetNodes) : 4;
     for (int q = 0; q < (quadratic ? kQuadraturePoints : 1); ++q) {
         Vec3 g[kQuadraticTetNodes];
@@ -33,7 +34,6 @@ ElementStiffness element_stiffness(const ElementMesh& ref, const Lame& lame, uin
         if (quadratic) {
             const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
             const Eigen::Map<const Mat3> Jq_inv(&ref.Dm_inv[9 * k]);
-            const QuadraticGradients& table = element_gradients(ref.composite);
             for (uint32_t a = 0; a < kQuadraticTetNodes; ++a) g[a] = Jq_inv.transpose() * Vec3(table.g[q][a]);
             V = ref.qp_volume[k];
         } else {

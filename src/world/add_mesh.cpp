@@ -64,13 +64,13 @@ void append_boundary(BodyReference& ref, const uint32_t* new_tets, uint32_t tet_
 
 // The reference data of the tets appended after the first old_tets (ref.tets holds them
 // already; the per-tet arrays grow to match).
-void append_reference_tets(BodyReference& ref, uint32_t old_tets) {
+void append_reference_tets(BodyReference& ref, uint32_t old_tets, bool composite) {
     const uint32_t total = uint32_t(ref.tets.size() / ref.nodes_per_tet);
     if (ref.nodes_per_tet == kQuadraticTetNodes) {
         ref.Dm_inv.resize(9 * std::size_t(kQuadraturePoints) * total);
         ref.qp_volume.resize(std::size_t(kQuadraturePoints) * total);
         ref.volume.resize(total);
-        add_quadratic_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, ref.composite, ref.Dm_inv.data(),
+        add_quadratic_reference_tets(ref.X.data(), ref.tets.data(), old_tets, total, composite, ref.Dm_inv.data(),
                                      ref.qp_volume.data(), ref.volume.data());
     } else {
         ref.Dm_inv.resize(9 * std::size_t(total));
@@ -87,7 +87,6 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
                                const lfem_world_def& def, ThreadPool* pool) {
     BodyReference ref = body.ref;
     ref.nodes_per_tet = nodes_per_tet;
-    ref.composite = body.def.composite_tets != 0;
     const uint32_t old_nodes = ref.node_count(), old_tets = ref.tet_count();
     {
         LocalityOrder order = order_for_locality(positions, node_count, tets, tet_count, nodes_per_tet);
@@ -98,7 +97,7 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
     }
     ref.mass.resize(ref.X.size() / 3, 0.0);
     append_boundary(ref, &ref.tets[std::size_t(nodes_per_tet) * old_tets], tet_count);
-    append_reference_tets(ref, old_tets);
+    append_reference_tets(ref, old_tets, body.def.composite_tets != 0);
     add_lumped_mass(ref.tets.data(), ref.volume.data(), old_tets, old_tets + tet_count, body.def.density,
                     ref.mass.data(), nodes_per_tet);
     const uint32_t n = ref.node_count();
@@ -196,7 +195,7 @@ void start_motion(Body& candidate, BodyState& state, ThreadPool* pool) {
 }  // namespace
 
 void derive_reference_data(const Body& body, BodyReference& ref) {
-    ref.composite = body.def.composite_tets != 0;  // a checkpoint's body: from its def
+    ref.composite = body.def.composite_tets != 0;
     ref.colouring = colour_tets(ref);
     compute_node_triangles(ref.node_count(), ref.surface);
     ref.every_node.clear();

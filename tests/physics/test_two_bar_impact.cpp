@@ -155,6 +155,9 @@ TEST(TwoBarImpact, CompositeTetsCarryThePlaneWaveAsLinearTetsDo) {
             EXPECT_LT(error, 0.65 * previous);
         }
         previous = error;
+        // Against the 1-D solution itself: the 2 % the 4-node tets are held to at 40 cells along
+        // (mesh dispersion), which the default 10-node tets, at -2.4 % on any mesh, miss.
+        EXPECT_NEAR(composite.impulse_forces, 12.375, 0.02 * 12.375);
         EXPECT_NEAR(composite.plateau, 125.08e3, 0.01 * 125.08e3);  // as for 4-node tets
         EXPECT_NEAR(composite.impulse_forces, composite.impulse_momentum, 1e-9 * 12.375);
         EXPECT_LT(composite.momentum_drift, 1e-10);

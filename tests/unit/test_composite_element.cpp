@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "common/math.h"
 #include "fem/composite_tet.h"
 #include "fem/stable_step.h"
 #include "quadratic_box.h"
@@ -73,6 +74,49 @@ TEST(CompositeElement, TableReproducesLinearFields) {
                 EXPECT_NEAR(grad, r == c ? 1.0 : 0.0, 1e-14) << "q " << q << " r " << r << " c " << c;
             }
         }
+}
+
+// What the element is for: a linear stress field loads the nodes in the shares of their lumped
+// masses. With sigma_xx = x (the other components 0), the virtual work on node a's shape
+// function, sum over its tets and their points of V_q sigma(x_q) (J_q^-T bhat_qa)_x, is for an
+// interior node -int N_a d(sigma)/dx = -m_a / rho: the 4-point rule integrates the linear stress
+// times the linear projected gradient exactly, and a linear field is its own projection, so
+// N_a is the sub-tets' piecewise-linear function whose integral the lumped mass is. Round-off
+// only: 1e-12 of the share. The quadratic shape functions give -V/20 at corners and V/5 at
+// mid-edge nodes instead (QuadraticElement.QuadraticFieldLoadsItsNodesConsistently), far from
+// their masses, which the same sum shows.
+TEST(CompositeElement, LinearStressLoadsTheNodesAsTheyAreLumped) {
+    for (bool composite : {true, false}) {
+        const QuadraticBox box(3, 2, 4, 64, composite);
+        const QuadraticGradients& table = element_gradients(composite);
+        std::vector<double> load(box.nodes(), 0.0);
+        for (uint32_t e = 0; e < box.mesh.tet_count(); ++e) {
+            const uint32_t* t = &box.mesh.tets[10 * std::size_t(e)];
+            for (int q = 0; q < kQuadraturePoints; ++q) {
+                const std::size_t k = kQuadraturePoints * std::size_t(e) + q;
+                const Eigen::Map<const Mat3> Jinv(&box.Jq_inv[9 * k]);
+                double x = 0.0;  // the point's x: straight sides, the corners' barycentric mean
+                for (int i = 0; i < 4; ++i) x += (i == q ? kQuadratureA : kQuadratureB) * box.X(t[i])[0];
+                for (int a = 0; a < 10; ++a)
+                    load[t[a]] += box.qp_volume[k] * x * (Jinv.transpose() * Vec3(table.g[q][a]))[0];
+            }
+        }
+        int interior = 0, off = 0;
+        for (uint32_t i = 0; i < box.nodes(); ++i) {
+            if (box.boundary[i]) continue;
+            const double share = box.mass[i] / kRho;
+            ++interior;
+            if (composite) {
+                EXPECT_NEAR(load[i], -share, 1e-12 * share) << "node " << i;
+            } else {
+                off += std::fabs(load[i] + share) > 0.1 * share;
+            }
+        }
+        EXPECT_GT(interior, 10);
+        if (!composite) {
+            EXPECT_GT(off, interior / 2);  // the sum does tell the elements apart
+        }
+    }
 }
 
 }  // namespace
