@@ -68,8 +68,12 @@ void blocked_sum(uint32_t n, ThreadPool* pool, Sum& total, const Term& term) {
     const uint32_t blocks = (n + kNodeBlock - 1) / kNodeBlock;
     std::vector<Sum> partial(blocks);
     parallel_for(pool, blocks, [&](uint32_t b) {
-        Sum& out = partial[b];
+        // A local sum, stored once per block: the compiler keeps it in registers, where the
+        // block's entry of `partial` would be stored and reloaded at every node (the outputs
+        // term writes might alias it). The same additions in the same order.
+        Sum out{};
         for (uint32_t i = b * kNodeBlock, end = std::min(n, (b + 1) * kNodeBlock); i < end; ++i) term(i, out);
+        partial[b] = out;
     });
     for (uint32_t b = 0; b < blocks; ++b) total += partial[b];
 }

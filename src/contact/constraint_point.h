@@ -23,8 +23,10 @@ struct PointRef {
     Vec3 base = Vec3::Zero();    // rigid point: its predicted position
     Vec3 arm = Vec3::Zero();     // rigid point: predicted position minus predicted centre
 
+    // The free node's path is written inline: the solve's sweeps call these a few times per
+    // pair and pass, and a call per point cost more than the arithmetic.
     Vec3 position() const {
-        if (rigid) return base + rigid->dc + rigid->dtheta.cross(arm);
+        if (__builtin_expect(rigid != nullptr, 0)) return rigid_position();
         return Vec3(x[0], x[1], x[2]);
     }
     // Inverse effective mass along unit direction n.
@@ -37,17 +39,21 @@ struct PointRef {
     }
     // Apply the force increment d (N) to this point; returns how far it moved.
     double push(const Vec3& d) {
-        if (rigid) {
-            const Vec3 before = position();
-            rigid->dc += rigid->inv_mass * d;
-            rigid->dtheta += rigid->inv_inertia * arm.cross(d);
-            return (position() - before).cwiseAbs().maxCoeff();
-        }
+        if (__builtin_expect(rigid != nullptr, 0)) return push_rigid(d);
         // An immovable point (static, kinematic or fixed) is not written at all: the contact
         // groups solved side by side may share it (a static floor's nodes).
         if (w == 0.0) return 0.0;
         for (int k = 0; k < 3; ++k) x[k] += w * d[k];
         return w * d.cwiseAbs().maxCoeff();
+    }
+
+private:
+    Vec3 rigid_position() const { return base + rigid->dc + rigid->dtheta.cross(arm); }
+    __attribute__((noinline)) double push_rigid(const Vec3& d) {
+        const Vec3 before = rigid_position();
+        rigid->dc += rigid->inv_mass * d;
+        rigid->dtheta += rigid->inv_inertia * arm.cross(d);
+        return (rigid_position() - before).cwiseAbs().maxCoeff();
     }
 };
 

@@ -23,6 +23,9 @@ void predict_positions(const NodeLoads& loads, double h_last, double h, const do
     start.v.resize(v_half.size());
     start.inv_mass.resize(n);
     const Vec3 c = torque_center ? Vec3(torque_center) : Vec3::Zero();
+    // Divisions hoisted (one per node, not five): this loop and the commit's run over every node
+    // of every sub-step.
+    const double inv_h_mid = 1.0 / h_mid;
     SupportSums sums;
     blocked_sum(n, pool, sums, [&](uint32_t i, SupportSums& out) {
         for (int k = 0; k < 3; ++k) {
@@ -30,15 +33,16 @@ void predict_positions(const NodeLoads& loads, double h_last, double h, const do
             start.v[3 * i + k] = v_half[3 * i + k];
         }
         const double m = loads.mass[i];
-        const double lhs = m / h_mid + 0.5 * alpha * m, rhs = m / h_mid - 0.5 * alpha * m;
+        const double lhs = m * inv_h_mid + 0.5 * alpha * m, rhs = m * inv_h_mid - 0.5 * alpha * m;
+        const double inv_lhs = 1.0 / lhs;
         const NodeMode mode = loads.mode[i];
-        start.inv_mass[i] = mode == NodeMode::free ? h / lhs : 0.0;  // dx = (h/lhs) lambda
+        start.inv_mass[i] = mode == NodeMode::free ? h * inv_lhs : 0.0;  // dx = (h/lhs) lambda
         Vec3 reaction;
         for (int k = 0; k < 3; ++k) {
             const double R = loads.external_force(i, k) + loads.elastic[3 * i + k];
             double v_new;
             switch (mode) {
-                case NodeMode::free: v_new = (rhs * v_half[3 * i + k] + R) / lhs; break;
+                case NodeMode::free: v_new = (rhs * v_half[3 * i + k] + R) * inv_lhs; break;
                 case NodeMode::fixed: v_new = 0.0; break;
                 default: v_new = loads.prescribed_velocity[3 * i + k]; break;
             }
@@ -65,6 +69,7 @@ CommitSums commit_positions(const NodeLoads& loads, double h, const StepStart& s
     const double alpha = loads.damping;
     const bool touched = !contact_force.empty();
     const Vec3 c_old = torque_center ? Vec3(torque_center) : Vec3::Zero();
+    const double inv_h = 1.0 / h;
     // Every entry of contact_force is written in the node loop below (zero where no contact
     // acts), so it is not cleared first: no serial pass over all nodes.
     CommitSums sums;
@@ -72,15 +77,17 @@ CommitSums commit_positions(const NodeLoads& loads, double h, const StepStart& s
     sums.torque = start.support_torque;
     blocked_sum(n, pool, sums, [&](uint32_t i, CommitSums& out) {
         const double m = loads.mass[i];
+        const bool moved = touched && start.inv_mass[i] > 0.0;
+        const double mhat = moved ? 1.0 / start.inv_mass[i] : 0.0;
         Vec3 f_ext, f_contact = Vec3::Zero(), dx;
         for (int k = 0; k < 3; ++k) {
             dx[k] = x[3 * i + k] - start.x[3 * i + k];
             f_ext[k] = loads.external_force(i, k);
-            if (touched && start.inv_mass[i] > 0.0) {
+            if (moved) {
                 // The solve moved the node by (x - x*) = lambda / mhat: its contact force.
                 const double correction = dx[k] - h * v_half[3 * i + k];
-                f_contact[k] = correction / start.inv_mass[i];
-                v_half[3 * i + k] = dx[k] / h;
+                f_contact[k] = correction * mhat;
+                v_half[3 * i + k] = dx[k] * inv_h;
             }
             if (touched) contact_force[3 * i + k] = f_contact[k];
             const double v = v_half[3 * i + k];

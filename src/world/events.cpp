@@ -25,18 +25,28 @@ void World::begin_call_events() {
 void World::tally_contact_pairs(double h) {
     const double h_mid = mid_step(state_.counters.step_size, h);
     substep_serial_ += 1;
+    // The records come ordered by node, so a pair's come in runs: one lookup per run, the
+    // pair's force of this sub-step summed in its tally, its impulse and peak taken after.
     substep_pairs_.clear();
-    for (const ContactRecord& r : state_.contacts)
-        if (r.active()) substep_pairs_.emplace_back(pair_key(r.body_a, r.body_b), r.lambda_n);
-    std::sort(substep_pairs_.begin(), substep_pairs_.end());
-    for (std::size_t i = 0; i < substep_pairs_.size();) {
-        const uint64_t key = substep_pairs_[i].first;
-        double force = 0.0;
-        for (; i < substep_pairs_.size() && substep_pairs_[i].first == key; ++i) force += substep_pairs_[i].second;
-        PairTally& t = pair_tally_[key];
-        t.impulse += force * h_mid;
-        t.max_force = std::max(t.max_force, force);
-        t.last_substep = substep_serial_;
+    uint64_t key = UINT64_MAX;
+    PairTally* t = nullptr;
+    for (const ContactRecord& r : state_.contacts) {
+        if (!r.active()) continue;
+        const uint64_t k = pair_key(r.body_a, r.body_b);
+        if (k != key) {
+            key = k;
+            t = &pair_tally_[key];  // references into the map stay valid as it grows
+            if (t->last_substep != substep_serial_) {
+                t->last_substep = substep_serial_;
+                t->substep_force = 0.0;
+                substep_pairs_.push_back(t);
+            }
+        }
+        t->substep_force += r.lambda_n;
+    }
+    for (PairTally* p : substep_pairs_) {
+        p->impulse += p->substep_force * h_mid;
+        p->max_force = std::max(p->max_force, p->substep_force);
     }
 }
 

@@ -256,11 +256,12 @@ private:
     // attachments, sleep and wake); wake events of calls between steps, for the next call.
     struct PairTally {
         double impulse = 0, max_force = 0;
+        double substep_force = 0;  // N, summed over the sub-step being tallied
         uint64_t last_substep = 0;
     };
     std::vector<StepEvent> events_, broken_, sleep_events_, pending_events_;
     std::unordered_map<uint64_t, PairTally> pair_tally_;
-    std::vector<std::pair<uint64_t, double>> substep_pairs_;
+    std::vector<PairTally*> substep_pairs_;  // the pairs met in the sub-step being tallied
     uint64_t substep_serial_ = 0;
     bool in_call_ = false;
     DetectionScratch detection_;
