@@ -12,11 +12,11 @@ namespace {
 
 // Candidate nodes per block of the parallel narrow phase. Fixed, not per thread, so the blocks
 // and the order they are joined in are the same for any thread count. Far fewer than the node
-// loops' kNodeBlock: a node's face tests cost much more than a predictor update, and a contact
-// region of a few thousand nodes should still give every thread work.
-constexpr uint32_t kSlaveBlock = 256;
+// loops' kNodeBlock: a node's face tests cost much more than a predictor update, and the few
+// hundred candidate nodes of 32 small cubes on a floor should still share out evenly.
+constexpr uint32_t kSlaveBlock = 64;
 // Moving candidate faces per block of the pass that makes their FaceSteps (cheap, one each).
-constexpr uint32_t kFaceBlock = 1024;
+constexpr uint32_t kFaceBlock = 256;
 
 // How deep the last step left the pair: a kept overlap or the solver's residual.
 double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; }
