@@ -12,6 +12,9 @@
 namespace lfem {
 namespace {
 
+// Records per block of the pass that makes their pairs (fixed: the same for any thread count).
+constexpr uint32_t kRecordBlock = 128;
+
 // The pieces of one constraint the sweeps need, resolved once.
 struct Pair {
     PointRef node;
@@ -49,32 +52,33 @@ double last_velocity(const ContactBody& b, uint32_t i, int k, double h) {
     return b.v_last ? b.v_last[3 * i + k] : (b.x[3 * i + k] - b.x_start[3 * i + k]) / h;
 }
 
-// The stopping tolerance: relative_tolerance times the largest relative motion of a pair, the
-// relative velocity at the start of the step (last step's mid-step velocities) times h; not the
-// predicted motion, which under a resting load is mostly the sag that contact undoes. At least
-// 1e-9 of the finest boundary edge, for when nothing moves.
+// The largest relative motion of record r's pair over a step of h: the relative velocity at
+// the start of the step (last step's mid-step velocities) times h; not the predicted motion,
+// which under a resting load is mostly the sag that contact undoes.
+double pair_motion(const ContactBody& a, const ContactBody& b, const ContactRecord& r, double h) {
+    const double w[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
+    double motion = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        double rel = a.moves ? last_velocity(a, r.node, d, h) : 0.0;  // a static body's: 0
+        if (r.shape != UINT32_MAX)
+            rel -= (r.point_end[d] - r.point_start[d]) / h;  // the shape's surface moves rigidly
+        else if (b.moves)
+            for (int v = 0; v < 3; ++v) rel -= w[v] * last_velocity(b, r.triangle[v], d, h);
+        motion = std::max(motion, std::fabs(rel) * h);
+    }
+    return motion;
+}
+
+// The stopping tolerance: relative_tolerance times the largest relative motion of a pair
+// (`motion`, the records' largest pair_motion, here joined by the links'), at least 1e-9 of the
+// finest boundary edge (`length`, likewise), for when nothing moves.
 double stopping_tolerance(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                          const std::vector<ContactRecord>& records, const std::vector<LinkRecord>& links,
+                          const std::vector<LinkRecord>& links, double motion, double length,
                           double relative_tolerance, double h) {
-    double motion = 0.0, length = HUGE_VAL;
     for (const LinkRecord& l : links) {  // a held node: its own motion against its target's
         const ContactBody& a = bodies[body_of_slot[l.body_a]];
         for (int d = 0; d < 3; ++d) motion = std::max(motion, std::fabs(last_velocity(a, l.node, d, h)) * h);
         length = std::min(length, a.edge_length);
-    }
-    for (const ContactRecord& r : records) {
-        const ContactBody& a = bodies[body_of_slot[r.body_a]];
-        const ContactBody& b = bodies[body_of_slot[r.body_b]];
-        const double w[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
-        for (int d = 0; d < 3; ++d) {
-            double rel = a.moves ? last_velocity(a, r.node, d, h) : 0.0;  // a static body's: 0
-            if (r.shape != UINT32_MAX)
-                rel -= (r.point_end[d] - r.point_start[d]) / h;  // the shape's surface moves rigidly
-            else if (b.moves)
-                for (int v = 0; v < 3; ++v) rel -= w[v] * last_velocity(b, r.triangle[v], d, h);
-            motion = std::max(motion, std::fabs(rel) * h);
-        }
-        length = std::min({length, a.edge_length, b.edge_length});
     }
     return std::max(relative_tolerance * motion, 1e-9 * length);
 }
@@ -182,44 +186,38 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - group_start).count();
 }
 
-// The pieces of every record's constraint: its points, weights, H and friction.
-void make_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                std::vector<ContactRecord>& records, std::vector<Pair>& pairs) {
-    pairs.assign(records.size(), Pair{});
-    for (std::size_t j = 0; j < records.size(); ++j) {
-        ContactRecord& r = records[j];  // shape contacts lend their surface points
-        const ContactBody& a = bodies[body_of_slot[r.body_a]];
-        const ContactBody& b = bodies[body_of_slot[r.body_b]];
-        Pair& q = pairs[j];
-        const Vec3 n(r.normal);
-        q.node = point_of(a, r.node);
-        q.N[0] = 1.0 - r.t1 - r.t2;
-        q.N[1] = r.t2;
-        q.N[2] = r.t1;
-        q.H = q.node.response(n);
-        if (r.shape != UINT32_MAX) {
-            // A rigid shape: one immovable point, the touched surface point, moving with the
-            // shape from its start to its end position (friction slips relative to it).
-            q.N[0] = 1.0, q.N[1] = q.N[2] = 0.0;
-            q.tri[0].x = r.point_end;
-            q.tri[0].x0 = r.point_start;
-        } else {
-            for (int v = 0; v < 3; ++v) {
-                q.tri[v] = point_of(b, r.triangle[v]);
-                q.H += q.N[v] * q.N[v] * q.tri[v].response(n);
-            }
-            // Two weights on one rigid body add up before squaring: the exact block is
-            // (sum N_k J_k) M^-1 (sum N_k J_k)^T; with the centre and arm of a barycentric
-            // point of a rigid triangle, it is the response at that point.
-            if (b.rigid) {
-                PointRef p = q.tri[0];
-                p.base = Vec3::Zero(), p.arm = Vec3::Zero();
-                for (int v = 0; v < 3; ++v) p.base += q.N[v] * q.tri[v].base, p.arm += q.N[v] * q.tri[v].arm;
-                q.H = q.node.response(n) + p.response(n);
-            }
+// The pieces of record r's constraint: its points, weights, H and friction.
+Pair make_pair(const ContactBody& a, const ContactBody& b, ContactRecord& r) {
+    Pair q;  // shape contacts lend their surface points (r's)
+    const Vec3 n(r.normal);
+    q.node = point_of(a, r.node);
+    q.N[0] = 1.0 - r.t1 - r.t2;
+    q.N[1] = r.t2;
+    q.N[2] = r.t1;
+    q.H = q.node.response(n);
+    if (r.shape != UINT32_MAX) {
+        // A rigid shape: one immovable point, the touched surface point, moving with the
+        // shape from its start to its end position (friction slips relative to it).
+        q.N[0] = 1.0, q.N[1] = q.N[2] = 0.0;
+        q.tri[0].x = r.point_end;
+        q.tri[0].x0 = r.point_start;
+    } else {
+        for (int v = 0; v < 3; ++v) {
+            q.tri[v] = point_of(b, r.triangle[v]);
+            q.H += q.N[v] * q.N[v] * q.tri[v].response(n);
         }
-        q.mu = pair_friction(a.friction, b.friction);
+        // Two weights on one rigid body add up before squaring: the exact block is
+        // (sum N_k J_k) M^-1 (sum N_k J_k)^T; with the centre and arm of a barycentric
+        // point of a rigid triangle, it is the response at that point.
+        if (b.rigid) {
+            PointRef p = q.tri[0];
+            p.base = Vec3::Zero(), p.arm = Vec3::Zero();
+            for (int v = 0; v < 3; ++v) p.base += q.N[v] * q.tri[v].base, p.arm += q.N[v] * q.tri[v].arm;
+            q.H = q.node.response(n) + p.response(n);
+        }
     }
+    q.mu = pair_friction(a.friction, b.friction);
+    return q;
 }
 
 // Groups: pairs that share no movable point cannot affect each other, so each group of pairs
@@ -237,6 +235,7 @@ struct ContactSolveScratch::Arrays {
     std::vector<uint32_t> parent, group_of_root, group_of_pair, group_begin, order, next;
     std::vector<uint32_t> group_of_link, link_begin, link_order;
     std::vector<GroupResult> results;
+    std::vector<double> block_motion, block_length;
 };
 
 ContactSolveScratch::ContactSolveScratch() : arrays_(new Arrays) {}
@@ -301,10 +300,30 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     // The whole solve is timed as the normal part; the friction passes' share of it is moved
     // to the friction part at the end.
     const auto solve_start = std::chrono::steady_clock::now();
-    const double tolerance = stopping_tolerance(bodies, body_of_slot, records, links, relative_tolerance, h);
     ContactSolveScratch::Arrays& s = scratch.arrays();
     std::vector<Pair>& pairs = s.pairs;
-    make_pairs(bodies, body_of_slot, records, pairs);
+    // Every record's pair and motion, in blocks on the pool (the largest motion and the finest
+    // edge are the same whichever block finds them first).
+    const uint32_t n = uint32_t(records.size()), blocks = (n + kRecordBlock - 1) / kRecordBlock;
+    pairs.resize(n);
+    s.block_motion.assign(blocks, 0.0);
+    s.block_length.assign(blocks, HUGE_VAL);
+    parallel_for(pool, blocks, [&](uint32_t blk) {
+        double motion = 0.0, length = HUGE_VAL;
+        for (uint32_t j = blk * kRecordBlock; j < std::min(n, (blk + 1) * kRecordBlock); ++j) {
+            ContactRecord& r = records[j];
+            const ContactBody& a = bodies[body_of_slot[r.body_a]];
+            const ContactBody& b = bodies[body_of_slot[r.body_b]];
+            pairs[j] = make_pair(a, b, r);
+            motion = std::max(motion, pair_motion(a, b, r, h));
+            length = std::min({length, a.edge_length, b.edge_length});
+        }
+        s.block_motion[blk] = motion, s.block_length[blk] = length;
+    });
+    double motion = 0.0, length = HUGE_VAL;
+    for (uint32_t blk = 0; blk < blocks; ++blk)
+        motion = std::max(motion, s.block_motion[blk]), length = std::min(length, s.block_length[blk]);
+    const double tolerance = stopping_tolerance(bodies, body_of_slot, links, motion, length, relative_tolerance, h);
     make_link_pairs(bodies, body_of_slot, links, s.link_pairs);
     const uint32_t groups = group_pairs(bodies, body_of_slot, records, links, s);
     const std::vector<uint32_t>& begin = s.group_begin;
