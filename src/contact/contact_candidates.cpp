@@ -39,11 +39,12 @@ double largest_move(const ContactBody& b, const double* reference) {
     return most;
 }
 
-// Runs task(i) for i < count on the pool when the work (about `work` node visits) is worth a
-// round of it, else here: either way the same result.
+// Runs task(i) for i < count on the pool when the work (about `work` node visits, a few
+// nanoseconds each) is worth a round of it (about a microsecond), else here: either way the
+// same result.
 template <class Task>
 void for_bodies(ThreadPool* pool, uint32_t count, uint64_t work, const Task& task) {
-    parallel_for(work >= 8192 ? pool : nullptr, count, task);
+    parallel_for(work >= 1024 ? pool : nullptr, count, task);
 }
 
 // Body by body: positions, budget, growth, tree and boxes of the new search.

@@ -282,20 +282,26 @@ void start_tracks(const std::vector<ContactBody>& bodies, DetectionScratch& s) {
     s.tracks_ready = true;
 }
 
-// The blocks' records joined in block order, which is the list's order; their counts added
-// to the profile in the same order.
-FallenIn join_blocks(const DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out, lfem_profile& profile) {
+// The blocks' records joined in block order, which is the list's order (each block copied on
+// the pool to its place); their counts added to the profile in the same order.
+FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out, lfem_profile& profile,
+                     ThreadPool* pool) {
     FallenIn fallen;
-    std::size_t total = out.size();
-    for (uint32_t b = 0; b < blocks; ++b) total += s.blocks[b].records.size();
-    out.reserve(total);
+    s.block_begin.resize(blocks + 1);
+    std::size_t total = 0;
     for (uint32_t b = 0; b < blocks; ++b) {
         const DetectionBlock& block = s.blocks[b];
-        out.insert(out.end(), block.records.begin(), block.records.end());
+        s.block_begin[b] = total;
+        total += block.records.size();
         profile.shape_tests += block.counts.shape_tests;
         profile.ccd_queries += block.counts.ccd_queries;
         fallen.add(block.fallen);
     }
+    s.block_begin[blocks] = total;
+    out.resize(total);
+    parallel_for(total >= 512 ? pool : nullptr, blocks, [&](uint32_t b) {
+        std::copy(s.blocks[b].records.begin(), s.blocks[b].records.end(), out.begin() + std::ptrdiff_t(s.block_begin[b]));
+    });
     return fallen;
 }
 
@@ -343,11 +349,11 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
             }
         });
         parallel_for(pool, blocks, [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], normals, ready); });
-        if (!any_shapes) return join_blocks(s, blocks, out, profile);
+        if (!any_shapes) return join_blocks(s, blocks, out, profile, pool);
     }
     PhaseTimer timer(profile.shape_queries);
     parallel_for(pool, blocks, [&](uint32_t b) { test_block_shapes(in, b, s.blocks[b], normals, ready); });
-    return join_blocks(s, blocks, out, profile);
+    return join_blocks(s, blocks, out, profile, pool);
 }
 
 }  // namespace lfem

@@ -75,6 +75,7 @@ struct DetectionScratch {
     std::vector<uint8_t> normal_ready;  // per candidate node: its normal is computed
     std::vector<FaceStep> faces;        // per moving candidate face (candidates.faces): this sub-step's
     std::vector<DetectionBlock> blocks; // only the first ones may be in use (never shrinks)
+    std::vector<std::size_t> block_begin;  // where each block's records go in the joined list
 };
 
 // Fills `out` with one constraint per (node, other body): the boundary triangle the node
