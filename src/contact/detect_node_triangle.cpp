@@ -310,7 +310,8 @@ FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRe
 FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vector<ContactRecord>& previous,
                           bool scan_overlaps, DetectionScratch& s, std::vector<ContactRecord>& out,
                           lfem_profile& profile, ThreadPool* pool) {
-    out.clear();
+    // `out` keeps its old records until the join overwrites them: resized, not cleared, so that
+    // only the records beyond its last length are constructed before being copied over.
     double max_offset = 0.0;
     for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
     ContactCandidates& c = s.candidates;
@@ -323,7 +324,10 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
         }
     }
     const uint32_t nodes = uint32_t(c.body.size());
-    if (nodes == 0) return FallenIn{};
+    if (nodes == 0) {
+        out.clear();
+        return FallenIn{};
+    }
     const bool any_shapes = !c.shapes.empty();
     // Narrow phase: every candidate node against its candidate triangles, in blocks on the
     // pool, each block writing only its own records and scratch.

@@ -145,7 +145,6 @@ void World::detect() {
         in.shape_pose_start = sc.shape_pose_start.data();
         contact_bodies_.add(in);
     }
-    detected_.clear();
     fallen_ = FallenIn{};
     // Pairs among sleeping and static bodies are not detected again: they are kept as they
     // were (and merged back after the solve), so a sleeping pile keeps its contacts.
@@ -160,7 +159,10 @@ void World::detect() {
     c.solver_iterations = 0;
     c.solver_residual = 0.0;
     c.max_penetration = 0.0;
-    if (!contact_bodies_.may_touch()) return;
+    if (!contact_bodies_.may_touch()) {
+        detected_.clear();
+        return;
+    }
     fallen_ = detect_node_triangle(contact_bodies_.bodies(), state_.contacts, c.scan_overlaps, detection_, detected_,
                                    profile_, stages_.pool);
     c.scan_overlaps = false;
