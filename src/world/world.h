@@ -190,6 +190,7 @@ private:
         RigidResponse rigid;                   // rigid: the contact solve's response
         SubstepTally tally;
         bool touched = false;                  // in contact this sub-step
+        double phase_seconds[3] = {0, 0, 0};   // side by side: its commit, rotation, forces (s)
     };
     // The bodies each stage concerns, in slot order, sorted once per sub-step.
     struct StageLists {
@@ -214,9 +215,11 @@ private:
     void move_kinematic_bodies(double h);
     void detect();
     void solve(double h);
-    void commit(double h);
-    void update_global_rotations(double h);
-    void compute_element_forces();
+    void commit_rotate_and_load(double h);  // commit, rotation update, element forces
+    void commit_rigid_bodies(double h);
+    void body_commit(uint32_t slot, double h, ThreadPool* pool);
+    void body_rotation(uint32_t slot, double h, ThreadPool* pool);
+    void body_forces(uint32_t slot, ThreadPool* pool);
     void add_up_energy(double h, double& kinetic, double& strain, double& work);
     void count_warnings(double h);
     // Positions or geometry may have changed: the queries' cache is stale. After a step (with
