@@ -116,6 +116,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     block.touched.clear();
     block.best.clear();
     block.deep.clear();
+    block.deep_of.clear();
     block.last.clear();
     double allowance = 0.0, grow = 0.0, reach_far = 0.0;
     bool first_touch = false;
@@ -145,12 +146,14 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         if (block.touched.empty() || block.touched.back() != bi) {
             block.touched.push_back(bi);
             block.best.emplace_back();
-            block.deep.emplace_back();
             // The last step's record of (node, body): looked up once per body met.
             const ContactRecord* last = previous.find(a.slot, p, b.slot);
             block.last.push_back(last);
             allowance = 1.25 * kept_offset(last) + kResidualDepth * contact_length(a, b);
             first_touch = catches_deep_nodes(a, b, in.scan_overlaps) && last == nullptr;
+            // A possible initial overlap is kept only where the pair is met for the first time.
+            block.deep_of.push_back(first_touch ? uint32_t(block.deep.size()) : UINT32_MAX);
+            if (first_touch) block.deep.emplace_back();
         }
         if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
         const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, block.best.back(),
@@ -165,7 +168,8 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     // the node and the face (then the node is inside, and this face is its nearest way out);
     // otherwise the node is merely beyond a thin part.
     for (std::size_t k = 0; k < block.touched.size(); ++k) {
-        const NodeCandidate& d = block.deep[k];
+        if (block.deep_of[k] == UINT32_MAX) continue;
+        const NodeCandidate& d = block.deep[block.deep_of[k]];
         if (!d.found || block.best[k].found) continue;
         const uint32_t bi = block.touched[k];
         const Vec3 x = position(a.x_start, p);

@@ -39,7 +39,9 @@ struct DetectionBlock {
     std::vector<double> record_gap;
     std::vector<uint8_t> record_fallen;       // shape pass: the record is of a node fallen in
     std::vector<uint32_t> touched;            // bodies with a candidate for the current node
-    std::vector<NodeCandidate> best, deep;    // per touched body
+    std::vector<NodeCandidate> best;          // per touched body
+    std::vector<NodeCandidate> deep;          // per touched body met for the first time
+    std::vector<uint32_t> deep_of;            // per touched body: its entry of deep, or none
     std::vector<const ContactRecord*> last;   // per touched body: the pair's last record
     ShapeQueryCounts counts;                  // the profile's counts, added in block order
     FallenIn fallen;                          // of the block's records
