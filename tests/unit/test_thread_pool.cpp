@@ -1,0 +1,66 @@
+// The thread pool's loops (src/common/thread_pool.h): every task runs exactly once whatever the
+// number of threads and tasks (each thread starts with its own range of the tasks, then takes
+// what is left of the others'), an exception reaches the caller only after every other task
+// has finished, and blocked_sum gives the same bits for any number of threads.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include "common/thread_pool.h"
+
+namespace {
+
+TEST(ThreadPool, EveryTaskRunsExactlyOnceForAnyCountAndThreads) {
+    for (uint32_t threads = 1; threads <= 4; ++threads) {
+        lfem::ThreadPool pool(threads);
+        // Counts below, at and above the thread count, and uneven splits; many rounds back to
+        // back, as a step runs them.
+        for (int round = 0; round < 50; ++round)
+            for (uint32_t count : {0u, 1u, 2u, 3u, 5u, 7u, 64u, 1001u}) {
+                std::vector<std::atomic<int>> runs(count);
+                for (auto& r : runs) r.store(0);
+                lfem::parallel_for(&pool, count, [&](uint32_t i) { runs[i].fetch_add(1); });
+                for (uint32_t i = 0; i < count; ++i)
+                    ASSERT_EQ(runs[i].load(), 1) << "task " << i << " of " << count << ", " << threads << " threads";
+            }
+    }
+}
+
+TEST(ThreadPool, AnExceptionComesBackAfterTheOtherTasksFinished) {
+    lfem::ThreadPool pool(3);
+    std::atomic<int> finished{0};
+    EXPECT_THROW(lfem::parallel_for(&pool, 40,
+                                    [&](uint32_t i) {
+                                        if (i == 17) throw std::runtime_error("task 17");
+                                        finished.fetch_add(1);
+                                    }),
+                 std::runtime_error);
+    // On the pool all the others ran to their end before the rethrow; without workers (a build
+    // without threads) the loop runs inline and stops at the throw.
+    EXPECT_EQ(finished.load(), pool.size() > 1 ? 39 : 17);
+    // The pool is usable afterwards.
+    std::atomic<int> again{0};
+    lfem::parallel_for(&pool, 10, [&](uint32_t) { again.fetch_add(1); });
+    EXPECT_EQ(again.load(), 10);
+}
+
+TEST(ThreadPool, BlockedSumIsBitwiseTheSameOnAnyNumberOfThreads) {
+    // Terms of very different sizes, so that a different order of addition would change bits.
+    const uint32_t n = 5 * lfem::kNodeBlock + 123;
+    std::vector<double> term(n);
+    for (uint32_t i = 0; i < n; ++i) term[i] = std::pow(10.0, double(i % 17) - 8.0) * (i % 3 ? 1.0 : -0.7);
+    double sums[4];
+    for (uint32_t threads = 1; threads <= 4; ++threads) {
+        lfem::ThreadPool pool(threads);
+        lfem::Sums<1> s;
+        lfem::blocked_sum(n, &pool, s, [&](uint32_t i, lfem::Sums<1>& out) { out.v[0] += term[i]; });
+        sums[threads - 1] = s.v[0];
+    }
+    for (int t = 1; t < 4; ++t) EXPECT_EQ(0, std::memcmp(&sums[0], &sums[t], sizeof(double))) << t + 1 << " threads";
+}
+
+}  // namespace
