@@ -3,8 +3,8 @@
 // gives each thread a contiguous range of the task indices (so the same body stays on the same
 // core from phase to phase); a thread done with its range takes what is left of the others'.
 // Every task writes only its own outputs, so results never depend on which thread ran which
-// task (or on how many there are). Built with LFEM_WITH_THREADS=OFF the pool has no workers and runs every task on the
-// calling thread.
+// task (or on how many there are). Built with LFEM_WITH_THREADS=OFF the pool has no workers
+// and runs every task on the calling thread.
 #pragma once
 
 #include <algorithm>

@@ -118,16 +118,16 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     block.deep.clear();
     block.deep_of.clear();
     block.last.clear();
-    double allowance = 0.0, grow = 0.0, reach_far = 0.0;
-    bool first_touch = false;
+    double allowance = 0.0, grow = 0.0, reach_far = 0.0, l = 0.0;
+    bool first_touch = false, deep = false;
     uint32_t grow_body = UINT32_MAX;
     const Vec3* normal = nullptr;
     for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
         const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
         const ContactBody& b = in.bodies[bi];
-        if (bi != grow_body) {
-            const double l = contact_length(a, b);
-            const bool deep = catches_deep_nodes(a, b, in.scan_overlaps);
+        if (bi != grow_body) {  // the pair's lengths and rules, once per other body
+            l = contact_length(a, b);
+            deep = catches_deep_nodes(a, b, in.scan_overlaps);
             grow = triangle_growth(l, in.max_offset, deep);
             reach_far = far_reach(c, l, deep, node_path);
             grow_body = bi;
@@ -149,8 +149,8 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             // The last step's record of (node, body): looked up once per body met.
             const ContactRecord* last = previous.find(a.slot, p, b.slot);
             block.last.push_back(last);
-            allowance = 1.25 * kept_offset(last) + kResidualDepth * contact_length(a, b);
-            first_touch = catches_deep_nodes(a, b, in.scan_overlaps) && last == nullptr;
+            allowance = 1.25 * kept_offset(last) + kResidualDepth * l;
+            first_touch = deep && last == nullptr;
             // A possible initial overlap is kept only where the pair is met for the first time.
             block.deep_of.push_back(first_touch ? uint32_t(block.deep.size()) : UINT32_MAX);
             if (first_touch) block.deep.emplace_back();

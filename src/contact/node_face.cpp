@@ -36,15 +36,14 @@ FaceStep face_step(const ContactBody& b, uint32_t t) {
     FaceStep f;
     const uint32_t* tri = &b.triangles[3 * t];
     f.box = triangle_step_box(b, t, 0.0);
-    const Vec3 pa = position(b.x, tri[0]), qa = position(b.x_start, tri[0]);
-    const Vec3 pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
-    const Vec3 n_end = (pb - pa).cross(pc - pa);
-    const Vec3 n_start = (position(b.x_start, tri[1]) - qa).cross(position(b.x_start, tri[2]) - qa);
+    const Vec3 p[3] = {position(b.x, tri[0]), position(b.x, tri[1]), position(b.x, tri[2])};
+    const Vec3 q[3] = {position(b.x_start, tri[0]), position(b.x_start, tri[1]), position(b.x_start, tri[2])};
+    const Vec3 n_end = (p[1] - p[0]).cross(p[2] - p[0]);
+    const Vec3 n_start = (q[1] - q[0]).cross(q[2] - q[0]);
     const double area2 = n_end.norm(), area2_start = n_start.norm();
     f.valid = area2 > 0.0 && area2_start > 0.0;
     if (f.valid) f.normal_end = n_end / area2, f.normal_start = n_start / area2_start;
-    double most = 0.0;
-    for (int v = 0; v < 3; ++v) most = std::max(most, (position(b.x, tri[v]) - position(b.x_start, tri[v])).squaredNorm());
+    const double most = std::max({(p[0] - q[0]).squaredNorm(), (p[1] - q[1]).squaredNorm(), (p[2] - q[2]).squaredNorm()});
     f.motion = std::sqrt(most);
     return f;
 }

@@ -58,7 +58,7 @@ FaceStep face_step(const ContactBody& b, uint32_t t);
 //
 // Returns, when the node was turned away because its point on the face lies outside the
 // triangle (a barycentric weight below -kEdgeTolerance), by how much: the margin sigma of the
-// lowest weight below -kEdgeTolerance (at most 0.25), in `outside`, and the smallest height of
+// lowest weight below -kEdgeTolerance (at most 0.25), in `margin`, and the smallest height of
 // the triangle that was tested, in `height`; both 0 when it was turned away for any other reason
 // or kept. How far node and face must then move before the node could meet the face:
 // still_outside in detect_node_triangle.cpp.

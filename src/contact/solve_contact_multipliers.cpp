@@ -303,7 +303,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     ContactSolveScratch::Arrays& s = scratch.arrays();
     std::vector<Pair>& pairs = s.pairs;
     // Every record's pair and motion, in blocks on the pool (the largest motion and the finest
-    // edge are the same whichever block finds them first).
+    // edge, a max and a min, do not depend on the order the blocks are joined in).
     const uint32_t n = uint32_t(records.size()), blocks = (n + kRecordBlock - 1) / kRecordBlock;
     pairs.resize(n);
     s.block_motion.assign(blocks, 0.0);
