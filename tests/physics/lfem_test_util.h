@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -201,6 +202,25 @@ inline double volume(const std::vector<double>& x, const uint32_t* tets, uint32_
               u[2] * (p[0] * q[1] - p[1] * q[0])) / 6.0;
     }
     return v;
+}
+
+// How far point y lies inside tet q (4 node indices into x, 3 coordinates per node): its
+// smallest barycentric weight, negative outside; -HUGE_VAL for an inverted or flat tet, which
+// has no inside. The tests count a node as inside another body's volume when this is above
+// 0.02 for one of its tets: 2 % of the tet's height, twenty times the contact solve's residual
+// (1e-3 of an edge), so a node resting on a face never counts.
+inline double depth_in_tet(const std::vector<double>& x, const uint32_t* q, const double* y) {
+    double e[3][3];
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) e[c][k] = x[3 * q[c + 1] + k] - x[3 * q[0] + k];
+    auto det3 = [](const double* a, const double* b, const double* c) {
+        return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+    };
+    const double det = det3(e[0], e[1], e[2]);
+    if (!(det > 0.0)) return -HUGE_VAL;
+    const double d[3] = {y[0] - x[3 * q[0]], y[1] - x[3 * q[0] + 1], y[2] - x[3 * q[0] + 2]};
+    const double b1 = det3(d, e[1], e[2]) / det, b2 = det3(e[0], d, e[2]) / det, b3 = det3(e[0], e[1], d) / det;
+    return std::min(std::min(1.0 - b1 - b2 - b3, b1), std::min(b2, b3));
 }
 
 }  // namespace lfem_test

@@ -49,14 +49,6 @@ int nodes_inside_own_tets(const std::vector<double>& x, const uint32_t* tets, ui
             lo[k] = HUGE_VAL, hi[k] = -HUGE_VAL;
             for (int a = 0; a < 4; ++a) lo[k] = std::min(lo[k], x[3 * q[a] + k]), hi[k] = std::max(hi[k], x[3 * q[a] + k]);
         }
-        double E[3][3];
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) E[c][k] = x[3 * q[c + 1] + k] - x[3 * q[0] + k];
-        auto det3 = [](const double* a, const double* b, const double* c) {
-            return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-        };
-        const double det = det3(E[0], E[1], E[2]);
-        if (!(det > 0.0)) continue;  // an inverted tet has no inside
         for (uint32_t p : s.boundary) {
             const double* y = &x[3 * p];
             if (y[0] < lo[0] || y[0] > hi[0] || y[1] < lo[1] || y[1] > hi[1] || y[2] < lo[2] || y[2] > hi[2]) continue;
@@ -64,9 +56,7 @@ int nodes_inside_own_tets(const std::vector<double>& x, const uint32_t* tets, ui
             for (int a = 0; a < 4; ++a)
                 near = near || std::find(s.ring[p].begin(), s.ring[p].end(), q[a]) != s.ring[p].end();
             if (near) continue;
-            const double d[3] = {y[0] - x[3 * q[0]], y[1] - x[3 * q[0] + 1], y[2] - x[3 * q[0] + 2]};
-            const double b1 = det3(d, E[1], E[2]) / det, b2 = det3(E[0], d, E[2]) / det, b3 = det3(E[0], E[1], d) / det;
-            count += std::min({1.0 - b1 - b2 - b3, b1, b2, b3}) > 0.02;
+            count += depth_in_tet(x, q, y) > 0.02;
         }
     }
     return count;
