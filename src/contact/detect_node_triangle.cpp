@@ -59,8 +59,9 @@ bool still_outside(const PairSkip& skip, bool scan_overlaps, double node_odomete
 }
 
 // How far from a face's plane a node may be when it meets the face (its distance bounds the
-// tilt term above): the capture band in front, the depth allowance or an initial overlap's
-// depth behind, and the node's path.
+// tilt term above): the capture band in front, the depth allowance or half a contact length
+// behind (an initial overlap's reach, and a held node's on the held face's neighbours), and
+// the node's path.
 double far_reach(const ContactCandidates& c, double l, bool deep, double node_path) {
     const double behind = std::max(1.25 * c.offset_allowed + kResidualDepth * l, deep ? kInitialDepth * l : 0.0);
     return std::max(kCaptureBand * l, behind) + 2.0 * node_path;
@@ -77,6 +78,9 @@ Vec3 node_normal(const ContactBody& a, uint32_t p) {
     }
     return sum.normalized();
 }
+
+// Was the pair held at a triangle last step (not at a shape, not letting out an overlap)?
+bool held_at_face(const ContactRecord* last) { return last && last->shape == UINT32_MAX && last->offset <= 0.0; }
 
 // The box of node p's path x^n -> x*.
 Aabb path_box(const ContactBody& a, uint32_t p) {
@@ -121,6 +125,9 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     double allowance = 0.0, grow = 0.0, reach_far = 0.0, l = 0.0;
     bool first_touch = false, deep = false;
     uint32_t grow_body = UINT32_MAX;
+    const ContactRecord* last = nullptr;  // the last step's record of (node, body), once looked up
+    bool last_known = false;
+    const uint32_t* held = nullptr;  // the triangle of the met body that held the node last step
     const Vec3* normal = nullptr;
     for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
         const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
@@ -129,7 +136,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             l = contact_length(a, b);
             deep = catches_deep_nodes(a, b, in.scan_overlaps);
             grow = triangle_growth(l, in.max_offset, deep);
-            reach_far = far_reach(c, l, deep, node_path);
+            last_known = false;  // looked up when a moving face is skipped or the body is met
             grow_body = bi;
         }
         // A static triangle's box is the one the search kept; a moving one's is this sub-step's.
@@ -137,6 +144,10 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         const FaceTrack* face_track = b.moves ? &in.s.face_tracks[c.face_index[k]] : nullptr;
         PairSkip& skip = in.pair_skips[k];
         if (skip.margin > 0.0) {
+            if (face_track && !last_known) {  // the tilt of a moving face needs the node's reach
+                last = previous.find(a.slot, p, b.slot), last_known = true;
+                reach_far = far_reach(c, l, deep || held_at_face(last), node_path);
+            }
             if (still_outside(skip, in.scan_overlaps, track.odometer, node_path, face_track, face, reach_far)) continue;
             skip.margin = 0.0;
         }
@@ -144,10 +155,13 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         for (int d = 0; d < 3; ++d) reach.lo[d] -= grow, reach.hi[d] += grow;
         if (!overlaps(reach, box)) continue;
         if (block.touched.empty() || block.touched.back() != bi) {
+            if (!last_known) {
+                last = previous.find(a.slot, p, b.slot), last_known = true;
+                reach_far = far_reach(c, l, deep || held_at_face(last), node_path);
+            }
+            held = held_at_face(last) ? last->triangle : nullptr;
             block.touched.push_back(bi);
             block.best.emplace_back();
-            // The last step's record of (node, body): looked up once per body met.
-            const ContactRecord* last = previous.find(a.slot, p, b.slot);
             block.last.push_back(last);
             allowance = 1.25 * kept_offset(last) + kResidualDepth * l;
             first_touch = deep && last == nullptr;
@@ -156,7 +170,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             if (first_touch) block.deep.emplace_back();
         }
         if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
-        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, block.best.back(),
+        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, held, block.best.back(),
                                                first_touch ? &block.deep.back() : nullptr);
         if (out.margin > 0.0 && out.height > 0.0) {
             skip.margin = out.margin, skip.height = out.height;
@@ -180,9 +194,12 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         }
     }
     for (std::size_t k = 0; k < block.touched.size(); ++k) {
-        const NodeCandidate& best = block.best[k];
+        NodeCandidate& best = block.best[k];
         if (!best.found) continue;
-        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], best, block.last[k]));
+        const ContactBody& b = in.bodies[block.touched[k]];
+        best.slid = best.shape == UINT32_MAX && held_at_face(block.last[k]) &&
+                    best.start_gap < -(1.25 * kept_offset(block.last[k]) + kResidualDepth * contact_length(a, b));
+        block.records.push_back(make_record(a, p, b, best, block.last[k]));
         if (best.fallen) block.fallen.add(FallenIn{1, a.slot});
         if (in.any_shapes) block.record_gap.push_back(best.gap), block.record_fallen.push_back(best.fallen);
     }

@@ -27,6 +27,10 @@ constexpr double kInitialDepth = 0.5;
 // Edge tolerance: barycentric weights down to -0.01 count as inside, so nodes on a shared edge
 // do not drop out of both neighbouring faces.
 constexpr double kEdgeTolerance = 0.01;
+// Edge band: a node whose point on a face lies within 0.05 (barycentric) of the face's edges,
+// or outside it, sits on an edge for the rule that a face turned the same way as the node's
+// surface is the far side of that edge (node_face.cpp).
+constexpr double kEdgeBand = 0.05;
 // An overlap found at the start of a step is removed over several steps, 20 % per step, but
 // never faster than 1e-3 l per step, rather than in one violent jump.
 constexpr double kOverlapRecovery = 0.2;

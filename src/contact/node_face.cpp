@@ -25,6 +25,50 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, dou
     w[0] = 1.0 - w[1] - w[2];
 }
 
+// How deep behind triangle tri of b (unit normal n at the start of the step) node x may start,
+// when the last step held it against triangle `held` of b and tri shares a vertex with it. A
+// node held at a surface that bends round it (a soft body wrapped round a ridge's corner, a
+// fold closing) starts behind the next face's plane by up to its distance from the vertex they
+// share times the sine of their angle: deeper than the pair was left, yet still at the surface.
+// That much more depth is allowed, up to half a contact length (the reach of an initial
+// overlap), and let out gradually (make_record). Only where the surface turns towards the node
+// (tri in front of the held face's plane): at a convex edge (a cube's bottom edge over another
+// cube) the node is not behind the next face, and one found there lies beyond the edge; flat
+// neighbours allow nothing more; the far side of a thin part shares no vertex with its near side.
+double neighbour_allowance(const ContactBody& b, const uint32_t* tri, const Vec3& n, const uint32_t* held,
+                           const Vec3& x, double l, double allowance) {
+    if (tri[0] == held[0] && tri[1] == held[1] && tri[2] == held[2]) return allowance;
+    double from_shared = HUGE_VAL;
+    for (int u = 0; u < 3; ++u)
+        for (int v = 0; v < 3; ++v)
+            if (tri[u] == held[v]) from_shared = std::min(from_shared, (x - position(b.x_start, tri[u])).norm());
+    if (from_shared == HUGE_VAL) return allowance;
+    const Vec3 h0 = position(b.x_start, held[0]);
+    const Vec3 n_held = (position(b.x_start, held[1]) - h0).cross(position(b.x_start, held[2]) - h0).normalized();
+    const Vec3 middle = (position(b.x_start, tri[0]) + position(b.x_start, tri[1]) + position(b.x_start, tri[2])) / 3.0;
+    if (!(n_held.dot(middle - h0) > 0.0)) return allowance;  // turned away: a convex edge
+    const double sine = n.cross(n_held).norm();
+    return allowance + std::min(kInitialDepth * l, from_shared * sine);
+}
+
+// The unit normal n of triangle t of b (corners pa, pb, pc at x*) at the end of the step; false
+// for a collapsed face, which has none.
+bool face_normal(const ContactBody& b, uint32_t t, const FaceStep* face, const Vec3& pa, const Vec3& pb,
+                 const Vec3& pc, Vec3& n) {
+    if (b.face_normals) {  // a static body's, made once
+        n = position(b.face_normals, t);
+        return n.squaredNorm() != 0.0;
+    }
+    if (face) {  // a moving body's, made once per sub-step
+        n = face->normal_end;
+        return face->valid;
+    }
+    const Vec3 n_end = (pb - pa).cross(pc - pa);  // a sleeping body: static while asleep, its
+    const double area2 = n_end.norm();            // face normals not made
+    n = n_end / area2;
+    return area2 > 0.0;
+}
+
 }  // namespace
 
 double smallest_height(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -51,35 +95,28 @@ FaceStep face_step(const ContactBody& b, uint32_t t) {
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
 Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
-                           uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
-                           NodeCandidate* deep) {
+                           uint32_t t, const FaceStep* face, double depth_allowance, const uint32_t* held,
+                           NodeCandidate& best, NodeCandidate* deep) {
     const uint32_t* tri = &b.triangles[3 * t];
     const Vec3 pa = position(b.x, tri[0]), pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
     Vec3 n;
-    if (b.face_normals) {  // a static body's, made once
-        n = position(b.face_normals, t);
-        if (n.squaredNorm() == 0.0) return {};  // a collapsed face has no normal
-    } else if (face) {  // a moving body's, made once per sub-step
-        if (!face->valid) return {};
-        n = face->normal_end;
-    } else {  // a sleeping body: static while asleep, its face normals not made
-        const Vec3 n_end = (pb - pa).cross(pc - pa);
-        const double area2 = n_end.norm();
-        if (!(area2 > 0.0)) return {};
-        n = n_end / area2;
-    }
+    if (!face_normal(b, t, face, pa, pb, pc, n)) return {};
     // Surfaces in contact face each other. A face whose normal points the same way as the
     // node's own surface normal is the far side of an edge the node sits on (a cube's corner
-    // node resting on another cube's top face also lies in the plane of its side face): taking
-    // it would push the node sideways off the edge. Convex edges thus keep the one right face.
-    // That choice is for a node at the face: one deeper than the residual depth behind it has
-    // passed it, whichever way its surface turns (a soft body's bulging side sinking into a
-    // floor), and an interior node (no surface around it: normal zero) faces every way.
+    // node resting on another cube's top face also lies in the plane of its side face, on its
+    // edge): taking it would push the node sideways off the edge. Convex edges thus keep the
+    // one right face. That choice is for a node at the face and on its edge: one deeper than the
+    // residual depth behind it has passed it, whichever way its surface turns (a soft body's
+    // bulging side sinking into a floor), one whose point lies well inside the face sits on the
+    // face, not on an edge (a corner of a tumbling soft body, its normal turned up by the bend,
+    // pressing down on it), and an interior node (no surface around it: normal zero) faces every
+    // way.
     const Vec3 x_end = position(a.x, p), x_start = position(a.x_start, p);
     const double gap = n.dot(x_end - pa);
     const double l = contact_length(a, b);
     if (gap > kCaptureBand * l) return {};
-    if (gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0) return {};
+    const bool faces_away =
+        gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0;
     // A body's own face is met only by a part of its surface that comes at it from outside:
     // facing it, at any depth (a node behind a face of its own body is inside the body).
     if (&a == &b && !(n.dot(node_normal) < 0.0)) return {};
@@ -87,6 +124,8 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
     const bool still = !b.moves;
     const Vec3 qa = still ? pa : position(b.x_start, tri[0]);
     const double start_gap = (still ? n : face->normal_start).dot(x_start - qa);
+    if (start_gap < -depth_allowance && held)
+        depth_allowance = neighbour_allowance(b, tri, still ? n : face->normal_start, held, x_start, l, depth_allowance);
     NodeCandidate* slot = &best;
     if (start_gap < -depth_allowance) {
         // Deeper than the pair was left: only a possible initial overlap (checked later).
@@ -95,16 +134,18 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
     }
     NodeCandidate& c = *slot;
     if (c.found && gap <= c.gap) return {};  // keep the face penetrated least
-    double w[3];
+    double w[3], w_end[3];
+    bool end_known = false;  // w_end holds the projection of x*
     if (start_gap >= 0.0 && gap < 0.0) {
         // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
         // with the triangle moved by the same fraction of its own step. Against a static face
         // the weights are affine along the path: outside at both ends by more than the edge
         // tolerance (and a margin for rounding), outside in between.
         if (still) {
-            double w_start[3], w_end[3];
+            double w_start[3];
             barycentric(x_start, pa, pb, pc, w_start);
             barycentric(x_end, pa, pb, pc, w_end);
+            end_known = true;
             for (int k = 0; k < 3; ++k)
                 if (w_start[k] < -kEdgeTolerance - 1e-9 && w_end[k] < -kEdgeTolerance - 1e-9) return {};
         }
@@ -112,10 +153,20 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
         const double s = start_gap / (start_gap - gap);
         barycentric(x_start + s * (x_end - x_start), qa + s * (pa - qa), qb + s * (pb - qb),
                     qc + s * (pc - qc), w);
+        // A node that starts at the face (no further in front than the residual depth) crossed
+        // where it started. Sliding across an edge onto this face it started just outside it, on
+        // the neighbour, whose test takes its point at the end (it ends behind that one's plane
+        // too, beyond the shared edge): neither would hold it. Its point at the end is then its
+        // point here, as for a node at or behind the face.
+        if (start_gap <= kResidualDepth * l && !(std::min({w[0], w[1], w[2]}) >= -kEdgeTolerance)) {
+            if (!end_known) barycentric(x_end, pa, pb, pc, w_end);
+            for (int k = 0; k < 3; ++k) w[k] = w_end[k];
+        }
     } else {
         barycentric(x_end, pa, pb, pc, w);  // at or behind the face: its projection
     }
     const double lowest = std::min({w[0], w[1], w[2]});
+    if (faces_away && !(lowest >= kEdgeBand)) return {};
     if (!(lowest >= -kEdgeTolerance)) {
         // Outside the triangle that was tested (the crossing's, moved part way, or the end's):
         // its smallest height, the end's less what the vertices moved on the way.
@@ -214,10 +265,16 @@ ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b
     // deeply overlapping separate slowly instead of jumping apart; one found inside during the
     // run (fallen in), never faster than 1e-2 of an edge. A pair in contact at the last step
     // (and not letting out an overlap) has only the solve's residual to make up: at once.
+    // A held node found deeper than the pair was left (it slid onto a neighbour of its face, or
+    // the face bent round it) makes up 1e-2 of an edge at once, as fast as one that fell in is
+    // let out, and is let out of the rest: made up at once, a depth of up to half an edge would
+    // crush its tets.
     const bool held = last && last->offset <= 0.0;
-    if (c.start_gap < 0.0 && !held) {
+    const double l = c.shape == UINT32_MAX ? contact_length(a, b) : a.edge_length;
+    if (c.start_gap < 0.0 && c.slid) {
+        r.offset = std::max(0.0, -c.start_gap - kFallenRecovery * l);
+    } else if (c.start_gap < 0.0 && !held) {
         const double overlap = -c.start_gap;
-        const double l = c.shape == UINT32_MAX ? contact_length(a, b) : a.edge_length;
         r.offset = overlap - std::min(kOverlapRecovery * overlap, (c.fallen ? kFallenRecovery : kMaxRecovery) * l);
     }
     return r;

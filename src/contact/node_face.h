@@ -26,6 +26,7 @@ struct NodeCandidate {
     double w[3] = {0, 0, 0};
     Vec3 normal = Vec3::Zero();
     bool fallen = false;   // found inside during the run, not among new bodies' overlaps
+    bool slid = false;     // held last step, now deeper than the pair was left (neighbour_allowance)
 };
 
 // The profile's counts of rigid-shape queries.
@@ -52,7 +53,9 @@ FaceStep face_step(const ContactBody& b, uint32_t t);
 // Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in `best`
 // if it is a valid contact penetrated less than what best holds. A node that starts the step
 // deeper than depth_allowance behind the face is only a possible initial overlap: kept in
-// *deep (when given) for the caller to check. `face` is face_step(b, t), required when b moves;
+// *deep (when given) for the caller to check. `held`: the triangle of b (3 node indices) that
+// held the node last step, nullable: neighbours the surface bends from it towards the node
+// allow more depth (node_face.cpp). `face` is face_step(b, t), required when b moves;
 // null for a static body (its face normals made once) and for a sleeping one (static while
 // asleep: its normals are made here).
 //
@@ -66,8 +69,8 @@ struct Outside {
     double margin = 0, height = 0;
 };
 Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
-                           uint32_t t, const FaceStep* face, double depth_allowance, NodeCandidate& best,
-                           NodeCandidate* deep);
+                           uint32_t t, const FaceStep* face, double depth_allowance, const uint32_t* held,
+                           NodeCandidate& best, NodeCandidate* deep);
 
 // Node p of `a` against rigid shape j of `b`, by the same rules: within the capture band at the
 // end of the step, no deeper at its start than the pair was left, facing the node's surface.
