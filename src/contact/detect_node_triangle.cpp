@@ -60,8 +60,8 @@ bool still_outside(const PairSkip& skip, bool scan_overlaps, double node_odomete
 
 // How far from a face's plane a node may be when it meets the face (its distance bounds the
 // tilt term above): the capture band in front, the depth allowance or half a contact length
-// behind (an initial overlap's reach, and a held node's on the held face's neighbours), and
-// the node's path.
+// behind (an initial overlap's reach, and a held node's on the neighbours of the triangle that
+// held it, node_face.cpp), and the node's path.
 double far_reach(const ContactCandidates& c, double l, bool deep, double node_path) {
     const double behind = std::max(1.25 * c.offset_allowed + kResidualDepth * l, deep ? kInitialDepth * l : 0.0);
     return std::max(kCaptureBand * l, behind) + 2.0 * node_path;
@@ -77,6 +77,13 @@ Vec3 node_normal(const ContactBody& a, uint32_t p) {
         sum += (position(a.x, tri[1]) - x0).cross(position(a.x, tri[2]) - x0);
     }
     return sum.normalized();
+}
+
+// Do triangles u and v (3 node indices each) share a node?
+bool shares_vertex(const uint32_t* u, const uint32_t* v) {
+    for (int i = 0; i < 3; ++i)
+        if (u[i] == v[0] || u[i] == v[1] || u[i] == v[2]) return true;
+    return false;
 }
 
 // Was the pair held at a triangle last step (not at a shape, not letting out an overlap)?
@@ -106,78 +113,10 @@ const Vec3& normal_of(const NarrowInput& in, uint32_t g, Vec3* slave_normals, ui
     return slave_normals[g];
 }
 
-void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& block, PreviousRecords& previous,
-                         Vec3* slave_normals, uint8_t* ready) {
+// Node p of a, its faces found: the records of the other bodies it met, in body order. An
+// overlap met for the first time is taken here too (see below).
+void keep_records(const NarrowInput& in, const ContactBody& a, uint32_t p, DetectionBlock& block) {
     const ContactCandidates& c = in.s.candidates;
-    const uint32_t ai = c.body[g], p = c.node[g];
-    const ContactBody& a = in.bodies[ai];
-    const Aabb box = path_box(a, p);
-    NodeTrack& track = in.node_tracks[g];
-    const Vec3 start = position(a.x_start, p);
-    track.odometer += (start - track.last_start).norm();
-    track.last_start = start;
-    const double node_path = (position(a.x, p) - start).norm();
-    block.touched.clear();
-    block.best.clear();
-    block.deep.clear();
-    block.deep_of.clear();
-    block.last.clear();
-    double allowance = 0.0, grow = 0.0, reach_far = 0.0, l = 0.0;
-    bool first_touch = false, deep = false;
-    uint32_t grow_body = UINT32_MAX;
-    const ContactRecord* last = nullptr;  // the last step's record of (node, body), once looked up
-    bool last_known = false;
-    const uint32_t* held = nullptr;  // the triangle of the met body that held the node last step
-    const Vec3* normal = nullptr;
-    for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
-        const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
-        const ContactBody& b = in.bodies[bi];
-        if (bi != grow_body) {  // the pair's lengths and rules, once per other body
-            l = contact_length(a, b);
-            deep = catches_deep_nodes(a, b, in.scan_overlaps);
-            grow = triangle_growth(l, in.max_offset, deep);
-            last_known = false;  // looked up when a moving face is skipped or the body is met
-            grow_body = bi;
-        }
-        // A static triangle's box is the one the search kept; a moving one's is this sub-step's.
-        const FaceStep* face = b.moves ? &in.s.faces[c.face_index[k]] : nullptr;
-        const FaceTrack* face_track = b.moves ? &in.s.face_tracks[c.face_index[k]] : nullptr;
-        PairSkip& skip = in.pair_skips[k];
-        if (skip.margin > 0.0) {
-            if (face_track && !last_known) {  // the tilt of a moving face needs the node's reach
-                last = previous.find(a.slot, p, b.slot), last_known = true;
-                reach_far = far_reach(c, l, deep || held_at_face(last), node_path);
-            }
-            if (still_outside(skip, in.scan_overlaps, track.odometer, node_path, face_track, face, reach_far)) continue;
-            skip.margin = 0.0;
-        }
-        Aabb reach = face ? face->box : c.static_box[k];
-        for (int d = 0; d < 3; ++d) reach.lo[d] -= grow, reach.hi[d] += grow;
-        if (!overlaps(reach, box)) continue;
-        if (block.touched.empty() || block.touched.back() != bi) {
-            if (!last_known) {
-                last = previous.find(a.slot, p, b.slot), last_known = true;
-                reach_far = far_reach(c, l, deep || held_at_face(last), node_path);
-            }
-            held = held_at_face(last) ? last->triangle : nullptr;
-            block.touched.push_back(bi);
-            block.best.emplace_back();
-            block.last.push_back(last);
-            allowance = 1.25 * kept_offset(last) + kResidualDepth * l;
-            first_touch = deep && last == nullptr;
-            // A possible initial overlap is kept only where the pair is met for the first time.
-            block.deep_of.push_back(first_touch ? uint32_t(block.deep.size()) : UINT32_MAX);
-            if (first_touch) block.deep.emplace_back();
-        }
-        if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
-        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, held, block.best.back(),
-                                               first_touch ? &block.deep.back() : nullptr);
-        if (out.margin > 0.0 && out.height > 0.0) {
-            skip.margin = out.margin, skip.height = out.height;
-            skip.node_mark = track.odometer - node_path;
-            skip.face_mark = face_track ? face_track->odometer - face->motion : 0.0;
-        }
-    }
     // An overlap met for the first time: accepted when nothing of the other body lies between
     // the node and the face (then the node is inside, and this face is its nearest way out);
     // otherwise the node is merely beyond a thin part.
@@ -203,6 +142,86 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
         if (best.fallen) block.fallen.add(FallenIn{1, a.slot});
         if (in.any_shapes) block.record_gap.push_back(best.gap), block.record_fallen.push_back(best.fallen);
     }
+}
+
+void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& block, PreviousRecords& previous,
+                         Vec3* slave_normals, uint8_t* ready) {
+    const ContactCandidates& c = in.s.candidates;
+    const uint32_t ai = c.body[g], p = c.node[g];
+    const ContactBody& a = in.bodies[ai];
+    const Aabb box = path_box(a, p);
+    NodeTrack& track = in.node_tracks[g];
+    const Vec3 start = position(a.x_start, p);
+    track.odometer += (start - track.last_start).norm();
+    track.last_start = start;
+    const double node_path = (position(a.x, p) - start).norm();
+    block.touched.clear();
+    block.best.clear();
+    block.deep.clear();
+    block.deep_of.clear();
+    block.last.clear();
+    double allowance = 0.0, grow = 0.0, l = 0.0, reach_near = 0.0, reach_deep = 0.0;
+    bool first_touch = false, deep = false;
+    uint32_t grow_body = UINT32_MAX;
+    const ContactRecord* last = nullptr;  // the last step's record of (node, body), once looked up
+    bool last_known = false;
+    const uint32_t* held = nullptr;  // the triangle of the met body that held the node last step
+    const Vec3* normal = nullptr;
+    for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
+        const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
+        const ContactBody& b = in.bodies[bi];
+        if (bi != grow_body) {  // the pair's lengths and rules, once per other body
+            l = contact_length(a, b);
+            deep = catches_deep_nodes(a, b, in.scan_overlaps);
+            grow = triangle_growth(l, in.max_offset, deep);
+            reach_near = far_reach(c, l, deep, node_path), reach_deep = far_reach(c, l, true, node_path);
+            last_known = false;  // looked up when a moving face is skipped or the body is met
+            grow_body = bi;
+        }
+        // A static triangle's box is the one the search kept; a moving one's is this sub-step's.
+        const FaceStep* face = b.moves ? &in.s.faces[c.face_index[k]] : nullptr;
+        const FaceTrack* face_track = b.moves ? &in.s.face_tracks[c.face_index[k]] : nullptr;
+        PairSkip& skip = in.pair_skips[k];
+        if (skip.margin > 0.0) {
+            double reach_far = 0.0;  // how far from a moving face's plane the node may be met (its tilt)
+            if (face_track) {
+                if (!last_known) {
+                    last = previous.find(a.slot, p, b.slot), last_known = true;
+                    held = held_at_face(last) ? last->triangle : nullptr;
+                }
+                const bool next_to_held = held && shares_vertex(&b.triangles[3 * std::size_t(t)], held);
+                reach_far = next_to_held ? reach_deep : reach_near;
+            }
+            if (still_outside(skip, in.scan_overlaps, track.odometer, node_path, face_track, face, reach_far)) continue;
+            skip.margin = 0.0;
+        }
+        Aabb reach = face ? face->box : c.static_box[k];
+        for (int d = 0; d < 3; ++d) reach.lo[d] -= grow, reach.hi[d] += grow;
+        if (!overlaps(reach, box)) continue;
+        if (block.touched.empty() || block.touched.back() != bi) {
+            if (!last_known) {
+                last = previous.find(a.slot, p, b.slot), last_known = true;
+                held = held_at_face(last) ? last->triangle : nullptr;
+            }
+            block.touched.push_back(bi);
+            block.best.emplace_back();
+            block.last.push_back(last);
+            allowance = 1.25 * kept_offset(last) + kResidualDepth * l;
+            first_touch = deep && last == nullptr;
+            // A possible initial overlap is kept only where the pair is met for the first time.
+            block.deep_of.push_back(first_touch ? uint32_t(block.deep.size()) : UINT32_MAX);
+            if (first_touch) block.deep.emplace_back();
+        }
+        if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
+        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, held, block.best.back(),
+                                               first_touch ? &block.deep.back() : nullptr);
+        if (out.margin > 0.0 && out.height > 0.0) {
+            skip.margin = out.margin, skip.height = out.height;
+            skip.node_mark = track.odometer - node_path;
+            skip.face_mark = face_track ? face_track->odometer - face->motion : 0.0;
+        }
+    }
+    keep_records(in, a, p, block);
 }
 
 // The candidate nodes of block b against their triangles; a node's unit normal, once needed,

@@ -38,16 +38,18 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, dou
 double neighbour_allowance(const ContactBody& b, const uint32_t* tri, const Vec3& n, const uint32_t* held,
                            const Vec3& x, double l, double allowance) {
     if (tri[0] == held[0] && tri[1] == held[1] && tri[2] == held[2]) return allowance;
-    double from_shared = HUGE_VAL;
-    for (int u = 0; u < 3; ++u)
-        for (int v = 0; v < 3; ++v)
-            if (tri[u] == held[v]) from_shared = std::min(from_shared, (x - position(b.x_start, tri[u])).norm());
-    if (from_shared == HUGE_VAL) return allowance;
+    bool shared[3] = {false, false, false};
+    for (int u = 0; u < 3; ++u) shared[u] = tri[u] == held[0] || tri[u] == held[1] || tri[u] == held[2];
+    if (!shared[0] && !shared[1] && !shared[2]) return allowance;
+    const Vec3 t0 = position(b.x_start, tri[0]), t1 = position(b.x_start, tri[1]), t2 = position(b.x_start, tri[2]);
     const Vec3 h0 = position(b.x_start, held[0]);
-    const Vec3 n_held = (position(b.x_start, held[1]) - h0).cross(position(b.x_start, held[2]) - h0).normalized();
-    const Vec3 middle = (position(b.x_start, tri[0]) + position(b.x_start, tri[1]) + position(b.x_start, tri[2])) / 3.0;
-    if (!(n_held.dot(middle - h0) > 0.0)) return allowance;  // turned away: a convex edge
-    const double sine = n.cross(n_held).norm();
+    const Vec3 area_held = (position(b.x_start, held[1]) - h0).cross(position(b.x_start, held[2]) - h0);
+    if (!(area_held.dot(t0 + t1 + t2 - 3.0 * h0) > 0.0)) return allowance;  // turned away: a convex edge
+    double from_shared = HUGE_VAL;
+    const Vec3* corner[3] = {&t0, &t1, &t2};
+    for (int u = 0; u < 3; ++u)
+        if (shared[u]) from_shared = std::min(from_shared, (x - *corner[u]).norm());
+    const double sine = n.cross(area_held).norm() / area_held.norm();
     return allowance + std::min(kInitialDepth * l, from_shared * sine);
 }
 
