@@ -30,8 +30,8 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, dou
 // node held at a surface that bends round it (a soft body wrapped round a ridge's corner, a
 // fold closing) starts behind the next face's plane by up to its distance from the vertex they
 // share times the sine of their angle: deeper than the pair was left, yet still at the surface.
-// That much more depth is allowed, up to half a contact length (the reach of an initial
-// overlap), and let out gradually (make_record). Only where the surface turns towards the node
+// That depth is allowed, up to half a contact length (the reach of an initial overlap, and what
+// the narrow phase's skipping allows for), and let out gradually (make_record). Only where the surface turns towards the node
 // (tri in front of the held face's plane): at a convex edge (a cube's bottom edge over another
 // cube) the node is not behind the next face, and one found there lies beyond the edge; flat
 // neighbours allow nothing more; the far side of a thin part shares no vertex with its near side.
@@ -50,7 +50,7 @@ double neighbour_allowance(const ContactBody& b, const uint32_t* tri, const Vec3
     for (int u = 0; u < 3; ++u)
         if (shared[u]) from_shared = std::min(from_shared, (x - *corner[u]).norm());
     const double sine = n.cross(area_held).norm() / area_held.norm();
-    return allowance + std::min(kInitialDepth * l, from_shared * sine);
+    return std::max(allowance, std::min(kInitialDepth * l, from_shared * sine));
 }
 
 // The unit normal n of triangle t of b (corners pa, pb, pc at x*) at the end of the step; false
