@@ -38,4 +38,22 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
+// Seconds from `from` to now.
+inline double seconds_since(std::chrono::steady_clock::time_point from) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+}
+
+// Phases that ran interleaved on several threads (a round of the pool, groups of the contact
+// solve): the round's wall time shared out among them by the CPU time each took in it. All of
+// it to the first phase when no CPU time was measured.
+inline void share_wall_time(double wall, const double* cpu, lfem_phase_time* const* phases, int n) {
+    double total = 0.0;
+    for (int k = 0; k < n; ++k) total += cpu[k];
+    if (!(total > 0.0)) {
+        phases[0]->seconds += wall;
+        return;
+    }
+    for (int k = 0; k < n; ++k) phases[k]->seconds += wall * cpu[k] / total;
+}
+
 }  // namespace lfem

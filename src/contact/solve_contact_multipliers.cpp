@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "common/profile.h"
 #include "common/thread_pool.h"
 #include "contact/constraint_point.h"
 #include "contact/link_constraint.h"
@@ -171,7 +172,7 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
                 largest = std::max(largest, apply(q, lt - lt_old));
                 for (int d = 0; d < 3; ++d) r.lambda_t[d] = lt[d];
             }
-            out.friction_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            out.friction_seconds += seconds_since(start);
         }
         result.iterations = sweep + 1;
         result.residual = largest;
@@ -183,7 +184,7 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
         // The true depth, kept overlaps included (they are let out over several steps).
         result.max_penetration = std::max(result.max_penetration, -r.gap_after);
     }
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - group_start).count();
+    out.seconds = seconds_since(group_start);
 }
 
 // The pieces of record r's constraint: its points, weights, H and friction.
@@ -351,13 +352,10 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         friction_seconds += g.friction_seconds;
         any_friction = any_friction || g.friction_seconds > 0.0;
     }
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
-    const double friction = seconds > 0.0 ? total * friction_seconds / seconds : 0.0;
-    if (any_friction) {
-        profile.friction.seconds += friction;
-        profile.friction.calls += 1;
-    }
-    profile.normal_solve.seconds += total - friction;
+    const double cpu[2] = {seconds - friction_seconds, friction_seconds};
+    lfem_phase_time* phases[2] = {&profile.normal_solve, &profile.friction};
+    share_wall_time(seconds_since(solve_start), cpu, phases, 2);
+    profile.friction.calls += any_friction;
     profile.normal_solve.calls += 1;
     return result;
 }

@@ -297,14 +297,11 @@ void World::commit_rotate_and_load(double h) {
         const Clock::time_point t3 = Clock::now();
         sc.phase_seconds[0] = seconds(t0, t1), sc.phase_seconds[1] = seconds(t1, t2), sc.phase_seconds[2] = seconds(t2, t3);
     });
-    const double wall = seconds(round_start, Clock::now());
     double cpu[3] = {0, 0, 0};
     for (uint32_t i : stages_.side_by_side)
         for (int p = 0; p < 3; ++p) cpu[p] += scratch_[i].phase_seconds[p];
-    const double total = cpu[0] + cpu[1] + cpu[2];
     lfem_phase_time* phases[3] = {&profile_.commit, &profile_.global_rotation, &profile_.internal_forces};
-    for (int p = 0; p < 3; ++p)
-        if (total > 0.0) phases[p]->seconds += wall * cpu[p] / total;
+    share_wall_time(seconds_since(round_start), cpu, phases, 3);
 }
 
 // kinetic, strain: of the new state; work: what gravity, forces, supports and contacts did
