@@ -63,7 +63,7 @@ bool still_outside(const PairSkip& skip, bool scan_overlaps, double node_odomete
 // behind (an initial overlap's reach, and a held node's on the neighbours of the triangle that
 // held it, node_face.cpp), and the node's path.
 double far_reach(const ContactCandidates& c, double l, bool deep, double node_path) {
-    const double behind = std::max(1.25 * c.offset_allowed + kResidualDepth * l, deep ? kInitialDepth * l : 0.0);
+    const double behind = std::max(allowed_depth(c.offset_allowed, l), deep ? kInitialDepth * l : 0.0);
     return std::max(kCaptureBand * l, behind) + 2.0 * node_path;
 }
 
@@ -77,13 +77,6 @@ Vec3 node_normal(const ContactBody& a, uint32_t p) {
         sum += (position(a.x, tri[1]) - x0).cross(position(a.x, tri[2]) - x0);
     }
     return sum.normalized();
-}
-
-// Do triangles u and v (3 node indices each) share a node?
-bool shares_vertex(const uint32_t* u, const uint32_t* v) {
-    for (int i = 0; i < 3; ++i)
-        if (u[i] == v[0] || u[i] == v[1] || u[i] == v[2]) return true;
-    return false;
 }
 
 // Was the pair held at a triangle last step (not at a shape, not letting out an overlap)?
@@ -133,12 +126,9 @@ void keep_records(const NarrowInput& in, const ContactBody& a, uint32_t p, Detec
         }
     }
     for (std::size_t k = 0; k < block.touched.size(); ++k) {
-        NodeCandidate& best = block.best[k];
+        const NodeCandidate& best = block.best[k];
         if (!best.found) continue;
-        const ContactBody& b = in.bodies[block.touched[k]];
-        best.slid = best.shape == UINT32_MAX && held_at_face(block.last[k]) &&
-                    best.start_gap < -(1.25 * kept_offset(block.last[k]) + kResidualDepth * contact_length(a, b));
-        block.records.push_back(make_record(a, p, b, best, block.last[k]));
+        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], best, block.last[k]));
         if (best.fallen) block.fallen.add(FallenIn{1, a.slot});
         if (in.any_shapes) block.record_gap.push_back(best.gap), block.record_fallen.push_back(best.fallen);
     }
@@ -189,7 +179,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
                     last = previous.find(a.slot, p, b.slot), last_known = true;
                     held = held_at_face(last) ? last->triangle : nullptr;
                 }
-                const bool next_to_held = held && shares_vertex(&b.triangles[3 * std::size_t(t)], held);
+                const bool next_to_held = held && shares_node(&b.triangles[3 * std::size_t(t)], held);
                 reach_far = next_to_held ? reach_deep : reach_near;
             }
             if (still_outside(skip, in.scan_overlaps, track.odometer, node_path, face_track, face, reach_far)) continue;
@@ -206,7 +196,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             block.touched.push_back(bi);
             block.best.emplace_back();
             block.last.push_back(last);
-            allowance = 1.25 * kept_offset(last) + kResidualDepth * l;
+            allowance = allowed_depth(kept_offset(last), l);
             first_touch = deep && last == nullptr;
             // A possible initial overlap is kept only where the pair is met for the first time.
             block.deep_of.push_back(first_touch ? uint32_t(block.deep.size()) : UINT32_MAX);
@@ -274,7 +264,7 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block,
             best.found = has_triangle;
             if (has_triangle) best.gap = block.record_gap[next];
             const ContactRecord* last = previous.find(a.slot, p, o.slot);
-            const double allowance = 1.25 * kept_offset(last) + kResidualDepth * a.edge_length;
+            const double allowance = allowed_depth(kept_offset(last), a.edge_length);
             for (; k < c.shape_begin[g + 1] && uint32_t(c.shapes[k] >> 32) == oi; ++k)
                 test_node_shape(a, p, normal, o, uint32_t(c.shapes[k]), allowance, best, block.counts);
             if (in.scan_overlaps) best.fallen = false;  // an overlap of new bodies: let out gently

@@ -20,6 +20,8 @@ constexpr double kCaptureBand = 0.05;
 // pulling it through would be a disaster. Paths that cross a face in this step are found by
 // the crossing test, not by depth.
 constexpr double kResidualDepth = 1e-3;
+// The depth allowance of a pair the last step left kept_offset deep (m), at contact length l.
+inline double allowed_depth(double kept_offset, double l) { return 1.25 * kept_offset + kResidualDepth * l; }
 // Bodies created overlapping: a node up to 0.5 l behind a face it was never in contact with is
 // taken as inside (and let out gradually) only if nothing of the other body lies between it
 // and the face, i.e. the face really is the nearest way out.

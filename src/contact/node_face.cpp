@@ -125,9 +125,11 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
     // A static face is where it was at the start (the same bits), so its start normal is n.
     const bool still = !b.moves;
     const Vec3 qa = still ? pa : position(b.x_start, tri[0]);
-    const double start_gap = (still ? n : face->normal_start).dot(x_start - qa);
+    const Vec3& n_start = still ? n : face->normal_start;
+    const double start_gap = n_start.dot(x_start - qa);
+    const double pair_allowance = depth_allowance;
     if (start_gap < -depth_allowance && held)
-        depth_allowance = neighbour_allowance(b, tri, still ? n : face->normal_start, held, x_start, l, depth_allowance);
+        depth_allowance = neighbour_allowance(b, tri, n_start, held, x_start, l, depth_allowance);
     NodeCandidate* slot = &best;
     if (start_gap < -depth_allowance) {
         // Deeper than the pair was left: only a possible initial overlap (checked later).
@@ -184,6 +186,7 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
     c.shape = UINT32_MAX;
     c.gap = gap;
     c.start_gap = start_gap;
+    c.slid = held && start_gap < -pair_allowance;  // taken deeper than the pair was left
     c.normal = n;
     // Clamp the weights into the triangle: the force goes to its nodes, never outside.
     double sum = 0.0;
@@ -234,12 +237,8 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
 bool own_triangle_in_reach(const ContactBody& a, uint32_t p, const uint32_t* triangle) {
     const uint32_t begin = a.node_triangle_begin[p], end = a.node_triangle_begin[p + 1];
     if (begin == end) return false;  // an interior node
-    for (uint32_t k = begin; k < end; ++k) {
-        const uint32_t* around = &a.triangles[3 * std::size_t(a.node_triangles[k])];
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                if (around[i] == triangle[j]) return false;
-    }
+    for (uint32_t k = begin; k < end; ++k)
+        if (shares_node(&a.triangles[3 * std::size_t(a.node_triangles[k])], triangle)) return false;
     return true;
 }
 

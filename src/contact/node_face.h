@@ -15,6 +15,13 @@ namespace lfem {
 
 inline Vec3 position(const double* x, uint32_t i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
 
+// Do triangles u and v (3 node indices each) share a node?
+inline bool shares_node(const uint32_t* u, const uint32_t* v) {
+    for (int i = 0; i < 3; ++i)
+        if (u[i] == v[0] || u[i] == v[1] || u[i] == v[2]) return true;
+    return false;
+}
+
 // The best face (or rigid shape) of another body found so far for one slave node.
 struct NodeCandidate {
     bool found = false;
