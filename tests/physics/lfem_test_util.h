@@ -71,6 +71,17 @@ inline lfem_body add_body(lfem_world* w, const lfem_body_def& def, const Mesh& m
     return b;
 }
 
+// A static body holding one plane shape (the default: z = 0, facing +z): a floor.
+inline lfem_body add_plane_floor(lfem_world* w) {
+    lfem_body_def d = lfem_body_def_default();
+    d.type = LFEM_BODY_STATIC;
+    lfem_body floor{};
+    EXPECT_EQ(lfem_body_create(w, &d, &floor), LFEM_OK) << lfem_last_error();
+    const lfem_shape_def plane = lfem_shape_def_default();
+    EXPECT_EQ(lfem_body_add_shape(w, floor, &plane, nullptr), LFEM_OK) << lfem_last_error();
+    return floor;
+}
+
 inline uint32_t node_count(lfem_world* w, lfem_body b) {
     uint32_t n = 0;
     EXPECT_EQ(lfem_body_get_node_count(w, b, &n), LFEM_OK);

@@ -76,12 +76,10 @@ Fold bar_over_rod(bool self_contact, uint32_t threads = 1, int calls = 90) {
     lfem_world_def wd = lfem_world_def_default();
     wd.thread_count = threads;
     World w(wd);
+    add_plane_floor(w);
     lfem_body_def sd = lfem_body_def_default();
     sd.type = LFEM_BODY_STATIC;
-    lfem_body floor{}, rod{};
-    EXPECT_EQ(lfem_body_create(w, &sd, &floor), LFEM_OK);
-    const lfem_shape_def plane = lfem_shape_def_default();
-    EXPECT_EQ(lfem_body_add_shape(w, floor, &plane, nullptr), LFEM_OK);
+    lfem_body rod{};
     EXPECT_EQ(lfem_body_create(w, &sd, &rod), LFEM_OK);
     lfem_shape_def capsule = lfem_shape_def_default();
     capsule.type = LFEM_SHAPE_CAPSULE;

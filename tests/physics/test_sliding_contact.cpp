@@ -44,12 +44,7 @@ struct Slide {
 
 Slide cube_over_ridge(lfem_model model, double young, double friction) {
     World w;
-    lfem_body_def sd = lfem_body_def_default();
-    sd.type = LFEM_BODY_STATIC;
-    lfem_body floor{};
-    EXPECT_EQ(lfem_body_create(w, &sd, &floor), LFEM_OK);
-    const lfem_shape_def plane = lfem_shape_def_default();
-    EXPECT_EQ(lfem_body_add_shape(w, floor, &plane, nullptr), LFEM_OK);
+    add_plane_floor(w);
 
     Mesh ridge;  // a box, its x narrowed with height: 8 cm at z = 0, 15 % of that at the top
     make_box_mesh(ridge, 0.08, 0.1, 0.04, 4, 5, 2, -0.04, -0.05, 0.0);
