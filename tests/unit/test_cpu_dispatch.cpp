@@ -4,6 +4,10 @@
 // scene_digest_cpu_levels_agree and tests/platforms.sh.
 #include <gtest/gtest.h>
 
+#if defined(__x86_64__)
+#include <cpuid.h>
+#endif
+
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -50,6 +54,12 @@ CpuLevel level_from_proc_cpuinfo() {
             if (!flags.count(n)) return false;
         return true;
     };
+    // LZCNT ("abm") needs nothing of the OS, and some virtual machines' kernels leave it out of
+    // the list though the CPU has it: then it is read from CPUID (leaf 0x80000001, ECX bit 5),
+    // as the compiler's runtime reads it.
+    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+    if (!flags.count("abm") && __get_cpuid(0x80000001u, &eax, &ebx, &ecx, &edx) && (ecx & (1u << 5)))
+        flags.insert("abm");
     const bool v2 = all({"cx16", "lahf_lm", "popcnt", "pni", "sse4_1", "sse4_2", "ssse3"});
     const bool v3 = v2 && all({"avx", "avx2", "bmi1", "bmi2", "f16c", "fma", "abm", "movbe", "xsave"});
     const bool v4 = v3 && all({"avx512f", "avx512bw", "avx512cd", "avx512dq", "avx512vl"});
