@@ -332,8 +332,8 @@ typedef struct lfem_body_def {
     uint8_t self_contact;     /* 1 = the body's surface collides with itself (a bar folding over
                                  a post, a sheet piling up, a squashed jelly's folds): each
                                  boundary node against the body's own boundary triangles, except
-                                 the ones around it and their neighbours (those sharing a node
-                                 with them), by the same multipliers as contact between bodies.
+                                 the ones around it, by the same multipliers as contact between
+                                 bodies; a node found inside the body's own tets is pushed out.
                                  Deformable bodies only; default 0 (it costs a search of the
                                  body's own surface) */
     uint8_t composite_tets;   /* 10-node tets only (ignored for 4-node ones): 1 = the composite
@@ -429,9 +429,10 @@ typedef enum lfem_warning_kind {
                                         body and sub-step */
     LFEM_WARNING_STAYS_INVERTED = 1, /* a body kept inverted tets for 0.5 s in a row: once per
                                         spell (it is crushed harder than its material holds) */
-    LFEM_WARNING_FALLEN_IN = 2,      /* nodes found inside a static, kinematic or rigid body (or
-                                        a shape) during the run, pushed back out: once per node
-                                        and fall (not counted: overlaps of newly added bodies) */
+    LFEM_WARNING_FALLEN_IN = 2,      /* nodes found inside another body (or a shape), or with
+                                        self-contact inside their own, during the run, pushed
+                                        back out: once per node and fall (not counted: overlaps
+                                        of newly added bodies) */
     LFEM_WARNING_UNCONVERGED = 3,    /* a contact solve used every one of contact_iterations
                                         sweeps and ended above its tolerance (no body) */
     LFEM_WARNING_KIND_COUNT = 4

@@ -45,7 +45,7 @@ namespace Lfem
     {
         InvertedTets = 0,  // a sub-step ended with inverted tets in a body: once per body and sub-step
         StaysInverted = 1, // a body kept inverted tets for 0.5 s in a row: once per spell
-        FallenIn = 2,      // nodes found inside a static, kinematic or rigid body, pushed out
+        FallenIn = 2,      // nodes found inside another body (or their own), pushed out
         Unconverged = 3,   // a contact solve used every sweep and ended above its tolerance
     }
 

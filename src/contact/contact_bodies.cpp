@@ -19,6 +19,13 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.surface_node_count = uint32_t(in.surface->nodes.size());
     cb.node_triangle_begin = in.surface->node_triangle_begin.data();
     cb.node_triangles = in.surface->node_triangles.data();
+    const bool has_elements = in.elements && in.surface->triangle_element.size() == in.surface->triangle_count();
+    cb.elements = has_elements ? in.elements : nullptr;
+    cb.element_stride = in.nodes_per_tet;
+    cb.triangle_element = has_elements ? in.surface->triangle_element.data() : nullptr;
+    const bool has_node_elements = has_elements && in.surface->node_element_begin.size() == std::size_t(in.node_count) + 1;
+    cb.node_element_begin = has_node_elements ? in.surface->node_element_begin.data() : nullptr;
+    cb.node_elements = has_node_elements ? in.surface->node_elements.data() : nullptr;
     cb.static_bvh = in.type == LFEM_BODY_STATIC ? in.static_bvh : nullptr;
     cb.face_normals = in.type == LFEM_BODY_STATIC ? in.face_normals : nullptr;
     cb.triangles = in.surface->triangles.data();

@@ -21,6 +21,8 @@ struct ContactBodyInput {
     const double* face_normals = nullptr;     // static bodies: their unit face normals
     lfem_body_type type = LFEM_BODY_STATIC;
     const Surface* surface = nullptr;    // its boundary (triangles, slave candidates)
+    const uint32_t* elements = nullptr;  // the tets (nodes_per_tet each), nullptr without
+    uint32_t nodes_per_tet = 4;
     const std::vector<uint32_t>* every_node = nullptr;  // 0 .. node_count - 1 (deformable bodies)
     uint32_t node_count = 0;
     double* x = nullptr;                 // 3 per node: predicted x* (the current x when static)

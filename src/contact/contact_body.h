@@ -37,6 +37,11 @@ struct ContactBody {
     uint32_t surface_node_count = 0;
     const uint32_t* node_triangle_begin = nullptr;  // per node: where its triangles start
     const uint32_t* node_triangles = nullptr;       // (+1 at the end), ascending
+    const uint32_t* elements = nullptr;         // the tets, element_stride nodes each (corners first)
+    uint32_t element_stride = 4;
+    const uint32_t* triangle_element = nullptr; // per triangle: the tet it bounds (UINT32_MAX: none)
+    const uint32_t* node_element_begin = nullptr;  // per node: where its tets start (+1 at the end;
+    const uint32_t* node_elements = nullptr;       // surface nodes only), nullptr without
     const TriangleBvh* static_bvh = nullptr;  // a static body's tree, built when its mesh was added
     const double* face_normals = nullptr;     // a static body's unit face normals (3 per triangle,
                                               // zero: collapsed), made when its mesh was added
@@ -75,8 +80,8 @@ inline bool catches_deep_nodes(const ContactBody& a, const ContactBody& b, bool 
 }
 
 // Node p of a self-contact body against one of its own triangles: only a boundary node, and
-// never a triangle around it or next to those (sharing a node with one of them), which it
-// touches by construction. (node_face.cpp)
+// never a triangle around it, which it touches by construction. The triangles next to those
+// are candidates: a crease folds them onto the node. (node_face.cpp)
 bool own_triangle_in_reach(const ContactBody& a, uint32_t p, const uint32_t* triangle);
 
 // Two bodies are checked against each other only if each one's category is in the other's

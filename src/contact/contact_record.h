@@ -19,8 +19,13 @@ struct ContactRecord {
     double lambda_n = 0;                 // N, normal multiplier (>= 0: tension release)
     double lambda_t[3] = {0, 0, 0};      // N, friction multiplier (tangential)
     double offset = 0;                   // m, overlap being recovered: target gap is -offset
-    double gap_after = 0;                // m, gap left by the solve (negative: penetration)
+    double gap_after = 0;                // m, gap left by the solve along `normal` (negative:
+                                         //   penetration)
+    double plane_gap = 0;                // m, the node's distance from the triangle's plane
+                                         //   after the solve: the depth the next step finds
     bool sliding = false;
+    bool gentle = false;                 // the offset is an overlap of bodies as they were
+                                         //   added: let out at 1e-3 of an edge a step
 
     bool active() const { return lambda_n > 0.0; }  // carries force
 };

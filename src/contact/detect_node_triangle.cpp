@@ -18,8 +18,10 @@ constexpr uint32_t kSlaveBlock = 64;
 // Moving candidate faces per block of the pass that makes their FaceSteps (cheap, one each).
 constexpr uint32_t kFaceBlock = 256;
 
-// How deep the last step left the pair: a kept overlap or the solver's residual.
-double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -r->gap_after) : 0.0; }
+// How deep the last step left the pair: a kept overlap or the solver's residual, along the
+// contact's normal or from the triangle's plane, whichever is deeper (solve_contact_multipliers.cpp,
+// plane_gap).
+double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -std::min(r->gap_after, r->plane_gap)) : 0.0; }
 
 // What the narrow phase's blocks read and none of them writes (but each its own nodes' tracks
 // and pairs' skips).
@@ -106,8 +108,43 @@ const Vec3& normal_of(const NarrowInput& in, uint32_t g, Vec3* slave_normals, ui
     return slave_normals[g];
 }
 
+// Two faces that both hold a node and face each other across it (a valley of a fold closing
+// on it, or two parts squeezing it): turned from each other by more than the valley angle,
+// each in front of the other's plane. One constraint would push the node along its face's
+// normal into the other; the node needs both.
+Vec3 centroid(const ContactBody& b, uint32_t t) {
+    const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
+    return (position(b.x, tri[0]) + position(b.x, tri[1]) + position(b.x, tri[2])) / 3.0;
+}
+bool form_valley(const ContactBody& b, const NodeCandidate& u, const NodeCandidate& v) {
+    if (!(u.normal.dot(v.normal) < kValleyCos)) return false;
+    const Vec3 cu = centroid(b, u.triangle), cv = centroid(b, v.triangle);
+    return u.normal.dot(cv - cu) > 0.0 && v.normal.dot(cu - cv) > 0.0;
+}
+
+// The last step's record of the pair with the same triangle as c, if there is one (a pair may
+// have had two), else the pair's first.
+const ContactRecord* same_face(const NarrowInput& in, const ContactBody& b, const ContactRecord* last,
+                               const NodeCandidate& c) {
+    if (!last || c.shape != UINT32_MAX) return last;
+    const uint32_t* tri = &b.triangles[3 * std::size_t(c.triangle)];
+    const ContactRecord* end = in.previous.data() + in.previous.size();
+    for (const ContactRecord* r = last;
+         r < end && r->body_a == last->body_a && r->node == last->node && r->body_b == last->body_b; ++r)
+        if (r->triangle[0] == tri[0] && r->triangle[1] == tri[1] && r->triangle[2] == tri[2]) return r;
+    return last;
+}
+
 // Node p of a, its faces found: the records of the other bodies it met, in body order. An
-// overlap met for the first time is taken here too (see below).
+// overlap met for the first time is taken here too (see below), and so is a node inside a
+// deformable body (its own, with self-contact): one that started deeper behind a face than the
+// pair was left, within half a contact length, and lies in a tet around that face's corners
+// (not merely behind its plane, as above a thin part). It is taken when no face holds it, or
+// when one holds it only by an edge it lies beyond while it is deeper than 1e-2 of an edge (a
+// node resting at the seam of two bodies is inside by a hair: pushing it out through another
+// face would fight the one that holds it). It is pushed out through that face (fallen in).
+// Of the faces that hold a node, the best, and the best of those that form a valley with it
+// (form_valley).
 void keep_records(const NarrowInput& in, const ContactBody& a, uint32_t p, DetectionBlock& block) {
     const ContactCandidates& c = in.s.candidates;
     // An overlap met for the first time: accepted when nothing of the other body lies between
@@ -126,11 +163,33 @@ void keep_records(const NarrowInput& in, const ContactBody& a, uint32_t p, Detec
         }
     }
     for (std::size_t k = 0; k < block.touched.size(); ++k) {
-        const NodeCandidate& best = block.best[k];
+        const ContactBody& b = in.bodies[block.touched[k]];
+        NodeCandidate& best = block.best[k];
+        const NodeCandidate* inside = block.inside_of[k] == UINT32_MAX ? nullptr : &block.inside[block.inside_of[k]];
+        if (inside && inside->found &&
+            (!best.found || (best.lowest < 0.0 && inside->start_gap < -kFallenRecovery * contact_length(a, b))) &&
+            inside_near(a, p, b, &b.triangles[3 * std::size_t(inside->triangle)], position(a.x_start, p))) {
+            best = *inside;
+            best.fallen = !in.scan_overlaps;
+        }
         if (!best.found) continue;
-        block.records.push_back(make_record(a, p, in.bodies[block.touched[k]], best, block.last[k]));
+        best.initial = in.scan_overlaps;
+        block.records.push_back(make_record(a, p, b, best, same_face(in, b, block.last[k], best)));
         if (best.fallen) block.fallen.add(FallenIn{1, a.slot});
         if (in.any_shapes) block.record_gap.push_back(best.gap), block.record_fallen.push_back(best.fallen);
+        if (best.shape != UINT32_MAX || best.slid || best.fallen) continue;
+        const uint32_t begin = block.accepted_begin[k];
+        const uint32_t end = k + 1 < block.touched.size() ? block.accepted_begin[k + 1] : uint32_t(block.accepted.size());
+        const NodeCandidate* second = nullptr;
+        for (uint32_t j = begin; j < end; ++j) {
+            const NodeCandidate& e = block.accepted[j];
+            if (e.triangle != best.triangle && form_valley(b, best, e) && (!second || e.gap > second->gap)) second = &e;
+        }
+        if (!second) continue;
+        NodeCandidate other = *second;
+        other.initial = in.scan_overlaps;
+        block.records.push_back(make_record(a, p, b, other, same_face(in, b, block.last[k], other)));
+        if (in.any_shapes) block.record_gap.push_back(other.gap), block.record_fallen.push_back(false);
     }
 }
 
@@ -147,9 +206,13 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     const double node_path = (position(a.x, p) - start).norm();
     block.touched.clear();
     block.best.clear();
+    block.inside.clear();
+    block.inside_of.clear();
     block.deep.clear();
     block.deep_of.clear();
     block.last.clear();
+    block.accepted.clear();
+    block.accepted_begin.clear();
     double allowance = 0.0, grow = 0.0, l = 0.0, reach_near = 0.0, reach_deep = 0.0;
     bool first_touch = false, deep = false;
     uint32_t grow_body = UINT32_MAX;
@@ -195,7 +258,11 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             }
             block.touched.push_back(bi);
             block.best.emplace_back();
+            const bool may_be_inside = b.inv_mass && b.node_elements;  // a deformable body
+            block.inside_of.push_back(may_be_inside ? uint32_t(block.inside.size()) : UINT32_MAX);
+            if (may_be_inside) block.inside.emplace_back();
             block.last.push_back(last);
+            block.accepted_begin.push_back(uint32_t(block.accepted.size()));
             allowance = allowed_depth(kept_offset(last), l);
             first_touch = deep && last == nullptr;
             // A possible initial overlap is kept only where the pair is met for the first time.
@@ -203,8 +270,11 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             if (first_touch) block.deep.emplace_back();
         }
         if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
-        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, held, block.best.back(),
-                                               first_touch ? &block.deep.back() : nullptr);
+        NodeSlots slots{block.best.back()};
+        slots.deep = first_touch ? &block.deep.back() : nullptr;
+        slots.inside = block.inside_of.back() == UINT32_MAX ? nullptr : &block.inside.back();
+        slots.accepted = &block.accepted;
+        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, held, slots);
         if (out.margin > 0.0 && out.height > 0.0) {
             skip.margin = out.margin, skip.height = out.height;
             skip.node_mark = track.odometer - node_path;
@@ -269,6 +339,7 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block,
                 test_node_shape(a, p, normal, o, uint32_t(c.shapes[k]), allowance, best, block.counts);
             if (in.scan_overlaps) best.fallen = false;  // an overlap of new bodies: let out gently
             if (best.found && best.shape != UINT32_MAX) {
+                best.initial = in.scan_overlaps;
                 block.merged.push_back(make_record(a, p, o, best, last));
                 // The shape's fall replaces the triangle's, counted by the triangle pass.
                 if (has_triangle && block.record_fallen[next]) block.fallen.nodes -= 1;
@@ -343,7 +414,7 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
     // `out` keeps its old records until the join overwrites them: resized, not cleared, so that
     // only the records beyond its last length are constructed before being copied over.
     double max_offset = 0.0;
-    for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -r.gap_after);
+    for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -std::min(r.gap_after, r.plane_gap));
     ContactCandidates& c = s.candidates;
     {
         PhaseTimer timer(profile.broad_phase);

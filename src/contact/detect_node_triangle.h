@@ -16,8 +16,8 @@
 
 namespace lfem {
 
-// Nodes found inside a static, kinematic or rigid body (or a shape) during the run, to be
-// pushed out: how many, and the slot of the body of the last one (in the list's order).
+// Nodes found inside another body (or a shape), or with self-contact their own, during the
+// run, to be pushed out: how many, and the slot of the body of the last one (in list order).
 struct FallenIn {
     uint64_t nodes = 0;
     uint32_t last_slot = UINT32_MAX;
@@ -40,9 +40,16 @@ struct DetectionBlock {
     std::vector<uint8_t> record_fallen;       // shape pass: the record is of a node fallen in
     std::vector<uint32_t> touched;            // bodies with a candidate for the current node
     std::vector<NodeCandidate> best;          // per touched body
+    std::vector<NodeCandidate> inside;        // per touched deformable body: the face of a node
+                                              //   that may be inside it
+    std::vector<uint32_t> inside_of;          // per touched body: its entry of inside, or none
     std::vector<NodeCandidate> deep;          // per touched body met for the first time
     std::vector<uint32_t> deep_of;            // per touched body: its entry of deep, or none
     std::vector<const ContactRecord*> last;   // per touched body: the pair's last record
+    std::vector<NodeCandidate> accepted;      // faces that would take the node, no better than the
+                                              //   best, turned from it (NodeSlots), and the bests
+                                              //   they were found beside
+    std::vector<uint32_t> accepted_begin;     // per touched body: its first in accepted
     ShapeQueryCounts counts;                  // the profile's counts, added in block order
     FallenIn fallen;                          // of the block's records
 };

@@ -33,8 +33,16 @@ constexpr double kEdgeTolerance = 0.01;
 // or outside it, sits on an edge for the rule that a face turned the same way as the node's
 // surface is the far side of that edge (node_face.cpp).
 constexpr double kEdgeBand = 0.05;
+// Valley: two faces that both hold a node, turned from each other by more than about 10
+// degrees (cosine 0.985), each in front of the other's plane (node_face.h, NodeSlots).
+constexpr double kValleyCos = 0.985;
+// Inside band: a node found inside a deformable body is taken by a face it lies behind while
+// its point lies within 0.25 (barycentric) of the triangle: that face is its way out (it may
+// lie beyond the edges of every face near it, come in through a crease or past a corner).
+constexpr double kInsideBand = 0.25;
 // An overlap found at the start of a step is removed over several steps, 20 % per step, but
-// never faster than 1e-3 l per step, rather than in one violent jump.
+// never faster than 1e-3 l per step for bodies created overlapping (gently, rather than in one
+// violent jump), never faster than 1e-2 l per step for one that came about during the run.
 constexpr double kOverlapRecovery = 0.2;
 constexpr double kMaxRecovery = 1e-3;
 // A node found inside another body during the run (it fell in: a fold, a solve cut short) is

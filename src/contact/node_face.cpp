@@ -71,6 +71,118 @@ bool face_normal(const ContactBody& b, uint32_t t, const FaceStep* face, const V
     return area2 > 0.0;
 }
 
+// Does one of the triangles around node p of `a` (at x*) face n, within about 75 degrees?
+bool some_face_faces(const ContactBody& a, uint32_t p, const Vec3& n) {
+    for (uint32_t k = a.node_triangle_begin[p]; k < a.node_triangle_begin[p + 1]; ++k) {
+        const uint32_t* tri = &a.triangles[3 * std::size_t(a.node_triangles[k])];
+        const Vec3 x0 = position(a.x, tri[0]);
+        const Vec3 m = (position(a.x, tri[1]) - x0).cross(position(a.x, tri[2]) - x0);
+        if (m.dot(n) < -0.25 * m.norm()) return true;
+    }
+    return false;
+}
+
+// The triangle of b across edge (u, v) from triangle t, or UINT32_MAX at an open border.
+uint32_t across_edge(const ContactBody& b, uint32_t t, uint32_t u, uint32_t v) {
+    for (uint32_t j = b.node_triangle_begin[u]; j < b.node_triangle_begin[u + 1]; ++j) {
+        const uint32_t o = b.node_triangles[j];
+        const uint32_t* other = &b.triangles[3 * std::size_t(o)];
+        if (o != t && (other[0] == v || other[1] == v || other[2] == v)) return o;
+    }
+    return UINT32_MAX;
+}
+
+// Does point x lie inside tet e of b (at x^n, by its corners) by more than 1e-3 of its height,
+// and is e none of node p's own (when a is b)?
+bool in_element(const ContactBody& a, uint32_t p, const ContactBody& b, uint32_t e, const Vec3& x) {
+    const uint32_t* nodes = b.elements + std::size_t(b.element_stride) * e;
+    if (&a == &b)
+        for (uint32_t i = 0; i < b.element_stride; ++i)
+            if (nodes[i] == p) return false;
+    const Vec3 v0 = position(b.x_start, nodes[0]);
+    const Vec3 e1 = position(b.x_start, nodes[1]) - v0, e2 = position(b.x_start, nodes[2]) - v0,
+               e3 = position(b.x_start, nodes[3]) - v0, d = x - v0;
+    const double volume = e1.dot(e2.cross(e3));
+    if (!(volume > 0.0)) return false;
+    const double margin = 1e-3 * volume;
+    const double w1 = d.dot(e2.cross(e3)), w2 = e1.dot(d.cross(e3)), w3 = e1.dot(e2.cross(d));
+    return w1 > margin && w2 > margin && w3 > margin && volume - w1 - w2 - w3 > margin;
+}
+
+}  // namespace
+
+bool inside_near(const ContactBody& a, uint32_t p, const ContactBody& b, const uint32_t* tri, const Vec3& x) {
+    if (!b.node_elements) return false;
+    for (int v = 0; v < 3; ++v)
+        for (uint32_t k = b.node_element_begin[tri[v]]; k < b.node_element_begin[tri[v] + 1]; ++k)
+            if (in_element(a, p, b, b.node_elements[k], x)) return true;
+    return false;
+}
+
+namespace {
+
+// The rule that a face turned the same way as the node's surface is the far side of an edge
+// the node sits on (test_node_triangle), for a node at triangle t of b (unit normal n) whose
+// point w lies within the edge band of an edge. It holds when the node's averaged normal
+// points the same way as n and none of the triangles around the node faces n (a thin strip's
+// corner: its averaged normal lies between its two faces' and may point away from a face that
+// one of them meets), unless the node has passed the face across every edge near its point:
+// started behind it deeper than the pair was left (`allowance`) and lies inside b. Then this
+// face is the last one between it and the outside (a corner of a soft cube on another, which
+// bulges out under it and engulfs it: the face it rested on is behind it, the side face holds).
+bool faces_away(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b, uint32_t t,
+                const double w[3], const Vec3& n, const Vec3& x_start, double allowance) {
+    if (!(node_normal.squaredNorm() > 0.0) || !(n.dot(node_normal) >= 0.0) || some_face_faces(a, p, n)) return false;
+    const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
+    for (int k = 0; k < 3; ++k) {
+        if (!(w[k] < kEdgeBand)) continue;
+        const uint32_t o = across_edge(b, t, tri[(k + 1) % 3], tri[(k + 2) % 3]);
+        if (o == UINT32_MAX) return true;  // an open border
+        const uint32_t* other = &b.triangles[3 * std::size_t(o)];
+        const Vec3 s0 = position(b.x_start, other[0]);
+        const Vec3 m = (position(b.x_start, other[1]) - s0).cross(position(b.x_start, other[2]) - s0);
+        if (!(m.dot(x_start - s0) < -allowance * m.norm()) || !inside_near(a, p, b, tri, x_start)) return true;
+    }
+    return false;
+}
+
+// The barycentric weights w of the point where node x meets triangle q (corners at the start
+// of the step) -> e (at its end). A path that crossed the plane: where it crossed (eq. 5), the
+// triangle moved by the same fraction of its own step; at or behind the face: the projection at
+// the end. False when the node passes beside a static face (see below).
+bool contact_point(const Vec3& x_start, const Vec3& x_end, double start_gap, double gap, const Vec3 q[3],
+                   const Vec3 e[3], bool still, double residual, double w[3]) {
+    if (!(start_gap >= 0.0 && gap < 0.0)) {
+        barycentric(x_end, e[0], e[1], e[2], w);
+        return true;
+    }
+    // Against a static face the weights are affine along the path: outside at both ends by
+    // more than the edge tolerance (and a margin for rounding), outside in between.
+    double w_end[3];
+    bool end_known = false;  // w_end holds the projection of x*
+    if (still) {
+        double w_start[3];
+        barycentric(x_start, e[0], e[1], e[2], w_start);
+        barycentric(x_end, e[0], e[1], e[2], w_end);
+        end_known = true;
+        for (int k = 0; k < 3; ++k)
+            if (w_start[k] < -kEdgeTolerance - 1e-9 && w_end[k] < -kEdgeTolerance - 1e-9) return false;
+    }
+    const double s = start_gap / (start_gap - gap);
+    barycentric(x_start + s * (x_end - x_start), q[0] + s * (e[0] - q[0]), q[1] + s * (e[1] - q[1]),
+                q[2] + s * (e[2] - q[2]), w);
+    // A node that starts at the face (no further in front than the residual depth) crossed
+    // where it started. Sliding across an edge onto this face it started just outside it, on
+    // the neighbour, whose test takes its point at the end (it ends behind that one's plane
+    // too, beyond the shared edge): neither would hold it. Its point at the end is then its
+    // point here, as for a node at or behind the face.
+    if (start_gap <= residual && !(std::min({w[0], w[1], w[2]}) >= -kEdgeTolerance)) {
+        if (!end_known) barycentric(x_end, e[0], e[1], e[2], w_end);
+        for (int k = 0; k < 3; ++k) w[k] = w_end[k];
+    }
+    return true;
+}
+
 }  // namespace
 
 double smallest_height(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -98,7 +210,7 @@ FaceStep face_step(const ContactBody& b, uint32_t t) {
 // with less penetration than what best holds.
 Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
                            uint32_t t, const FaceStep* face, double depth_allowance, const uint32_t* held,
-                           NodeCandidate& best, NodeCandidate* deep) {
+                           const NodeSlots& slots) {
     const uint32_t* tri = &b.triangles[3 * t];
     const Vec3 pa = position(b.x, tri[0]), pb = position(b.x, tri[1]), pc = position(b.x, tri[2]);
     Vec3 n;
@@ -112,16 +224,11 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
     // bulging side sinking into a floor), one whose point lies well inside the face sits on the
     // face, not on an edge (a corner of a tumbling soft body, its normal turned up by the bend,
     // pressing down on it), and an interior node (no surface around it: normal zero) faces every
-    // way.
+    // way. The rule's details are in faces_away below.
     const Vec3 x_end = position(a.x, p), x_start = position(a.x_start, p);
     const double gap = n.dot(x_end - pa);
     const double l = contact_length(a, b);
     if (gap > kCaptureBand * l) return {};
-    const bool faces_away =
-        gap > -kResidualDepth * l && node_normal.squaredNorm() > 0.0 && n.dot(node_normal) >= 0.0;
-    // A body's own face is met only by a part of its surface that comes at it from outside:
-    // facing it, at any depth (a node behind a face of its own body is inside the body).
-    if (&a == &b && !(n.dot(node_normal) < 0.0)) return {};
     // A static face is where it was at the start (the same bits), so its start normal is n.
     const bool still = !b.moves;
     const Vec3 qa = still ? pa : position(b.x_start, tri[0]);
@@ -130,68 +237,58 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
     const double pair_allowance = depth_allowance;
     if (start_gap < -depth_allowance && held)
         depth_allowance = neighbour_allowance(b, tri, n_start, held, x_start, l, depth_allowance);
-    NodeCandidate* slot = &best;
+    NodeCandidate* slot = &slots.best;
     if (start_gap < -depth_allowance) {
-        // Deeper than the pair was left: only a possible initial overlap (checked later).
-        if (start_gap < -kInitialDepth * l || !deep) return {};
-        slot = deep;
+        // Deeper than the pair was left: only a possible initial overlap (checked later), or,
+        // against a deformable body, possibly a node inside it (keep_records decides).
+        if (start_gap < -kInitialDepth * l) return {};
+        slot = slots.deep ? slots.deep : slots.inside;
+        if (!slot) return {};
     }
-    NodeCandidate& c = *slot;
-    if (c.found && gap <= c.gap) return {};  // keep the face penetrated least
-    double w[3], w_end[3];
-    bool end_known = false;  // w_end holds the projection of x*
-    if (start_gap >= 0.0 && gap < 0.0) {
-        // The path e -> f crossed the plane: the contact point is where it crossed (eq. 5),
-        // with the triangle moved by the same fraction of its own step. Against a static face
-        // the weights are affine along the path: outside at both ends by more than the edge
-        // tolerance (and a margin for rounding), outside in between.
-        if (still) {
-            double w_start[3];
-            barycentric(x_start, pa, pb, pc, w_start);
-            barycentric(x_end, pa, pb, pc, w_end);
-            end_known = true;
-            for (int k = 0; k < 3; ++k)
-                if (w_start[k] < -kEdgeTolerance - 1e-9 && w_end[k] < -kEdgeTolerance - 1e-9) return {};
-        }
-        const Vec3 qb = still ? pb : position(b.x_start, tri[1]), qc = still ? pc : position(b.x_start, tri[2]);
-        const double s = start_gap / (start_gap - gap);
-        barycentric(x_start + s * (x_end - x_start), qa + s * (pa - qa), qb + s * (pb - qb),
-                    qc + s * (pc - qc), w);
-        // A node that starts at the face (no further in front than the residual depth) crossed
-        // where it started. Sliding across an edge onto this face it started just outside it, on
-        // the neighbour, whose test takes its point at the end (it ends behind that one's plane
-        // too, beyond the shared edge): neither would hold it. Its point at the end is then its
-        // point here, as for a node at or behind the face.
-        if (start_gap <= kResidualDepth * l && !(std::min({w[0], w[1], w[2]}) >= -kEdgeTolerance)) {
-            if (!end_known) barycentric(x_end, pa, pb, pc, w_end);
-            for (int k = 0; k < 3; ++k) w[k] = w_end[k];
-        }
-    } else {
-        barycentric(x_end, pa, pb, pc, w);  // at or behind the face: its projection
-    }
+    NodeCandidate& best = slots.best;
+    const bool is_inside = slot == slots.inside;
+    // A face no better than the best so far matters only as the second face of a valley
+    // (keep_records): one turned from the best's by more than the valley angle.
+    const bool second_only = slot == &best && best.found && gap <= best.gap;
+    if (second_only && !(slots.accepted && n.dot(best.normal) < kValleyCos)) return {};
+    if (slot != &best && slot->found && gap <= slot->gap) return {};
+    double w[3];
+    const Vec3 q[3] = {qa, still ? pb : position(b.x_start, tri[1]), still ? pc : position(b.x_start, tri[2])};
+    const Vec3 e[3] = {pa, pb, pc};
+    if (!contact_point(x_start, x_end, start_gap, gap, q, e, still, kResidualDepth * l, w)) return {};
     const double lowest = std::min({w[0], w[1], w[2]});
-    if (faces_away && !(lowest >= kEdgeBand)) return {};
-    if (!(lowest >= -kEdgeTolerance)) {
+    if (!is_inside && gap > -kResidualDepth * l && !(lowest >= kEdgeBand) &&
+        faces_away(a, p, node_normal, b, t, w, n, x_start, pair_allowance))
+        return {};
+    // A possibly inside node is taken within a wider band: the face is its way out.
+    const double band = slots.inside ? kInsideBand : kEdgeTolerance;
+    if (!(lowest >= -(is_inside ? kInsideBand : kEdgeTolerance))) {
         // Outside the triangle that was tested (the crossing's, moved part way, or the end's):
-        // its smallest height, the end's less what the vertices moved on the way.
+        // its smallest height, the end's less what the vertices moved on the way. The margin is
+        // what the weight lacks for the widest band this pair may be taken in.
         Outside out;
-        const double margin = -kEdgeTolerance - lowest;
+        const double margin = -band - lowest;
         if (!(margin > 0.0)) return out;  // a NaN
         out.height = std::max(0.0, smallest_height(pa, pb, pc) - 2.0 * (face ? face->motion : 0.0));
         out.margin = std::min(margin, 0.25);
         return out;
     }
+    NodeCandidate taken;
+    NodeCandidate& c = second_only ? taken : *slot;
+    if (slot == &best && best.found && !second_only && slots.accepted) slots.accepted->push_back(best);
     c.found = true;
     c.triangle = t;
     c.shape = UINT32_MAX;
     c.gap = gap;
     c.start_gap = start_gap;
-    c.slid = held && start_gap < -pair_allowance;  // taken deeper than the pair was left
+    c.slid = (held && start_gap < -pair_allowance) || is_inside;  // taken deeper than the pair was left
+    c.lowest = lowest;
     c.normal = n;
     // Clamp the weights into the triangle: the force goes to its nodes, never outside.
     double sum = 0.0;
     for (int k = 0; k < 3; ++k) sum += (c.w[k] = std::max(0.0, w[k]));
     for (int k = 0; k < 3; ++k) c.w[k] /= sum;
+    if (second_only) slots.accepted->push_back(c);
     return {};
 }
 
@@ -237,9 +334,7 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
 bool own_triangle_in_reach(const ContactBody& a, uint32_t p, const uint32_t* triangle) {
     const uint32_t begin = a.node_triangle_begin[p], end = a.node_triangle_begin[p + 1];
     if (begin == end) return false;  // an interior node
-    for (uint32_t k = begin; k < end; ++k)
-        if (shares_node(&a.triangles[3 * std::size_t(a.node_triangles[k])], triangle)) return false;
-    return true;
+    return triangle[0] != p && triangle[1] != p && triangle[2] != p;
 }
 
 // The constraint of node p of `a` against the candidate face or shape of `b`, warm-started
@@ -262,22 +357,26 @@ ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b
     r.t2 = c.shape == UINT32_MAX ? c.w[1] : 0.0;
     r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
     // A node that starts the step inside is let out gradually (target gap < 0): by 20 % of
-    // the overlap per step, but never faster than 1e-3 of an edge per step, so bodies created
-    // deeply overlapping separate slowly instead of jumping apart; one found inside during the
-    // run (fallen in), never faster than 1e-2 of an edge. A pair in contact at the last step
-    // (and not letting out an overlap) has only the solve's residual to make up: at once.
+    // the overlap per step, but never faster than 1e-3 of an edge per step while the overlap is
+    // one of bodies as they were added (`gentle`: they separate slowly instead of jumping
+    // apart), never faster than 1e-2 of an edge for one that came about during the run (a node
+    // fallen in, one left deep by a face that turned under it: at 1e-3 of an edge a step, what a
+    // turning face adds back each step can match it). A pair in contact at the last step (and
+    // not letting out an overlap) has only the solve's residual to make up: at once.
     // A held node found deeper than the pair was left (it slid onto a neighbour of its face, or
-    // the face bent round it) makes up 1e-2 of an edge at once, as fast as one that fell in is
-    // let out, and is let out of the rest: made up at once, a depth of up to half an edge would
-    // crush its tets.
+    // the face bent round it), or found inside a deformable body (`slid` as well), makes up 1e-2
+    // of an edge at once and is let out of the rest: made up at once, a depth of up to half an
+    // edge would crush its tets.
     const bool held = last && last->offset <= 0.0;
     const double l = c.shape == UINT32_MAX ? contact_length(a, b) : a.edge_length;
+    const bool gentle = (c.initial && c.start_gap < 0.0 && !held) || (last && last->gentle);
     if (c.start_gap < 0.0 && c.slid) {
         r.offset = std::max(0.0, -c.start_gap - kFallenRecovery * l);
     } else if (c.start_gap < 0.0 && !held) {
         const double overlap = -c.start_gap;
-        r.offset = overlap - std::min(kOverlapRecovery * overlap, (c.fallen ? kFallenRecovery : kMaxRecovery) * l);
+        r.offset = overlap - std::min(kOverlapRecovery * overlap, (gentle ? kMaxRecovery : kFallenRecovery) * l);
     }
+    r.gentle = gentle && r.offset > 0.0;
     return r;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "common/math.h"
 #include "contact/contact_body.h"
@@ -33,7 +34,10 @@ struct NodeCandidate {
     double w[3] = {0, 0, 0};
     Vec3 normal = Vec3::Zero();
     bool fallen = false;   // found inside during the run, not among new bodies' overlaps
-    bool slid = false;     // held last step, now deeper than the pair was left (neighbour_allowance)
+    bool slid = false;     // taken deeper than the pair was left: held last step (neighbour_allowance),
+                           // or found inside a deformable body
+    bool initial = false;  // found when new bodies are checked for overlaps
+    double lowest = 0;     // the lowest barycentric weight of its point before clamping
 };
 
 // The profile's counts of rigid-shape queries.
@@ -57,10 +61,12 @@ struct FaceStep {
 double smallest_height(const Vec3& a, const Vec3& b, const Vec3& c);
 FaceStep face_step(const ContactBody& b, uint32_t t);
 
-// Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in `best`
-// if it is a valid contact penetrated less than what best holds. A node that starts the step
-// deeper than depth_allowance behind the face is only a possible initial overlap: kept in
-// *deep (when given) for the caller to check. `held`: the triangle of b (3 node indices) that
+// Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in
+// slots.best if it is a valid contact penetrated less than what best holds (NodeSlots says
+// where else it may go). A node that starts the step deeper than depth_allowance behind the
+// face is only a possible initial overlap, kept in slots.deep when given, or else a possible
+// node inside a deformable body, kept in slots.inside when given, for the caller to check
+// (keep_records in detect_node_triangle.cpp). `held`: the triangle of b (3 node indices) that
 // held the node last step, nullable: neighbours the surface bends from it towards the node
 // allow more depth (node_face.cpp). `face` is face_step(b, t), required when b moves;
 // null for a static body (its face normals made once) and for a sleeping one (static while
@@ -71,13 +77,29 @@ FaceStep face_step(const ContactBody& b, uint32_t t);
 // lowest weight below -kEdgeTolerance (at most 0.25), in `margin`, and the smallest height of
 // the triangle that was tested, in `height`; both 0 when it was turned away for any other reason
 // or kept. How far node and face must then move before the node could meet the face:
-// still_outside in detect_node_triangle.cpp.
+// still_outside in detect_node_triangle.cpp. (Against a deformable body the margin is measured
+// from the wider band, kInsideBand, in which a node inside it is taken.)
 struct Outside {
     double margin = 0, height = 0;
 };
+// Where test_node_triangle keeps what it finds for one node and other body: the face
+// penetrated least (best); a node that starts deeper than the pair was left, as a possible
+// initial overlap (deep, when given) or, against a deformable body, as possibly inside it
+// (inside, when given); the faces no better than best turned from it by more than the valley
+// angle, with every best it replaced (accepted, when given: keep_records' second faces).
+struct NodeSlots {
+    NodeCandidate& best;
+    NodeCandidate* deep = nullptr;
+    NodeCandidate* inside = nullptr;
+    std::vector<NodeCandidate>* accepted = nullptr;
+};
 Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
                            uint32_t t, const FaceStep* face, double depth_allowance, const uint32_t* held,
-                           NodeCandidate& best, NodeCandidate* deep);
+                           const NodeSlots& slots);
+
+// Does point x (node p of `a` at the start of the step) lie inside body b, in one of the tets
+// around the corners of triangle tri (node indices of b)? Never in a tet of p's own.
+bool inside_near(const ContactBody& a, uint32_t p, const ContactBody& b, const uint32_t* tri, const Vec3& x);
 
 // Node p of `a` against rigid shape j of `b`, by the same rules: within the capture band at the
 // end of the step, no deeper at its start than the pair was left, facing the node's surface.

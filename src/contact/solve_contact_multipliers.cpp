@@ -48,6 +48,24 @@ Vec3 relative_motion(const Pair& q) {
     return r;
 }
 
+// The gap the solve left as the next step's detection will measure it: the node's distance
+// from the plane of the triangle where its corners are now. The constraint held the gap along
+// the normal the triangle had at x*, at the weights of the point found there; a triangle that
+// the solve turned (a soft face pressed at one corner, a fold closing) leaves the node off its
+// new plane by the turn times the node's distance from the corner. The next step allows the
+// pair that depth and makes it up (detect_node_triangle.cpp, kept_offset); measured along the
+// old normal, the miss grew unseen, step after step, until the node was deeper than the pair
+// had been left and was dropped. A shape's surface point: along its normal.
+double plane_gap(const ContactRecord& r, const Pair& q) {
+    const Vec3 n(r.normal);
+    if (r.shape != UINT32_MAX) return n.dot(relative_position(q));
+    const Vec3 a = q.tri[0].position();
+    const Vec3 plane = (q.tri[1].position() - a).cross(q.tri[2].position() - a);
+    const double area2 = plane.norm();
+    if (!(area2 > 0.0)) return n.dot(relative_position(q));  // collapsed: no plane
+    return plane.dot(q.node.position() - a) / area2;
+}
+
 // Velocity of point i of body b over the last step, along axis k.
 double last_velocity(const ContactBody& b, uint32_t i, int k, double h) {
     return b.v_last ? b.v_last[3 * i + k] : (b.x[3 * i + k] - b.x_start[3 * i + k]) / h;
@@ -181,6 +199,7 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
     for (uint32_t k = 0; k < count; ++k) {
         ContactRecord& r = records[order[k]];
         r.gap_after = Vec3(r.normal).dot(relative_position(pairs[order[k]]));
+        r.plane_gap = plane_gap(r, pairs[order[k]]);
         // The true depth, kept overlaps included (they are let out over several steps).
         result.max_penetration = std::max(result.max_penetration, -r.gap_after);
     }

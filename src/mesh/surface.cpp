@@ -1,5 +1,7 @@
 #include "mesh/surface.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "common/math.h"
@@ -54,6 +56,57 @@ std::vector<uint32_t> split_quadratic_faces(const std::vector<uint32_t>& faces) 
         triangles.insert(triangles.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
     }
     return triangles;
+}
+
+void compute_triangle_elements(const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet, Surface& s) {
+    const uint32_t triangles = s.triangle_count();
+    s.triangle_element.assign(triangles, UINT32_MAX);
+    if (tet_count == 0) return;
+    // Each boundary face by its sorted corners: a flat triangle's own, or the corners of the
+    // 6-node face whose four flat triangles it is one of.
+    const bool quadratic = !s.quadratic_faces.empty();
+    using Key = std::array<uint32_t, 4>;  // sorted corners, then the face
+    std::vector<Key> faces;
+    const uint32_t face_count = quadratic ? uint32_t(s.quadratic_faces.size() / 6) : triangles;
+    faces.reserve(face_count);
+    for (uint32_t f = 0; f < face_count; ++f) {
+        const uint32_t* c = quadratic ? &s.quadratic_faces[6 * std::size_t(f)] : &s.triangles[3 * std::size_t(f)];
+        Key k = {c[0], c[1], c[2], f};
+        std::sort(k.begin(), k.begin() + 3);
+        faces.push_back(k);
+    }
+    std::sort(faces.begin(), faces.end());
+    static constexpr int kFaceCorners[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+    for (uint32_t e = 0; e < tet_count; ++e)
+        for (const auto& corners : kFaceCorners) {
+            Key k = {0, 0, 0, 0};
+            for (int i = 0; i < 3; ++i) k[i] = tets[std::size_t(nodes_per_tet) * e + corners[i]];
+            std::sort(k.begin(), k.begin() + 3);
+            const auto it = std::lower_bound(faces.begin(), faces.end(), k);
+            if (it == faces.end() || (*it)[0] != k[0] || (*it)[1] != k[1] || (*it)[2] != k[2]) continue;
+            const uint32_t f = (*it)[3];
+            if (quadratic)
+                for (uint32_t t = 4 * f; t < 4 * f + 4; ++t) s.triangle_element[t] = e;
+            else
+                s.triangle_element[f] = e;
+        }
+}
+
+void compute_node_elements(const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet, uint32_t node_count,
+                           Surface& s) {
+    std::vector<uint8_t> on_surface(node_count, 0);
+    for (uint32_t i : s.triangles) on_surface[i] = 1;
+    s.node_element_begin.assign(std::size_t(node_count) + 1, 0);
+    for (std::size_t k = 0; k < std::size_t(nodes_per_tet) * tet_count; ++k)
+        if (on_surface[tets[k]]) ++s.node_element_begin[tets[k] + 1];
+    for (uint32_t i = 0; i < node_count; ++i) s.node_element_begin[i + 1] += s.node_element_begin[i];
+    s.node_elements.resize(s.node_element_begin[node_count]);
+    std::vector<uint32_t> next(s.node_element_begin.begin(), s.node_element_begin.end() - 1);
+    for (uint32_t e = 0; e < tet_count; ++e)
+        for (uint32_t v = 0; v < nodes_per_tet; ++v) {
+            const uint32_t i = tets[std::size_t(nodes_per_tet) * e + v];
+            if (on_surface[i]) s.node_elements[next[i]++] = e;
+        }
 }
 
 void compute_node_triangles(uint32_t node_count, Surface& s) {

@@ -23,6 +23,12 @@ struct Surface {
     // node_triangles[node_triangle_begin[i] .. node_triangle_begin[i + 1]) (derived from the
     // triangles; not saved in checkpoints).
     std::vector<uint32_t> node_triangle_begin, node_triangles;
+    // The tet each triangle bounds (UINT32_MAX for a surface without tets), derived from the
+    // tets and the triangles like the lists above.
+    std::vector<uint32_t> triangle_element;
+    // The tets around each surface node: node i's are
+    // node_elements[node_element_begin[i] .. node_element_begin[i + 1]) (none for other nodes).
+    std::vector<uint32_t> node_element_begin, node_elements;
 
     uint32_t triangle_count() const { return uint32_t(triangles.size() / 3); }
 };
@@ -34,6 +40,13 @@ void compute_surface_data(const double* X, uint32_t node_count, Surface& surface
 // The 4 flat triangles (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca) of each 6-node face
 // (6 indices per face as in Surface::quadratic_faces), oriented as the face: 12 indices per face.
 std::vector<uint32_t> split_quadratic_faces(const std::vector<uint32_t>& faces);
+
+// The tet that each triangle bounds: tets of nodes_per_tet nodes (4 or 10, corners first).
+void compute_triangle_elements(const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet, Surface& surface);
+
+// The tets around each surface node.
+void compute_node_elements(const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet, uint32_t node_count,
+                           Surface& surface);
 
 // The node-triangle lists (they depend on the triangles alone).
 void compute_node_triangles(uint32_t node_count, Surface& surface);

@@ -198,6 +198,9 @@ void derive_reference_data(const Body& body, BodyReference& ref) {
     ref.composite = body.def.composite_tets != 0;
     ref.colouring = colour_tets(ref);
     compute_node_triangles(ref.node_count(), ref.surface);
+    compute_triangle_elements(ref.tets.data(), ref.tet_count(), ref.nodes_per_tet, ref.surface);
+    if (body.is_deformable())
+        compute_node_elements(ref.tets.data(), ref.tet_count(), ref.nodes_per_tet, ref.node_count(), ref.surface);
     ref.every_node.clear();
     if (body.is_deformable())
         for (uint32_t i = 0; i < ref.node_count(); ++i) ref.every_node.push_back(i);

@@ -24,24 +24,25 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 8;  // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 9;  // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
                                         // sleeping, the touching pairs; 7: 10-node tets (nodes
-                                        // per tet, quadrature volumes, 6-node faces); 8: skins
+                                        // per tet, quadrature volumes, 6-node faces); 8: skins;
+                                        // 9: contacts' plane gap and gentle flag
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 648,  // colouring, node-triangle lists, tree: derived
+static_assert(sizeof(BodyReference) == 720,  // colouring, node-triangle lists, triangle elements, tree: derived
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
 static_assert(sizeof(Attachment) == 240, "Attachment changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
-static_assert(sizeof(ContactRecord) == 176, "ContactRecord changed: update the checkpoint");
+static_assert(sizeof(ContactRecord) == 184, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
 static_assert(sizeof(Skin) == 80, "Skin changed: update the checkpoint");
 #endif
@@ -144,7 +145,7 @@ template <class A, class C>
 void contact_fields(A& a, C& c) {
     a(c.body_a), a(c.node), a(c.body_b), a(c.triangle), a(c.shape), a(c.point_start);
     a(c.point_end), a(c.t1), a(c.t2), a(c.normal), a(c.lambda_n), a(c.lambda_t), a(c.offset);
-    a(c.gap_after), a(c.sliding);
+    a(c.gap_after), a(c.plane_gap), a(c.sliding), a(c.gentle);
 }
 
 template <class A, class S>

@@ -132,6 +132,8 @@ void World::detect() {
         in.type = b.state.asleep ? LFEM_BODY_STATIC : b.def.type;
         in.surface = &b.ref.surface;
         in.every_node = &b.ref.every_node;
+        in.elements = b.ref.tets.empty() ? nullptr : b.ref.tets.data();
+        in.nodes_per_tet = b.ref.nodes_per_tet;
         in.node_count = b.ref.node_count();
         in.x = b.state.x.data();
         in.x_start = b.is_deformable() ? sc.start.x.data() : sc.x_start.data();

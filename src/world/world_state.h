@@ -26,7 +26,7 @@ struct Warning {
 struct Warnings {
     Warning inverted_tets;    // sub-steps that ended with a body's tet turned inside out (per body)
     Warning stays_inverted;   // a body kept inverted tets for kStaysInverted s in a row
-    Warning fallen_in;        // nodes found inside a static, kinematic or rigid body, pushed out
+    Warning fallen_in;        // nodes found inside another body (or their own), pushed out
     Warning unconverged;      // a contact solve stopped at contact_iterations sweeps (no body)
 };
 

@@ -234,4 +234,95 @@ inline double depth_in_tet(const std::vector<double>& x, const uint32_t* q, cons
     return std::min(std::min(1.0 - b1 - b2 - b3, b1), std::min(b2, b3));
 }
 
+// Distance from point y to the triangle with corners a, b, c (the closest point found by the
+// triangle's Voronoi regions: corners, edges, face).
+inline double distance_to_triangle(const double* y, const double* a, const double* b, const double* c) {
+    auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+    double ab[3], ac[3], ap[3], bp[3], cp[3];
+    for (int k = 0; k < 3; ++k) ab[k] = b[k] - a[k], ac[k] = c[k] - a[k], ap[k] = y[k] - a[k], bp[k] = y[k] - b[k], cp[k] = y[k] - c[k];
+    auto from = [&](const double* o, const double* u, double s, const double* v, double t) {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double q = o[k] + s * u[k] + t * v[k] - y[k];
+            d2 += q * q;
+        }
+        return std::sqrt(d2);
+    };
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp), d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d1 <= 0 && d2 <= 0) return from(a, ab, 0, ac, 0);
+    if (d3 >= 0 && d4 <= d3) return from(a, ab, 1, ac, 0);
+    if (d6 >= 0 && d5 <= d6) return from(a, ab, 0, ac, 1);
+    const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return from(a, ab, d1 / (d1 - d3), ac, 0);
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return from(a, ab, 0, ac, d2 / (d2 - d6));
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return from(a, ab, 1 - w, ac, w);
+    }
+    const double den = va + vb + vc;
+    return from(a, ab, vb / den, ac, vc / den);
+}
+
+// A body's geometry as the depth measure below reads it: positions, tets (4 nodes each) and
+// boundary triangles, all in the caller's numbering.
+struct BodyShape {
+    std::vector<double> x;
+    const uint32_t* tets = nullptr;
+    uint32_t tet_count = 0;
+    std::vector<uint32_t> triangles;
+};
+
+inline BodyShape body_shape(lfem_world* w, lfem_body b, const Mesh& mesh) {
+    BodyShape s;
+    s.x = positions(w, b);
+    s.tets = lfem_mesh_get_tets(mesh.m);
+    s.tet_count = mesh.tets();
+    uint32_t count = 0;
+    EXPECT_EQ(lfem_body_get_boundary_triangle_count(w, b, &count), LFEM_OK);
+    s.triangles.resize(3 * std::size_t(count));
+    EXPECT_EQ(lfem_body_get_boundary_triangles(w, b, s.triangles.data(), count), LFEM_OK);
+    return s;
+}
+
+// How far point y lies inside a body: 0 when it lies in none of its tets, else its distance
+// from the body's surface, the true depth of a node that has passed through it (a node at an
+// interior face between two tets, in neither by much, is as deep as it is). `own`: y is that
+// node of the body itself (UINT32_MAX: it is not), whose own tets and triangles are left out
+// (it lies on them). Brute force, for the small meshes of the tests.
+inline double depth_inside(const double* y, const BodyShape& s, uint32_t own = UINT32_MAX) {
+    bool inside = false;
+    for (uint32_t e = 0; e < s.tet_count && !inside; ++e) {
+        const uint32_t* q = s.tets + 4 * e;
+        if (q[0] == own || q[1] == own || q[2] == own || q[3] == own) continue;
+        bool beside = false;
+        for (int k = 0; k < 3 && !beside; ++k) {
+            double lo = HUGE_VAL, hi = -HUGE_VAL;
+            for (int a = 0; a < 4; ++a) lo = std::min(lo, s.x[3 * q[a] + k]), hi = std::max(hi, s.x[3 * q[a] + k]);
+            beside = y[k] < lo || y[k] > hi;
+        }
+        inside = !beside && depth_in_tet(s.x, q, y) >= 0.0;
+    }
+    if (!inside) return 0.0;
+    double depth = HUGE_VAL;
+    for (std::size_t t = 0; t < s.triangles.size(); t += 3) {
+        const uint32_t* f = &s.triangles[t];
+        if (f[0] == own || f[1] == own || f[2] == own) continue;
+        depth = std::min(depth, distance_to_triangle(y, &s.x[3 * f[0]], &s.x[3 * f[1]], &s.x[3 * f[2]]));
+    }
+    return depth;
+}
+
+// The mean edge of a body's boundary triangles (m), as the library scales its tolerances.
+inline double mean_boundary_edge(const BodyShape& s) {
+    double sum = 0;
+    for (std::size_t t = 0; t < s.triangles.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t u = s.triangles[t + k], v = s.triangles[t + (k + 1) % 3];
+            double d2 = 0;
+            for (int c = 0; c < 3; ++c) d2 += (s.x[3 * u + c] - s.x[3 * v + c]) * (s.x[3 * u + c] - s.x[3 * v + c]);
+            sum += std::sqrt(d2);
+        }
+    return sum / double(s.triangles.size());
+}
+
 }  // namespace lfem_test

@@ -57,7 +57,7 @@ struct Seam {
         NodeCandidate c;
         const Vec3 down(0, 0, -1);  // the node's surface faces the floor
         const double allowance = lfem::kResidualDepth;  // a pair held last step with no residual
-        for (uint32_t t = 0; t < 2; ++t) lfem::test_node_triangle(node, 0, down, face, t, nullptr, allowance, nullptr, c, nullptr);
+        for (uint32_t t = 0; t < 2; ++t) lfem::test_node_triangle(node, 0, down, face, t, nullptr, allowance, nullptr, lfem::NodeSlots{c});
         return c;
     }
 };

@@ -42,7 +42,7 @@ class WarningKind(enum.IntEnum):
 
     INVERTED_TETS = 0   # a sub-step ended with inverted tets in a body: once per body and sub-step
     STAYS_INVERTED = 1  # a body kept inverted tets for 0.5 s in a row: once per spell
-    FALLEN_IN = 2       # nodes found inside a static, kinematic or rigid body, pushed out
+    FALLEN_IN = 2       # nodes found inside another body (or their own), pushed out
     UNCONVERGED = 3     # a contact solve used every sweep and ended above its tolerance
 
 

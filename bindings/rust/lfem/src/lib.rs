@@ -573,7 +573,8 @@ pub enum WarningKind {
     InvertedTets,
     /// A body kept inverted tets for 0.5 s in a row: once per spell.
     StaysInverted,
-    /// Nodes found inside a static, kinematic or rigid body (or a shape), pushed back out.
+    /// Nodes found inside another body (or a shape), or inside their own with self-contact,
+    /// pushed back out.
     FallenIn,
     /// A contact solve used every sweep and ended above its tolerance.
     Unconverged,
