@@ -69,18 +69,6 @@ double far_reach(const ContactCandidates& c, double l, bool deep, double node_pa
     return std::max(kCaptureBand * l, behind) + 2.0 * node_path;
 }
 
-// The outward normal of node p of body a at x*: the sum of the area-weighted normals of the
-// triangles around it (in triangle order), normalised.
-Vec3 node_normal(const ContactBody& a, uint32_t p) {
-    Vec3 sum = Vec3::Zero();
-    for (uint32_t k = a.node_triangle_begin[p]; k < a.node_triangle_begin[p + 1]; ++k) {
-        const uint32_t* tri = &a.triangles[3 * std::size_t(a.node_triangles[k])];
-        const Vec3 x0 = position(a.x, tri[0]);
-        sum += (position(a.x, tri[1]) - x0).cross(position(a.x, tri[2]) - x0);
-    }
-    return sum.normalized();
-}
-
 // Was the pair held at a triangle last step (not at a shape, not letting out an overlap)?
 bool held_at_face(const ContactRecord* last) { return last && last->shape == UINT32_MAX && last->offset <= 0.0; }
 
@@ -98,14 +86,10 @@ Aabb path_box(const ContactBody& a, uint32_t p) {
 // reaches its path: at most one record per other body, in body order, appended to the block's
 // records. The candidates come in body order, then triangle order: `touched` stays sorted, and
 // a body's best and deepest faces are the last entries while its triangles are tested.
-// Node g's outward normal, computed on first use and kept in slave_normals.
-const Vec3& normal_of(const NarrowInput& in, uint32_t g, Vec3* slave_normals, uint8_t* ready) {
-    if (!ready[g]) {
-        const ContactCandidates& c = in.s.candidates;
-        slave_normals[g] = node_normal(in.bodies[c.body[g]], c.node[g]);
-        ready[g] = 1;
-    }
-    return slave_normals[g];
+// Candidate node g's outward normal, made when first asked for and kept in slave_normals.
+NodeNormal normal_of(const NarrowInput& in, uint32_t g, Vec3* slave_normals, uint8_t* ready) {
+    const ContactCandidates& c = in.s.candidates;
+    return NodeNormal{in.bodies[c.body[g]], c.node[g], &slave_normals[g], &ready[g]};
 }
 
 // Two faces that both hold a node and face each other across it (a valley of a fold closing
@@ -219,7 +203,7 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
     const ContactRecord* last = nullptr;  // the last step's record of (node, body), once looked up
     bool last_known = false;
     const uint32_t* held = nullptr;  // the triangle of the met body that held the node last step
-    const Vec3* normal = nullptr;
+    const NodeNormal normal = normal_of(in, g, slave_normals, ready);
     for (uint32_t k = c.triangle_begin[g]; k < c.triangle_begin[g + 1]; ++k) {
         const uint32_t bi = uint32_t(c.triangles[k] >> 32), t = uint32_t(c.triangles[k]);
         const ContactBody& b = in.bodies[bi];
@@ -269,12 +253,11 @@ void test_node_triangles(const NarrowInput& in, uint32_t g, DetectionBlock& bloc
             block.deep_of.push_back(first_touch ? uint32_t(block.deep.size()) : UINT32_MAX);
             if (first_touch) block.deep.emplace_back();
         }
-        if (!normal) normal = &normal_of(in, g, slave_normals, ready);  // once, when first needed
         NodeSlots slots{block.best.back()};
         slots.deep = first_touch ? &block.deep.back() : nullptr;
         slots.inside = block.inside_of.back() == UINT32_MAX ? nullptr : &block.inside.back();
         slots.accepted = &block.accepted;
-        const Outside out = test_node_triangle(a, p, *normal, b, t, face, allowance, held, slots);
+        const Outside out = test_node_triangle(a, p, normal, b, t, face, allowance, held, slots);
         if (out.margin > 0.0 && out.height > 0.0) {
             skip.margin = out.margin, skip.height = out.height;
             skip.node_mark = track.odometer - node_path;
@@ -322,7 +305,7 @@ void test_block_shapes(const NarrowInput& in, uint32_t b, DetectionBlock& block,
     for (uint32_t g = first; g < end; ++g) {
         const ContactBody& a = in.bodies[c.body[g]];
         const uint32_t p = c.node[g];
-        const Vec3 normal = c.shape_begin[g + 1] > c.shape_begin[g] ? normal_of(in, g, slave_normals, ready) : Vec3::Zero();
+        const Vec3 normal = c.shape_begin[g + 1] > c.shape_begin[g] ? normal_of(in, g, slave_normals, ready).get() : Vec3::Zero();
         const uint32_t begin = block.record_begin[g - first], stop = block.record_begin[g - first + 1];
         uint32_t next = begin;  // this node's records, ordered by body
         for (uint32_t k = c.shape_begin[g]; k < c.shape_begin[g + 1];) {

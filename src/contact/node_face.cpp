@@ -185,6 +185,16 @@ bool contact_point(const Vec3& x_start, const Vec3& x_end, double start_gap, dou
 
 }  // namespace
 
+Vec3 node_normal(const ContactBody& a, uint32_t p) {
+    Vec3 sum = Vec3::Zero();
+    for (uint32_t k = a.node_triangle_begin[p]; k < a.node_triangle_begin[p + 1]; ++k) {
+        const uint32_t* tri = &a.triangles[3 * std::size_t(a.node_triangles[k])];
+        const Vec3 x0 = position(a.x, tri[0]);
+        sum += (position(a.x, tri[1]) - x0).cross(position(a.x, tri[2]) - x0);
+    }
+    return sum.normalized();
+}
+
 double smallest_height(const Vec3& a, const Vec3& b, const Vec3& c) {
     const double longest = std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
     return longest > 0.0 ? (b - a).cross(c - a).norm() / longest : 0.0;
@@ -208,7 +218,7 @@ FaceStep face_step(const ContactBody& b, uint32_t t) {
 
 // Test node p of `a` against triangle t of `b`; keep it in `best` if it is a valid contact
 // with less penetration than what best holds.
-Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+Outside test_node_triangle(const ContactBody& a, uint32_t p, const NodeNormal& node_normal, const ContactBody& b,
                            uint32_t t, const FaceStep* face, double depth_allowance, const uint32_t* held,
                            const NodeSlots& slots) {
     const uint32_t* tri = &b.triangles[3 * t];
@@ -258,7 +268,7 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_no
     if (!contact_point(x_start, x_end, start_gap, gap, q, e, still, kResidualDepth * l, w)) return {};
     const double lowest = std::min({w[0], w[1], w[2]});
     if (!is_inside && gap > -kResidualDepth * l && !(lowest >= kEdgeBand) &&
-        faces_away(a, p, node_normal, b, t, w, n, x_start, pair_allowance))
+        faces_away(a, p, node_normal.get(), b, t, w, n, x_start, pair_allowance))
         return {};
     // A possibly inside node is taken within a wider band: the face is its way out.
     const double band = slots.inside ? kInsideBand : kEdgeTolerance;

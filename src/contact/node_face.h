@@ -61,7 +61,7 @@ struct FaceStep {
 double smallest_height(const Vec3& a, const Vec3& b, const Vec3& c);
 FaceStep face_step(const ContactBody& b, uint32_t t);
 
-// Node p of `a` (outward normal node_normal at x*) against triangle t of `b`: kept in
+// Node p of `a` (its outward normal at x*: node_normal) against triangle t of `b`: kept in
 // slots.best if it is a valid contact penetrated less than what best holds (NodeSlots says
 // where else it may go). A node that starts the step deeper than depth_allowance behind the
 // face is only a possible initial overlap, kept in slots.deep when given, or else a possible
@@ -82,6 +82,23 @@ FaceStep face_step(const ContactBody& b, uint32_t t);
 struct Outside {
     double margin = 0, height = 0;
 };
+// The outward unit normal of node p of `a` at x*: the normalised sum of the area-weighted normals
+// of the triangles around it (zero for an interior node).
+Vec3 node_normal(const ContactBody& a, uint32_t p);
+
+// Node p's normal, made when first asked for (the facing rule needs it only for a node at a
+// face's edge) and kept in *value, with *ready set.
+struct NodeNormal {
+    const ContactBody& a;
+    uint32_t p;
+    Vec3* value;
+    uint8_t* ready;
+    const Vec3& get() const {
+        if (!*ready) *value = node_normal(a, p), *ready = 1;
+        return *value;
+    }
+};
+
 // Where test_node_triangle keeps what it finds for one node and other body: the face
 // penetrated least (best); a node that starts deeper than the pair was left, as a possible
 // initial overlap (deep, when given) or, against a deformable body, as possibly inside it
@@ -93,7 +110,7 @@ struct NodeSlots {
     NodeCandidate* inside = nullptr;
     std::vector<NodeCandidate>* accepted = nullptr;
 };
-Outside test_node_triangle(const ContactBody& a, uint32_t p, const Vec3& node_normal, const ContactBody& b,
+Outside test_node_triangle(const ContactBody& a, uint32_t p, const NodeNormal& node_normal, const ContactBody& b,
                            uint32_t t, const FaceStep* face, double depth_allowance, const uint32_t* held,
                            const NodeSlots& slots);
 

@@ -55,9 +55,11 @@ struct Seam {
     // Both faces tested, as the narrow phase tests a node's candidates: the face that holds it.
     NodeCandidate best() const {
         NodeCandidate c;
-        const Vec3 down(0, 0, -1);  // the node's surface faces the floor
+        Vec3 down(0, 0, -1);  // the node's surface faces the floor
+        uint8_t known = 1;
+        const lfem::NodeNormal normal{node, 0, &down, &known};
         const double allowance = lfem::kResidualDepth;  // a pair held last step with no residual
-        for (uint32_t t = 0; t < 2; ++t) lfem::test_node_triangle(node, 0, down, face, t, nullptr, allowance, nullptr, lfem::NodeSlots{c});
+        for (uint32_t t = 0; t < 2; ++t) lfem::test_node_triangle(node, 0, normal, face, t, nullptr, allowance, nullptr, lfem::NodeSlots{c});
         return c;
     }
 };
