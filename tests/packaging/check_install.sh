@@ -26,21 +26,26 @@ prefix="$work/prefix"
 
 bash "$here/install_prefix.sh" "$cmake" "$build" "$prefix"
 
-# ---- the installed header tree: lfem.h, nothing else, and no Eigen or libccd in it -----------
+# ---- the installed header tree: lfem.h and the lfem_types.h it includes, nothing else, and no
+# Eigen or libccd in them ------------------------------------------------------------------------
 step "installed headers under $includedir/"
 [[ -d "$prefix/$includedir" ]] || die "no $includedir/ folder installed"
 headers=$(cd "$prefix/$includedir" && find . -mindepth 1 | sed 's|^\./||' | LC_ALL=C sort)
 sed 's/^/   /' <<< "$headers"
-[[ "$headers" == "lfem.h" ]] ||
-  die "the installed header tree must hold only lfem.h, found: $(echo "$headers" | tr '\n' ' ')"
-if includes=$(grep -nE '^[[:space:]]*#[[:space:]]*include' "$prefix/$includedir/lfem.h"); then
-  if echo "$includes" | grep -iE 'eigen|ccd'; then
-    die "the installed lfem.h includes Eigen or libccd (above): they must stay private"
+[[ "$headers" == $'lfem.h\nlfem_types.h' ]] ||
+  die "the installed header tree must hold only lfem.h and lfem_types.h, found: $(echo "$headers" | tr '\n' ' ')"
+for h in $headers; do
+  if includes=$(grep -nE '^[[:space:]]*#[[:space:]]*include' "$prefix/$includedir/$h"); then
+    if echo "$includes" | grep -iE 'eigen|ccd'; then
+      die "the installed $h includes Eigen or libccd (above): they must stay private"
+    fi
+    # A project header it includes must be installed beside it.
+    for name in $(sed -nE 's/.*#[[:space:]]*include[[:space:]]*"([^"]+)".*/\1/p' <<< "$includes"); do
+      [[ -f "$prefix/$includedir/$name" ]] ||
+        die "the installed $h includes \"$name\", which is not installed"
+    done
   fi
-  if echo "$includes" | grep -F '"'; then
-    die "the installed lfem.h includes a project header (above) that is not installed"
-  fi
-fi
+done
 
 export LD_LIBRARY_PATH="$prefix/$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 exe="$work/consumer"
