@@ -26,24 +26,19 @@ prefix="$work/prefix"
 
 bash "$here/install_prefix.sh" "$cmake" "$build" "$prefix"
 
-# ---- the installed header tree: lfem.h and the lfem_types.h it includes, nothing else, and no
-# Eigen or libccd in them ------------------------------------------------------------------------
+# ---- the installed header tree: lfem.h and the headers it includes (public_headers.sh), nothing
+# else, and no Eigen or libccd in them ----------------------------------------------------------
 step "installed headers under $includedir/"
-[[ -d "$prefix/$includedir" ]] || die "no $includedir/ folder installed"
+[[ -f "$prefix/$includedir/lfem.h" ]] || die "no $includedir/lfem.h installed"
 headers=$(cd "$prefix/$includedir" && find . -mindepth 1 | sed 's|^\./||' | LC_ALL=C sort)
 sed 's/^/   /' <<< "$headers"
-[[ "$headers" == $'lfem.h\nlfem_types.h' ]] ||
-  die "the installed header tree must hold only lfem.h and lfem_types.h, found: $(echo "$headers" | tr '\n' ' ')"
+# A header lfem.h includes that was not installed makes public_headers.sh fail (set -e).
+expected=$(bash "$here/public_headers.sh" "$prefix/$includedir/lfem.h" | xargs -n1 basename | LC_ALL=C sort)
+[[ "$headers" == "$expected" ]] ||
+  die "the installed header tree must hold lfem.h and what it includes ($(echo $expected)), found: $(echo $headers)"
 for h in $headers; do
-  if includes=$(grep -nE '^[[:space:]]*#[[:space:]]*include' "$prefix/$includedir/$h"); then
-    if echo "$includes" | grep -iE 'eigen|ccd'; then
-      die "the installed $h includes Eigen or libccd (above): they must stay private"
-    fi
-    # A project header it includes must be installed beside it.
-    for name in $(sed -nE 's/.*#[[:space:]]*include[[:space:]]*"([^"]+)".*/\1/p' <<< "$includes"); do
-      [[ -f "$prefix/$includedir/$name" ]] ||
-        die "the installed $h includes \"$name\", which is not installed"
-    done
+  if grep -nE '^[[:space:]]*#[[:space:]]*include.*(eigen|ccd)' -i "$prefix/$includedir/$h"; then
+    die "the installed $h includes Eigen or libccd (above): they must stay private"
   fi
 done
 

@@ -1,6 +1,8 @@
-// lfem.h compiles as strict C++11 (-std=c++11 -pedantic -Werror, see CMakeLists.txt), stands
-// alone, and its declarations have C linkage: these calls link only if the header wraps them
-// in extern "C". Exit status 0 on success.
+// lfem.h compiles as strict C++11 (-std=c++11 -pedantic -Werror, see CMakeLists.txt), and its
+// declarations have C linkage: these calls link only if the header wraps them in extern "C".
+// lfem_types.h, which lfem.h includes, stands alone (it is included first here; header_c99.c
+// includes lfem.h first), and both survive a second inclusion. Exit status 0 on success.
+#include <lfem_types.h>
 #include <lfem.h>
 #include <lfem.h>
 
