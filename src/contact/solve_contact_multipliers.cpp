@@ -13,9 +13,6 @@
 namespace lfem {
 namespace {
 
-// Records per block of the pass that makes their pairs (fixed: the same for any thread count).
-constexpr uint32_t kRecordBlock = 128;
-
 // The pieces of one constraint the sweeps need, resolved once.
 struct Pair {
     PointRef node;
@@ -23,6 +20,7 @@ struct Pair {
     double N[3];   // barycentric weights (1 - t1 - t2, t2, t1)
     double H;      // the pair's scalar block of G Mhat^-1 G^T along the normal
     double mu;
+    bool fixed = false;  // the other side is one immovable point (a shape's, a static triangle's)
 };
 
 // Move the pair's points by Mhat^-1 G_j^T d: the node by +d, triangle node k by -N_k d.
@@ -58,7 +56,7 @@ Vec3 relative_motion(const Pair& q) {
 // had been left and was dropped. A shape's surface point: along its normal.
 double plane_gap(const ContactRecord& r, const Pair& q) {
     const Vec3 n(r.normal);
-    if (r.shape != UINT32_MAX) return n.dot(relative_position(q));
+    if (q.fixed) return n.dot(relative_position(q));  // a plane that does not turn
     const Vec3 a = q.tri[0].position();
     const Vec3 plane = (q.tri[1].position() - a).cross(q.tri[2].position() - a);
     const double area2 = plane.norm();
@@ -113,10 +111,9 @@ uint32_t root_of(std::vector<uint32_t>& parent, uint32_t i) {
 struct GroupResult {
     ContactSolveResult solve;
     double seconds = 0, friction_seconds = 0;
+    double motion = 0, length = HUGE_VAL;  // the group's largest pair motion, finest edge
 };
 
-// Projected Gauss-Seidel over one group's pairs (indices `order`, in list order): the warm
-// start, then sweeps until one moves no point by more than `tolerance`.
 // A group's links: links[order[0 .. count)] with their pairs.
 struct GroupLinks {
     std::vector<LinkRecord>& links;
@@ -125,26 +122,28 @@ struct GroupLinks {
     uint32_t count;
 };
 
-void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, const uint32_t* order,
-                 uint32_t count, const GroupLinks& held, uint32_t max_iterations, double tolerance, GroupResult& out) {
+// Projected Gauss-Seidel over one group's records (records[order[k]], k < count, in list
+// order; pairs[k] is the pair of records[order[k]]): the warm start, then sweeps until one
+// moves no point by more than `tolerance`.
+void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_t* order, uint32_t count,
+                 const GroupLinks& held, uint32_t max_iterations, double tolerance, GroupResult& out) {
     const auto group_start = std::chrono::steady_clock::now();
     ContactSolveResult& result = out.solve;
     for (uint32_t k = 0; k < held.count; ++k) warm_start_link(held.links[held.order[k]], held.pairs[held.order[k]]);
     // Warm start: the multipliers the records carry in (last step's, for the same node and
     // body) are applied first, so a resting contact starts converged.
     for (uint32_t k = 0; k < count; ++k) {
-        const uint32_t j = order[k];
-        ContactRecord& r = records[j];
-        if (!(pairs[j].H > 0.0)) {
+        ContactRecord& r = records[order[k]];
+        if (!(pairs[k].H > 0.0)) {
             r.lambda_n = 0.0, r.lambda_t[0] = r.lambda_t[1] = r.lambda_t[2] = 0.0;
             continue;
         }
         const Vec3 n(r.normal);
         Vec3 lt(r.lambda_t);
         lt -= n * n.dot(lt);  // the normal may have turned since: keep the tangential part
-        if (pairs[j].mu == 0.0) lt.setZero();
+        if (pairs[k].mu == 0.0) lt.setZero();
         for (int d = 0; d < 3; ++d) r.lambda_t[d] = lt[d];
-        apply(pairs[j], r.lambda_n * n + lt);
+        apply(pairs[k], r.lambda_n * n + lt);
     }
 
     // Each sweep: the normal updates of every pair, then the friction updates of the pairs
@@ -152,14 +151,14 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
     // two passes so each part's time can be measured on its own).
     bool any_friction = false;
     for (uint32_t k = 0; k < count; ++k) {
-        const Pair& q = pairs[order[k]];
+        const Pair& q = pairs[k];
         any_friction = any_friction || (q.mu > 0.0 && q.H > 0.0);
     }
     for (uint32_t sweep = 0; sweep < max_iterations; ++sweep) {
         double largest = 0.0;
         for (uint32_t k = 0; k < count; ++k) {
             ContactRecord& r = records[order[k]];
-            Pair& q = pairs[order[k]];
+            Pair& q = pairs[k];
             if (!(q.H > 0.0)) continue;  // both sides immovable: nothing to solve
             const Vec3 n(r.normal);
             // Normal: lambda_n <- max(0, lambda_n - (g - g_target)/H); the clamp is the
@@ -175,7 +174,7 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
             const auto start = std::chrono::steady_clock::now();
             for (uint32_t k = 0; k < count; ++k) {
                 ContactRecord& r = records[order[k]];
-                Pair& q = pairs[order[k]];
+                Pair& q = pairs[k];
                 if (!(q.H > 0.0) || q.mu == 0.0) continue;  // frictionless: no tangential work
                 const Vec3 n(r.normal);
                 // Friction: the tangential slip of the node relative to the triangle over the
@@ -198,16 +197,18 @@ void solve_group(std::vector<ContactRecord>& records, std::vector<Pair>& pairs, 
     }
     for (uint32_t k = 0; k < count; ++k) {
         ContactRecord& r = records[order[k]];
-        r.gap_after = Vec3(r.normal).dot(relative_position(pairs[order[k]]));
-        r.plane_gap = plane_gap(r, pairs[order[k]]);
+        r.gap_after = Vec3(r.normal).dot(relative_position(pairs[k]));
+        r.plane_gap = plane_gap(r, pairs[k]);
         // The true depth, kept overlaps included (they are let out over several steps).
         result.max_penetration = std::max(result.max_penetration, -r.gap_after);
     }
     out.seconds = seconds_since(group_start);
 }
 
-// The pieces of record r's constraint: its points, weights, H and friction.
-Pair make_pair(const ContactBody& a, const ContactBody& b, ContactRecord& r) {
+// The pieces of record r's constraint: its points, weights, H and friction. `fixed`: 6 numbers
+// of scratch, where the point of an immovable triangle goes (at the end of the step and at its
+// start), kept for the solve.
+Pair make_pair(const ContactBody& a, const ContactBody& b, ContactRecord& r, double* fixed) {
     Pair q;  // shape contacts lend their surface points (r's)
     const Vec3 n(r.normal);
     q.node = point_of(a, r.node);
@@ -221,6 +222,21 @@ Pair make_pair(const ContactBody& a, const ContactBody& b, ContactRecord& r) {
         q.N[0] = 1.0, q.N[1] = q.N[2] = 0.0;
         q.tri[0].x = r.point_end;
         q.tri[0].x0 = r.point_start;
+        q.fixed = true;
+    } else if (!is_movable(b)) {
+        // A triangle of a static or kinematic body (or of a sleeping one): the solve cannot
+        // move it, so its point sum N_k x_k is taken once, not in every sweep, and the pair is
+        // a node against one immovable point, as against a shape.
+        Vec3 end = Vec3::Zero(), start = Vec3::Zero();
+        for (int v = 0; v < 3; ++v) {
+            end += q.N[v] * Vec3(b.x + 3 * std::size_t(r.triangle[v]));
+            start += q.N[v] * Vec3(b.x_start + 3 * std::size_t(r.triangle[v]));
+        }
+        for (int k = 0; k < 3; ++k) fixed[k] = end[k], fixed[3 + k] = start[k];
+        q.N[0] = 1.0, q.N[1] = q.N[2] = 0.0;
+        q.tri[0].x = fixed;
+        q.tri[0].x0 = fixed + 3;
+        q.fixed = true;
     } else {
         for (int v = 0; v < 3; ++v) {
             q.tri[v] = point_of(b, r.triangle[v]);
@@ -251,11 +267,11 @@ Pair make_pair(const ContactBody& a, const ContactBody& b, ContactRecord& r) {
 // The solve's arrays, kept from sub-step to sub-step for their capacity.
 struct ContactSolveScratch::Arrays {
     std::vector<Pair> pairs;
+    std::vector<double> fixed_points;  // 6 per pair: an immovable triangle's point (make_pair)
     std::vector<LinkPair> link_pairs;
     std::vector<uint32_t> parent, group_of_root, group_of_pair, group_begin, order, next;
     std::vector<uint32_t> group_of_link, link_begin, link_order;
     std::vector<GroupResult> results;
-    std::vector<double> block_motion, block_length;
 };
 
 ContactSolveScratch::ContactSolveScratch() : arrays_(new Arrays) {}
@@ -287,23 +303,34 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     for (const ContactRecord& r : records) link_bodies(body_of_slot[r.body_a], body_of_slot[r.body_b]);
     for (const LinkRecord& l : links)
         if (l.body_b != UINT32_MAX) link_bodies(body_of_slot[l.body_a], body_of_slot[l.body_b]);
-    // Group numbers in order of first appearance in the list, then in the links; a pair's group
-    // is that of its movable body (the node's, or else the triangle's).
+    // A pair's group is that of its movable body (the node's, or else the triangle's). Groups
+    // are numbered in the order of their first body: the pool gives each thread a contiguous
+    // range of groups as it gives it one of bodies, so a body's group is solved on the thread
+    // that predicted the body and computed its forces, from that core's cache. (Numbered in
+    // order of first appearance in the list, where a static floor's nodes come first, the
+    // cubes on the floor were scattered over both threads, and their nodes crossed between the
+    // cores twice a sub-step.)
     std::vector<uint32_t>& group_of_root = s.group_of_root;
-    group_of_root.assign(nb, UINT32_MAX);
-    uint32_t groups = 0;
-    auto group_of = [&](uint32_t a, uint32_t b) {
-        const uint32_t root = root_of(parent, is_movable(bodies[a]) || b == UINT32_MAX ? a : b);
-        if (group_of_root[root] == UINT32_MAX) group_of_root[root] = groups++;
-        return group_of_root[root];
+    constexpr uint32_t kNone = UINT32_MAX, kUsed = UINT32_MAX - 1;
+    group_of_root.assign(nb, kNone);
+    const auto root_of_pair = [&](uint32_t a, uint32_t b) {
+        return root_of(parent, b == kNone || is_movable(bodies[a]) ? a : b);
     };
+    const auto slot_body = [&](uint32_t slot) { return slot == kNone ? kNone : body_of_slot[slot]; };
+    for (const ContactRecord& r : records) group_of_root[root_of_pair(slot_body(r.body_a), slot_body(r.body_b))] = kUsed;
+    for (const LinkRecord& l : links) group_of_root[root_of_pair(slot_body(l.body_a), slot_body(l.body_b))] = kUsed;
+    uint32_t groups = 0;
+    for (uint32_t i = 0; i < nb; ++i) {
+        uint32_t& group = group_of_root[root_of(parent, i)];
+        if (group == kUsed) group = groups++;
+    }
+    const auto group_of = [&](uint32_t a, uint32_t b) { return group_of_root[root_of_pair(a, b)]; };
     s.group_of_pair.resize(records.size());
     for (std::size_t j = 0; j < records.size(); ++j)
         s.group_of_pair[j] = group_of(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b]);
     s.group_of_link.resize(links.size());
     for (std::size_t j = 0; j < links.size(); ++j)
-        s.group_of_link[j] = group_of(body_of_slot[links[j].body_a],
-                                      links[j].body_b == UINT32_MAX ? UINT32_MAX : body_of_slot[links[j].body_b]);
+        s.group_of_link[j] = group_of(slot_body(links[j].body_a), slot_body(links[j].body_b));
     sort_by_group(s.group_of_pair, groups, s.group_begin, s.order, s.next);
     sort_by_group(s.group_of_link, groups, s.link_begin, s.link_order, s.next);
     return groups;
@@ -322,39 +349,39 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     const auto solve_start = std::chrono::steady_clock::now();
     ContactSolveScratch::Arrays& s = scratch.arrays();
     std::vector<Pair>& pairs = s.pairs;
-    // Every record's pair and motion, in blocks on the pool (the largest motion and the finest
-    // edge, a max and a min, do not depend on the order the blocks are joined in).
-    const uint32_t n = uint32_t(records.size()), blocks = (n + kRecordBlock - 1) / kRecordBlock;
-    pairs.resize(n);
-    s.block_motion.assign(blocks, 0.0);
-    s.block_length.assign(blocks, HUGE_VAL);
-    parallel_for(pool, blocks, [&](uint32_t blk) {
-        double motion = 0.0, length = HUGE_VAL;
-        for (uint32_t j = blk * kRecordBlock; j < std::min(n, (blk + 1) * kRecordBlock); ++j) {
-            ContactRecord& r = records[j];
-            const ContactBody& a = bodies[body_of_slot[r.body_a]];
-            const ContactBody& b = bodies[body_of_slot[r.body_b]];
-            pairs[j] = make_pair(a, b, r);
-            motion = std::max(motion, pair_motion(a, b, r, h));
-            length = std::min({length, a.edge_length, b.edge_length});
-        }
-        s.block_motion[blk] = motion, s.block_length[blk] = length;
-    });
-    double motion = 0.0, length = HUGE_VAL;
-    for (uint32_t blk = 0; blk < blocks; ++blk)
-        motion = std::max(motion, s.block_motion[blk]), length = std::min(length, s.block_length[blk]);
-    const double tolerance = stopping_tolerance(bodies, body_of_slot, links, motion, length, relative_tolerance, h);
     make_link_pairs(bodies, body_of_slot, links, s.link_pairs);
     const uint32_t groups = group_pairs(bodies, body_of_slot, records, links, s);
     const std::vector<uint32_t>& begin = s.group_begin;
     const std::vector<uint32_t>& order = s.order;
     std::vector<GroupResult>& results = s.results;
     results.assign(groups, GroupResult{});
+    // Every group's pairs, in group order (pairs[begin[g] + k] is that of records[order[begin[g]
+    // + k]]), and its largest motion and finest edge, made on the thread that will solve the
+    // group: its bodies' arrays are in that core's cache already (the groups come in body
+    // order, as the bodies' own loops do), and its pairs stay there for the sweeps. The largest
+    // motion and the finest edge, a max and a min, do not depend on the order they are joined in.
+    pairs.resize(records.size());
+    s.fixed_points.resize(6 * records.size());
+    parallel_for(pool, groups, [&](uint32_t g) {
+        double motion = 0.0, length = HUGE_VAL;
+        for (uint32_t k = begin[g]; k < begin[g + 1]; ++k) {
+            ContactRecord& r = records[order[k]];
+            const ContactBody& a = bodies[body_of_slot[r.body_a]];
+            const ContactBody& b = bodies[body_of_slot[r.body_b]];
+            pairs[k] = make_pair(a, b, r, &s.fixed_points[6 * std::size_t(k)]);
+            motion = std::max(motion, pair_motion(a, b, r, h));
+            length = std::min({length, a.edge_length, b.edge_length});
+        }
+        results[g].motion = motion, results[g].length = length;
+    });
+    double motion = 0.0, length = HUGE_VAL;
+    for (const GroupResult& g : results) motion = std::max(motion, g.motion), length = std::min(length, g.length);
+    const double tolerance = stopping_tolerance(bodies, body_of_slot, links, motion, length, relative_tolerance, h);
     parallel_for(pool, groups, [&](uint32_t g) {
         const GroupLinks held{links, s.link_pairs, s.link_order.data() + s.link_begin[g],
                               s.link_begin[g + 1] - s.link_begin[g]};
-        solve_group(records, pairs, order.data() + begin[g], begin[g + 1] - begin[g], held, max_iterations,
-                    tolerance, results[g]);
+        solve_group(records, pairs.data() + begin[g], order.data() + begin[g], begin[g + 1] - begin[g], held,
+                    max_iterations, tolerance, results[g]);
     });
 
     // Iterations and residual of the slowest group to converge, the deepest penetration.
