@@ -260,22 +260,24 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const NodeNormal& n
     // A face no better than the best so far matters only as the second face of a valley
     // (keep_records): one turned from the best's by more than the valley angle.
     const bool second_only = slot == &best && best.found && gap <= best.gap;
-    if (second_only && !(slots.accepted && n.dot(best.normal) < kValleyCos)) return {};
-    if (slot != &best && slot->found && gap <= slot->gap) return {};
+    // A face no better than what its slot holds is not taken. Where its point lies outside the
+    // triangle, that is noted all the same, so that the narrow phase skips the face until the
+    // point could reach it (still_outside in detect_node_triangle.cpp): otherwise the faces
+    // around a resting node's, in its plane and as near, came here every sub-step.
+    const bool no_better = (second_only && !(slots.accepted && n.dot(best.normal) < kValleyCos)) ||
+                           (slot != &best && slot->found && gap <= slot->gap);
     double w[3];
     const Vec3 q[3] = {qa, still ? pb : position(b.x_start, tri[1]), still ? pc : position(b.x_start, tri[2])};
     const Vec3 e[3] = {pa, pb, pc};
     if (!contact_point(x_start, x_end, start_gap, gap, q, e, still, kResidualDepth * l, w)) return {};
     const double lowest = std::min({w[0], w[1], w[2]});
-    if (!is_inside && gap > -kResidualDepth * l && !(lowest >= kEdgeBand) &&
-        faces_away(a, p, node_normal.get(), b, t, w, n, x_start, pair_allowance))
-        return {};
     // A possibly inside node is taken within a wider band: the face is its way out.
     const double band = slots.inside ? kInsideBand : kEdgeTolerance;
     if (!(lowest >= -(is_inside ? kInsideBand : kEdgeTolerance))) {
         // Outside the triangle that was tested (the crossing's, moved part way, or the end's):
         // its smallest height, the end's less what the vertices moved on the way. The margin is
-        // what the weight lacks for the widest band this pair may be taken in.
+        // what the weight lacks for the widest band this pair may be taken in. (Turned away
+        // whether or not it faces away: the skip holds whichever rule would turn it away.)
         Outside out;
         const double margin = -band - lowest;
         if (!(margin > 0.0)) return out;  // a NaN
@@ -283,6 +285,10 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const NodeNormal& n
         out.margin = std::min(margin, 0.25);
         return out;
     }
+    if (no_better) return {};
+    if (!is_inside && gap > -kResidualDepth * l && !(lowest >= kEdgeBand) &&
+        faces_away(a, p, node_normal.get(), b, t, w, n, x_start, pair_allowance))
+        return {};
     NodeCandidate taken;
     NodeCandidate& c = second_only ? taken : *slot;
     if (slot == &best && best.found && !second_only && slots.accepted) slots.accepted->push_back(best);
