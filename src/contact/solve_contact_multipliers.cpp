@@ -106,11 +106,12 @@ uint32_t root_of(std::vector<uint32_t>& parent, uint32_t i) {
     return i;
 }
 
-// What one group's solve reports; CPU seconds, so that the solve's wall time can be split
+// What one group's solve reports; CPU time in ticks(), so that the solve's wall time can be split
 // between its normal and friction parts however the groups ran.
 struct GroupResult {
     ContactSolveResult solve;
-    double seconds = 0, friction_seconds = 0;
+    uint64_t ticks = 0, friction_ticks = 0;
+    bool friction = false;  // some pair of the group has friction
     double motion = 0, length = HUGE_VAL;  // the group's largest pair motion, finest edge
 };
 
@@ -127,7 +128,7 @@ struct GroupLinks {
 // moves no point by more than `tolerance`.
 void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_t* order, uint32_t count,
                  const GroupLinks& held, uint32_t max_iterations, double tolerance, GroupResult& out) {
-    const auto group_start = std::chrono::steady_clock::now();
+    const uint64_t group_start = ticks();
     ContactSolveResult& result = out.solve;
     for (uint32_t k = 0; k < held.count; ++k) warm_start_link(held.links[held.order[k]], held.pairs[held.order[k]]);
     // Warm start: the multipliers the records carry in (last step's, for the same node and
@@ -171,7 +172,7 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
         for (uint32_t k = 0; k < held.count; ++k)
             largest = std::max(largest, update_link(held.links[held.order[k]], held.pairs[held.order[k]]));
         if (any_friction) {
-            const auto start = std::chrono::steady_clock::now();
+            const uint64_t start = ticks();
             for (uint32_t k = 0; k < count; ++k) {
                 ContactRecord& r = records[order[k]];
                 Pair& q = pairs[k];
@@ -189,7 +190,8 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
                 largest = std::max(largest, apply(q, lt - lt_old));
                 for (int d = 0; d < 3; ++d) r.lambda_t[d] = lt[d];
             }
-            out.friction_seconds += seconds_since(start);
+            out.friction_ticks += ticks() - start;
+            out.friction = true;
         }
         result.iterations = sweep + 1;
         result.residual = largest;
@@ -202,7 +204,7 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
         // The true depth, kept overlaps included (they are let out over several steps).
         result.max_penetration = std::max(result.max_penetration, -r.gap_after);
     }
-    out.seconds = seconds_since(group_start);
+    out.ticks = ticks() - group_start;
 }
 
 // The pieces of record r's constraint: its points, weights, H and friction. `fixed`: 6 numbers
@@ -387,18 +389,18 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     // Iterations and residual of the slowest group to converge, the deepest penetration.
     ContactSolveResult result;
     result.converged = true;
-    double seconds = 0.0, friction_seconds = 0.0;
+    uint64_t all_ticks = 0, friction_ticks = 0;
     bool any_friction = false;
     for (const GroupResult& g : results) {
         result.iterations = std::max(result.iterations, g.solve.iterations);
         result.residual = std::max(result.residual, g.solve.residual);
         result.converged = result.converged && g.solve.residual <= tolerance;
         result.max_penetration = std::max(result.max_penetration, g.solve.max_penetration);
-        seconds += g.seconds;
-        friction_seconds += g.friction_seconds;
-        any_friction = any_friction || g.friction_seconds > 0.0;
+        all_ticks += g.ticks;
+        friction_ticks += g.friction_ticks;
+        any_friction = any_friction || g.friction;
     }
-    const double cpu[2] = {seconds - friction_seconds, friction_seconds};
+    const double cpu[2] = {double(all_ticks - friction_ticks), double(friction_ticks)};
     lfem_phase_time* phases[2] = {&profile.normal_solve, &profile.friction};
     share_wall_time(seconds_since(solve_start), cpu, phases, 2);
     profile.friction.calls += any_friction;

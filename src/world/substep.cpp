@@ -264,10 +264,6 @@ void World::commit_rigid_bodies(double h) {
 }
 
 void World::commit_rotate_and_load(double h) {
-    using Clock = std::chrono::steady_clock;
-    const auto seconds = [](Clock::time_point from, Clock::time_point to) {
-        return std::chrono::duration<double>(to - from).count();
-    };
     {
         PhaseTimer timer(profile_.commit, stages_.deformable.size() + stages_.rigid.size());
         commit_rigid_bodies(h);
@@ -283,25 +279,25 @@ void World::commit_rotate_and_load(double h) {
     }
     const uint32_t n = uint32_t(stages_.side_by_side.size());
     if (n == 0) return;
-    const Clock::time_point round_start = Clock::now();
+    const auto round_start = std::chrono::steady_clock::now();
     parallel_for(stages_.pool, n, [&](uint32_t k) {
         const uint32_t i = stages_.side_by_side[k];
         StepScratch& sc = scratch_[i];
-        const Clock::time_point t0 = Clock::now();
+        const uint64_t t0 = ticks();
         body_commit(i, h, nullptr);
-        const Clock::time_point t1 = Clock::now();
-        Clock::time_point t2 = t1;  // no rotation update but for the "paper" model: no reading
+        const uint64_t t1 = ticks();
+        uint64_t t2 = t1;  // no rotation update but for the "paper" model: no reading
         if (bodies_.slot(i).is_paper()) {
             body_rotation(i, h, nullptr);
-            t2 = Clock::now();
+            t2 = ticks();
         }
         body_forces(i, nullptr);
-        const Clock::time_point t3 = Clock::now();
-        sc.phase_seconds[0] = seconds(t0, t1), sc.phase_seconds[1] = seconds(t1, t2), sc.phase_seconds[2] = seconds(t2, t3);
+        const uint64_t t3 = ticks();
+        sc.phase_ticks[0] = t1 - t0, sc.phase_ticks[1] = t2 - t1, sc.phase_ticks[2] = t3 - t2;
     });
     double cpu[3] = {0, 0, 0};
     for (uint32_t i : stages_.side_by_side)
-        for (int p = 0; p < 3; ++p) cpu[p] += scratch_[i].phase_seconds[p];
+        for (int p = 0; p < 3; ++p) cpu[p] += double(scratch_[i].phase_ticks[p]);
     lfem_phase_time* phases[3] = {&profile_.commit, &profile_.global_rotation, &profile_.internal_forces};
     share_wall_time(seconds_since(round_start), cpu, phases, 3);
 }

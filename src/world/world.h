@@ -190,7 +190,7 @@ private:
         RigidResponse rigid;                   // rigid: the contact solve's response
         SubstepTally tally;
         bool touched = false;                  // in contact this sub-step
-        double phase_seconds[3] = {0, 0, 0};   // side by side: its commit, rotation, forces (s)
+        uint64_t phase_ticks[3] = {0, 0, 0};   // side by side: its commit, rotation, forces (ticks())
     };
     // The bodies each stage concerns, in slot order, sorted once per sub-step.
     struct StageLists {
