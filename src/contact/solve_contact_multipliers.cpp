@@ -272,6 +272,7 @@ struct ContactSolveScratch::Arrays {
     std::vector<double> fixed_points;  // 6 per pair: an immovable triangle's point (make_pair)
     std::vector<LinkPair> link_pairs;
     std::vector<uint32_t> parent, group_of_root, group_of_pair, group_begin, order, next;
+    std::vector<uint8_t> movable;  // per body
     std::vector<uint32_t> group_of_link, link_begin, link_order;
     std::vector<GroupResult> results;
 };
@@ -297,12 +298,20 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
                      ContactSolveScratch::Arrays& s) {
     const uint32_t nb = uint32_t(bodies.size());
     std::vector<uint32_t>& parent = s.parent;
+    std::vector<uint8_t>& movable = s.movable;
     parent.resize(nb);
-    for (uint32_t i = 0; i < nb; ++i) parent[i] = i;
-    auto link_bodies = [&](uint32_t a, uint32_t b) {
-        if (is_movable(bodies[a]) && is_movable(bodies[b])) parent[root_of(parent, a)] = root_of(parent, b);
+    movable.resize(nb);
+    for (uint32_t i = 0; i < nb; ++i) parent[i] = i, movable[i] = is_movable(bodies[i]);
+    // The records come in runs of one pair of bodies (a body's nodes against another's faces,
+    // in node order): each pass below does its work once per run.
+    const auto same_run = [&](std::size_t j) {
+        return j > 0 && records[j].body_a == records[j - 1].body_a && records[j].body_b == records[j - 1].body_b;
     };
-    for (const ContactRecord& r : records) link_bodies(body_of_slot[r.body_a], body_of_slot[r.body_b]);
+    auto link_bodies = [&](uint32_t a, uint32_t b) {
+        if (movable[a] && movable[b]) parent[root_of(parent, a)] = root_of(parent, b);
+    };
+    for (std::size_t j = 0; j < records.size(); ++j)
+        if (!same_run(j)) link_bodies(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b]);
     for (const LinkRecord& l : links)
         if (l.body_b != UINT32_MAX) link_bodies(body_of_slot[l.body_a], body_of_slot[l.body_b]);
     // A pair's group is that of its movable body (the node's, or else the triangle's). Groups
@@ -315,11 +324,10 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     std::vector<uint32_t>& group_of_root = s.group_of_root;
     constexpr uint32_t kNone = UINT32_MAX, kUsed = UINT32_MAX - 1;
     group_of_root.assign(nb, kNone);
-    const auto root_of_pair = [&](uint32_t a, uint32_t b) {
-        return root_of(parent, b == kNone || is_movable(bodies[a]) ? a : b);
-    };
+    const auto root_of_pair = [&](uint32_t a, uint32_t b) { return root_of(parent, b == kNone || movable[a] ? a : b); };
     const auto slot_body = [&](uint32_t slot) { return slot == kNone ? kNone : body_of_slot[slot]; };
-    for (const ContactRecord& r : records) group_of_root[root_of_pair(slot_body(r.body_a), slot_body(r.body_b))] = kUsed;
+    for (std::size_t j = 0; j < records.size(); ++j)
+        if (!same_run(j)) group_of_root[root_of_pair(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b])] = kUsed;
     for (const LinkRecord& l : links) group_of_root[root_of_pair(slot_body(l.body_a), slot_body(l.body_b))] = kUsed;
     uint32_t groups = 0;
     for (uint32_t i = 0; i < nb; ++i) {
@@ -329,7 +337,8 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     const auto group_of = [&](uint32_t a, uint32_t b) { return group_of_root[root_of_pair(a, b)]; };
     s.group_of_pair.resize(records.size());
     for (std::size_t j = 0; j < records.size(); ++j)
-        s.group_of_pair[j] = group_of(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b]);
+        s.group_of_pair[j] = same_run(j) ? s.group_of_pair[j - 1]
+                                         : group_of(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b]);
     s.group_of_link.resize(links.size());
     for (std::size_t j = 0; j < links.size(); ++j)
         s.group_of_link[j] = group_of(slot_body(links[j].body_a), slot_body(links[j].body_b));
