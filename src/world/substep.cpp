@@ -35,12 +35,14 @@ void World::plan_stages() {
                                         &s.on_pool, &s.side_by_side})
         list->clear();
     scratch_.resize(bodies_.slot_count());
+    s.any_asleep = false;
     uint64_t total = 0;
     for (uint32_t i = 0; i < bodies_.slot_count(); ++i) {
         scratch_[i].tally = SubstepTally{};
         scratch_[i].touched = false;
         const Body& b = bodies_.slot(i);
         if (!bodies_.live(i) || !b.has_geometry()) continue;
+        s.any_asleep = s.any_asleep || b.state.asleep;
         s.with_geometry.push_back(i);
         if (b.is_kinematic()) s.kinematic.push_back(i);
         if (!b.has_mesh() || b.state.asleep) continue;  // a sleeping body is not stepped
@@ -154,11 +156,13 @@ void World::detect() {
     // Pairs among sleeping and static bodies are not detected again: they are kept as they
     // were (and merged back after the solve), so a sleeping pile keeps its contacts.
     frozen_.clear();
-    for (const ContactRecord& r : state_.contacts) {
-        const Body& a = bodies_.slot(r.body_a);
-        const Body& b = bodies_.slot(r.body_b);
-        const bool held_a = a.state.asleep || a.is_static(), held_b = b.state.asleep || b.is_static();
-        if (held_a && held_b && (a.state.asleep || b.state.asleep)) frozen_.push_back(r);
+    if (stages_.any_asleep) {
+        for (const ContactRecord& r : state_.contacts) {
+            const Body& a = bodies_.slot(r.body_a);
+            const Body& b = bodies_.slot(r.body_b);
+            const bool held_a = a.state.asleep || a.is_static(), held_b = b.state.asleep || b.is_static();
+            if (held_a && held_b && (a.state.asleep || b.state.asleep)) frozen_.push_back(r);
+        }
     }
     WorldCounters& c = state_.counters;
     c.solver_iterations = 0;
@@ -201,8 +205,13 @@ void World::solve(double h) {
         std::merge(detected_.begin(), detected_.end(), frozen_.begin(), frozen_.end(), std::back_inserter(state_.contacts),
                    order);
     }
+    // The bodies that touch: once per run of records of one pair of bodies.
+    uint32_t last_a = UINT32_MAX, last_b = UINT32_MAX;
     for (const ContactRecord& r : state_.contacts)
-        if (r.active()) scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
+        if (r.active() && (r.body_a != last_a || r.body_b != last_b)) {
+            scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
+            last_a = r.body_a, last_b = r.body_b;
+        }
     for (const LinkRecord& l : links_) scratch_[l.body_a].touched = true;  // holds contact forces too
     tally_contact_pairs(h);
     wake_touched_sleepers();

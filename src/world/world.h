@@ -199,6 +199,7 @@ private:
         // for their own loops, or side by side on the pool, one body per task.
         std::vector<uint32_t> on_pool, side_by_side;
         ThreadPool* pool = nullptr;  // the sub-step's pool: none for a world too small to share
+        bool any_asleep = false;     // some body with geometry sleeps
     };
     struct Snapshot;
 
