@@ -12,16 +12,24 @@
 
 namespace lfem {
 
+// The inverse effective mass along unit direction n of a rigid body's point at `arm` from its
+// predicted centre.
+inline double rigid_response(const RigidResponse& rigid, const Vec3& arm, const Vec3& n) {
+    const Vec3 rn = arm.cross(n);
+    return rigid.inv_mass + rn.dot(rigid.inv_inertia * rn);
+}
+
 // One of the four points of a constraint (the node, or a triangle node): a free node that the
 // solve moves directly, or a point of a rigid body, moved through the body's centre and
-// rotation corrections (its position is evaluated from them when asked).
+// rotation corrections (its position is evaluated from them when asked). Four words: the
+// solve's sweeps stream over tens of thousands of these, and a rigid point's predicted place
+// and arm are read from its body's positions (never written during the solve) rather than kept.
 struct PointRef {
-    double* x = nullptr;         // free node: its position (x*, corrected in place)
+    double* x = nullptr;         // free node: its position (x*, corrected in place); rigid
+                                 // point: its predicted position (read only)
     const double* x0 = nullptr;  // position at the start of the step
     double w = 0;                // free node: 1/mhat
     RigidResponse* rigid = nullptr;
-    Vec3 base = Vec3::Zero();    // rigid point: its predicted position
-    Vec3 arm = Vec3::Zero();     // rigid point: predicted position minus predicted centre
 
     // The free node's path is written inline: the solve's sweeps call these a few times per
     // pair and pass, and a call per point cost more than the arithmetic.
@@ -30,13 +38,9 @@ struct PointRef {
         return Vec3(x[0], x[1], x[2]);
     }
     // Inverse effective mass along unit direction n.
-    double response(const Vec3& n) const {
-        if (rigid) {
-            const Vec3 rn = arm.cross(n);
-            return rigid->inv_mass + rn.dot(rigid->inv_inertia * rn);
-        }
-        return w;
-    }
+    double response(const Vec3& n) const { return rigid ? rigid_response(*rigid, arm(), n) : w; }
+    // A rigid point: predicted position minus predicted centre.
+    Vec3 arm() const { return Vec3(x[0], x[1], x[2]) - rigid->center; }
     // Apply the force increment d (N) to this point; returns how far it moved.
     double push(const Vec3& d) {
         if (__builtin_expect(rigid != nullptr, 0)) return push_rigid(d);
@@ -48,11 +52,11 @@ struct PointRef {
     }
 
 private:
-    Vec3 rigid_position() const { return base + rigid->dc + rigid->dtheta.cross(arm); }
+    Vec3 rigid_position() const { return Vec3(x[0], x[1], x[2]) + rigid->dc + rigid->dtheta.cross(arm()); }
     __attribute__((noinline)) double push_rigid(const Vec3& d) {
         const Vec3 before = rigid_position();
         rigid->dc += rigid->inv_mass * d;
-        rigid->dtheta += rigid->inv_inertia * arm.cross(d);
+        rigid->dtheta += rigid->inv_inertia * arm().cross(d);
         return (rigid_position() - before).cwiseAbs().maxCoeff();
     }
 };
@@ -64,8 +68,6 @@ inline PointRef point_of(const ContactBody& b, uint32_t i) {
     p.x0 = b.x_start + 3 * std::size_t(i);
     if (b.rigid) {
         p.rigid = b.rigid;
-        p.base = Vec3(p.x[0], p.x[1], p.x[2]);
-        p.arm = p.base - b.rigid->center;
     } else {
         p.w = b.inv_mass ? b.inv_mass[i] : 0.0;
     }

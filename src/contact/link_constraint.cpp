@@ -11,12 +11,10 @@ void make_link_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
         LinkRecord& l = links[k];
         LinkPair& p = pairs[k];
         p.node = point_of(bodies[body_of_slot[l.body_a]], l.node);
-        const Vec3 target(l.target);
         if (l.body_b != UINT32_MAX && bodies[body_of_slot[l.body_b]].rigid) {
             RigidResponse* rigid = bodies[body_of_slot[l.body_b]].rigid;
             p.target.rigid = rigid;
-            p.target.base = target;
-            p.target.arm = target - rigid->center;
+            p.target.x = l.target;  // its predicted place: read, never written (push_rigid)
         } else {
             p.target.x = l.target;  // fixed in the solve: never written (w = 0)
         }

@@ -248,10 +248,9 @@ Pair make_pair(const ContactBody& a, const ContactBody& b, ContactRecord& r, dou
         // (sum N_k J_k) M^-1 (sum N_k J_k)^T; with the centre and arm of a barycentric
         // point of a rigid triangle, it is the response at that point.
         if (b.rigid) {
-            PointRef p = q.tri[0];
-            p.base = Vec3::Zero(), p.arm = Vec3::Zero();
-            for (int v = 0; v < 3; ++v) p.base += q.N[v] * q.tri[v].base, p.arm += q.N[v] * q.tri[v].arm;
-            q.H = q.node.response(n) + p.response(n);
+            Vec3 arm = Vec3::Zero();
+            for (int v = 0; v < 3; ++v) arm += q.N[v] * q.tri[v].arm();
+            q.H = q.node.response(n) + rigid_response(*b.rigid, arm, n);
         }
     }
     q.mu = pair_friction(a.friction, b.friction);
