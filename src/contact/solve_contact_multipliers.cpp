@@ -27,6 +27,7 @@ struct Pair {
 // Linear momentum is kept exactly. Returns the largest move.
 double apply(Pair& q, const Vec3& d) {
     double largest = q.node.push(d);
+    if (q.fixed) return largest;  // the other side does not move
     for (int v = 0; v < 3; ++v)
         if (q.N[v] != 0.0) largest = std::max(largest, q.tri[v].push(-q.N[v] * d));
     return largest;
@@ -53,10 +54,11 @@ Vec3 relative_motion(const Pair& q) {
 // new plane by the turn times the node's distance from the corner. The next step allows the
 // pair that depth and makes it up (detect_node_triangle.cpp, kept_offset); measured along the
 // old normal, the miss grew unseen, step after step, until the node was deeper than the pair
-// had been left and was dropped. A shape's surface point: along its normal.
+// had been left and was dropped. A shape's surface point or an immovable triangle's: along
+// the normal (r.gap_after, set before).
 double plane_gap(const ContactRecord& r, const Pair& q) {
     const Vec3 n(r.normal);
-    if (q.fixed) return n.dot(relative_position(q));  // a plane that does not turn
+    if (q.fixed) return r.gap_after;  // a plane that does not turn: the gap along the normal
     const Vec3 a = q.tri[0].position();
     const Vec3 plane = (q.tri[1].position() - a).cross(q.tri[2].position() - a);
     const double area2 = plane.norm();
