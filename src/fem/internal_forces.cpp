@@ -302,7 +302,7 @@ BlockResult element_loop(const ElementMesh& mesh, const double* x, double* f, Th
     const ElementColouring& colouring = *mesh.colouring;
     const LoopData d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.volume.data(),
                      f, mesh.tet_count(), colouring.block_size};
-    std::vector<BlockResult> per_block(colouring.block_count());
+    BlockResults per_block(colouring.block_count());
     const auto block_forces = cpu_variant<&element_block<displacement_edges, Model>>(cpu_level());
     for (uint32_t c = 0; c < colouring.colour_count(); ++c) {
         const uint32_t* blocks = colouring.blocks.data() + colouring.colour_start[c];
@@ -310,7 +310,7 @@ BlockResult element_loop(const ElementMesh& mesh, const double* x, double* f, Th
             per_block[blocks[i]] = block_forces(d, blocks[i], model);
         });
     }
-    return sum_blocks(per_block);
+    return per_block.sum();
 }
 
 // The forces of one body's state: strain energy and (a model with kTangent) the stiffening of

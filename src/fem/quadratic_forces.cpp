@@ -234,7 +234,7 @@ BlockResult quadratic_loop(const ElementMesh& mesh, const double* x, double* f, 
     const ElementColouring& colouring = *mesh.colouring;
     const QuadraticLoop d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.qp_volume.data(),
                           f, mesh.tet_count(), colouring.block_size};
-    std::vector<BlockResult> per_block(colouring.block_count());
+    BlockResults per_block(colouring.block_count());
     if (mesh.composite)
         for_each_block_by_colour(colouring, pool, [&](uint32_t b) {
             per_block[b] = quadratic_block<displacement, CompositeShape>(d, b, model);
@@ -243,7 +243,7 @@ BlockResult quadratic_loop(const ElementMesh& mesh, const double* x, double* f, 
         for_each_block_by_colour(colouring, pool, [&](uint32_t b) {
             per_block[b] = quadratic_block<displacement, QuadraticShape>(d, b, model);
         });
-    return sum_blocks(per_block);
+    return per_block.sum();
 }
 
 template <bool displacement, class Model>
