@@ -142,8 +142,9 @@ typedef struct lfem_world_stats {
 
 /* Where the step spends its time. Each phase accumulates, over every sub-step since the world
  * was created (or since lfem_world_reset_profile), the wall time measured around it
- * (std::chrono::steady_clock, taken once per phase per sub-step, never per element) and how
- * often it ran. The counts are exact and repeatable; the seconds are measurements. A call of
+ * (std::chrono::steady_clock, taken once per phase per sub-step, never per element; phases that
+ * run in one round of the thread pool share its wall time by the CPU time each took in it) and
+ * how often it ran. The counts are exact and repeatable; the seconds are measurements. A call of
  * lfem_world_step that fails is rolled back, the profile with the rest of the world. Not saved
  * in checkpoints (a loaded world starts from zero). */
 typedef struct lfem_phase_time {
