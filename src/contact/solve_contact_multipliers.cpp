@@ -327,8 +327,10 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     group_of_root.assign(nb, kNone);
     const auto root_of_pair = [&](uint32_t a, uint32_t b) { return root_of(parent, b == kNone || movable[a] ? a : b); };
     const auto slot_body = [&](uint32_t slot) { return slot == kNone ? kNone : body_of_slot[slot]; };
-    for (std::size_t j = 0; j < records.size(); ++j)
-        if (!same_run(j)) group_of_root[root_of_pair(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b])] = kUsed;
+    for (std::size_t j = 0; j < records.size(); ++j) {
+        if (same_run(j)) continue;
+        group_of_root[root_of_pair(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b])] = kUsed;
+    }
     for (const LinkRecord& l : links) group_of_root[root_of_pair(slot_body(l.body_a), slot_body(l.body_b))] = kUsed;
     uint32_t groups = 0;
     for (uint32_t i = 0; i < nb; ++i) {
