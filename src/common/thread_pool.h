@@ -13,6 +13,8 @@
 #include <memory>
 #include <vector>
 
+#include "common/block_array.h"
+
 namespace lfem {
 
 class ThreadPool {
@@ -67,14 +69,7 @@ struct Sums {
 template <class Sum, class Term>
 void blocked_sum(uint32_t n, ThreadPool* pool, Sum& total, const Term& term) {
     const uint32_t blocks = (n + kNodeBlock - 1) / kNodeBlock;
-    if (blocks == 0) return;
-    if (blocks == 1) {  // a small body's loop: the same sum, with no array to allocate
-        Sum out{};
-        for (uint32_t i = 0; i < n; ++i) term(i, out);
-        total += out;
-        return;
-    }
-    std::vector<Sum> partial(blocks);
+    BlockArray<Sum, 4> partial(blocks);
     parallel_for(pool, blocks, [&](uint32_t b) {
         // A local sum, stored once per block: the compiler keeps it in registers, where the
         // block's entry of `partial` would be stored and reloaded at every node (the outputs

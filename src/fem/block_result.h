@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/block_array.h"
 #include "fem/internal_forces.h"
 
 namespace lfem {
@@ -20,34 +21,21 @@ struct BlockResult {
     double min_J = HUGE_VAL;  // the smallest J (a 10-node tet's: at its quadrature points)
 };
 
-// One result per block of an element loop, written by the blocks (each its own) and summed in
-// block order. A small body's few blocks are kept inline: no allocation per body and sub-step
-// (a scene of 32 small cubes made one per cube and sub-step).
-class BlockResults {
-public:
-    explicit BlockResults(uint32_t count) : count_(count) {
-        if (count > kInline) heap_.resize(count);
-    }
-    BlockResult& operator[](uint32_t b) { return count_ > kInline ? heap_[b] : inline_[b]; }
-    // The blocks' results summed in block order.
-    BlockResult sum() const {
-        const BlockResult* r = count_ > kInline ? heap_.data() : inline_;
-        BlockResult total;
-        for (uint32_t b = 0; b < count_; ++b) {
-            total.energy += r[b].energy;
-            total.tangent = std::max(total.tangent, r[b].tangent);
-            total.inverted += r[b].inverted;
-            total.min_J = std::min(total.min_J, r[b].min_J);
-        }
-        return total;
-    }
+// An element loop's block results: a 6000-tet body has about 24 blocks, a small cube one.
+using BlockResults = BlockArray<BlockResult, 16>;
 
-private:
-    static constexpr uint32_t kInline = 16;
-    uint32_t count_;
-    BlockResult inline_[kInline];
-    std::vector<BlockResult> heap_;
-};
+// The blocks' results summed in block order.
+inline BlockResult sum_blocks(const BlockResults& per_block) {
+    BlockResult total;
+    for (uint32_t b = 0; b < per_block.size(); ++b) {
+        const BlockResult& r = per_block[b];
+        total.energy += r.energy;
+        total.tangent = std::max(total.tangent, r.tangent);
+        total.inverted += r.inverted;
+        total.min_J = std::min(total.min_J, r.min_J);
+    }
+    return total;
+}
 
 // The body's result from the sum; stiffening 1 (the caller sets it from total.tangent for the
 // models that have one).

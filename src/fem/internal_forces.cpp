@@ -310,7 +310,7 @@ BlockResult element_loop(const ElementMesh& mesh, const double* x, double* f, Th
             per_block[blocks[i]] = block_forces(d, blocks[i], model);
         });
     }
-    return per_block.sum();
+    return sum_blocks(per_block);
 }
 
 // The forces of one body's state: strain energy and (a model with kTangent) the stiffening of

@@ -243,7 +243,7 @@ BlockResult quadratic_loop(const ElementMesh& mesh, const double* x, double* f, 
         for_each_block_by_colour(colouring, pool, [&](uint32_t b) {
             per_block[b] = quadratic_block<displacement, QuadraticShape>(d, b, model);
         });
-    return per_block.sum();
+    return sum_blocks(per_block);
 }
 
 template <bool displacement, class Model>
