@@ -157,6 +157,7 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
         const Pair& q = pairs[k];
         any_friction = any_friction || (q.mu > 0.0 && q.H > 0.0);
     }
+    out.friction = any_friction && max_iterations > 0;  // a friction pass will run
     for (uint32_t sweep = 0; sweep < max_iterations; ++sweep) {
         double largest = 0.0;
         for (uint32_t k = 0; k < count; ++k) {
@@ -193,7 +194,6 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
                 for (int d = 0; d < 3; ++d) r.lambda_t[d] = lt[d];
             }
             out.friction_ticks += ticks() - start;
-            out.friction = true;
         }
         result.iterations = sweep + 1;
         result.residual = largest;
