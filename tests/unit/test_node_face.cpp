@@ -8,6 +8,7 @@
 // is 1e-3 and the capture band 0.05.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "contact/contact_body.h"
@@ -28,7 +29,8 @@ struct Seam {
     uint32_t no_triangles[2] = {0, 0};
     ContactBody face, node;
 
-    Seam(const Vec3& start, const Vec3& end) {
+    Seam(const Vec3& start, const Vec3& end, double dent = 0.02) {
+        face_x[5] = dent;  // v1's height
         for (int t = 0; t < 2; ++t) {  // a static body's unit normals, as made when its mesh is added
             const uint32_t* q = &triangles[3 * t];
             const Vec3 a = lfem::position(face_x.data(), q[0]);
@@ -52,14 +54,19 @@ struct Seam {
         node.edge_length = 1.0;
     }
 
-    // Both faces tested, as the narrow phase tests a node's candidates: the face that holds it.
-    NodeCandidate best() const {
-        NodeCandidate c;
+    // Face t tested for the node, c holding what the faces tested before it found.
+    lfem::Outside test(uint32_t t, NodeCandidate& c) const {
         Vec3 down(0, 0, -1);  // the node's surface faces the floor
         uint8_t known = 1;
         const lfem::NodeNormal normal{node, 0, &down, &known};
         const double allowance = lfem::kResidualDepth;  // a pair held last step with no residual
-        for (uint32_t t = 0; t < 2; ++t) lfem::test_node_triangle(node, 0, normal, face, t, nullptr, allowance, nullptr, lfem::NodeSlots{c});
+        return lfem::test_node_triangle(node, 0, normal, face, t, nullptr, allowance, nullptr, lfem::NodeSlots{c});
+    }
+
+    // Both faces tested, as the narrow phase tests a node's candidates: the face that holds it.
+    NodeCandidate best() const {
+        NodeCandidate c;
+        for (uint32_t t = 0; t < 2; ++t) test(t, c);
         return c;
     }
 };
@@ -88,6 +95,24 @@ TEST(NodeFace, ANodeSlidingAcrossASharedEdgeIsHeldByTheFaceItSlidOnto) {
 TEST(NodeFace, ANodeThatPassesThePlaneBesideTheFaceIsNotTaken) {
     const Seam seam(Vec3(-0.5, 0.5, 0.1), Vec3(0.3, 0.5, -0.1));
     EXPECT_FALSE(seam.best().found);
+}
+
+// On the flat square (no dent), a node resting 1e-6 behind it at (0.45, 0.55) is held by T1
+// (weights 0.45, 0.45, 0.1). Tested next, T0 lies in the same plane at the same depth, so it is
+// no better; its point is outside it, T0's weight of v1 being x - y = -0.1. The test must say so
+// (the narrow phase then skips T0 while the node rests): by the margin that weight lacks for the
+// edge tolerance, 0.1 - 0.01, over T0's smallest height, 1 / sqrt(2), and T1 must stay the face.
+TEST(NodeFace, AFaceNoBetterThanTheOneHeldIsReportedOutsideToBeSkipped) {
+    const Seam seam(Vec3(0.45, 0.55, -1e-6), Vec3(0.45, 0.55, -1e-6), 0.0);
+    NodeCandidate c;
+    EXPECT_EQ(seam.test(1, c).margin, 0.0);  // taken: nothing to skip
+    ASSERT_TRUE(c.found);
+    ASSERT_EQ(c.triangle, 1u);
+    const lfem::Outside out = seam.test(0, c);
+    EXPECT_NEAR(out.margin, 0.1 - lfem::kEdgeTolerance, 1e-12);
+    EXPECT_NEAR(out.height, 1.0 / std::sqrt(2.0), 1e-12);
+    EXPECT_EQ(c.triangle, 1u);
+    EXPECT_NEAR(c.w[2], 0.1, 1e-12);
 }
 
 }  // namespace
