@@ -88,13 +88,17 @@ double pair_motion(const ContactBody& a, const ContactBody& b, const ContactReco
     return motion;
 }
 
-// The stopping tolerance: relative_tolerance times the largest relative motion of a pair
-// (`motion`, the records' largest pair_motion, here joined by the links'), at least 1e-9 of the
-// finest boundary edge (`length`, likewise), for when nothing moves.
+// The stopping tolerance of one group: relative_tolerance times the largest relative motion of
+// its pairs (`motion`, the records' largest pair_motion, here joined by the links' in
+// links[order[0 .. count)]), at least 1e-9 of its finest boundary edge (`length`, likewise),
+// for when nothing moves. Each group's own: a body falling fast elsewhere in the world neither
+// loosens nor tightens the solve of a resting pile, and a group's result depends on its own
+// pairs alone.
 double stopping_tolerance(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                          const std::vector<LinkRecord>& links, double motion, double length,
-                          double relative_tolerance, double h) {
-    for (const LinkRecord& l : links) {  // a held node: its own motion against its target's
+                          const std::vector<LinkRecord>& links, const uint32_t* order, uint32_t count, double motion,
+                          double length, double relative_tolerance, double h) {
+    for (uint32_t k = 0; k < count; ++k) {  // a held node: its own motion against its target's
+        const LinkRecord& l = links[order[k]];
         const ContactBody& a = bodies[body_of_slot[l.body_a]];
         for (int d = 0; d < 3; ++d) motion = std::max(motion, std::fabs(last_velocity(a, l.node, d, h)) * h);
         length = std::min(length, a.edge_length);
@@ -114,7 +118,7 @@ struct GroupResult {
     ContactSolveResult solve;
     uint64_t ticks = 0, friction_ticks = 0;
     bool friction = false;  // some pair of the group has friction
-    double motion = 0, length = HUGE_VAL;  // the group's largest pair motion, finest edge
+    double tolerance = 0;   // its stopping tolerance (stopping_tolerance)
 };
 
 // A group's links: links[order[0 .. count)] with their pairs.
@@ -369,11 +373,11 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     const std::vector<uint32_t>& order = s.order;
     std::vector<GroupResult>& results = s.results;
     results.assign(groups, GroupResult{});
-    // Every group's pairs, in group order (pairs[begin[g] + k] is that of records[order[begin[g]
-    // + k]]), and its largest motion and finest edge, made on the thread that will solve the
-    // group: its bodies' arrays are in that core's cache already (the groups come in body
-    // order, as the bodies' own loops do), and its pairs stay there for the sweeps. The largest
-    // motion and the finest edge, a max and a min, do not depend on the order they are joined in.
+    // Each group in one task: its pairs, in group order (pairs[begin[g] + k] is that of
+    // records[order[begin[g] + k]]), its stopping tolerance, then its sweeps. On the thread that
+    // stepped its bodies: their arrays are in that core's cache already (the groups come in body
+    // order, as the bodies' own loops do), and its pairs stay there for the sweeps. One round of
+    // the pool, not one to make the pairs and one to solve them.
     pairs.resize(records.size());
     s.fixed_points.resize(6 * records.size());
     parallel_for(pool, groups, [&](uint32_t g) {
@@ -386,16 +390,12 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
             motion = std::max(motion, pair_motion(a, b, r, h));
             length = std::min({length, a.edge_length, b.edge_length});
         }
-        results[g].motion = motion, results[g].length = length;
-    });
-    double motion = 0.0, length = HUGE_VAL;
-    for (const GroupResult& g : results) motion = std::max(motion, g.motion), length = std::min(length, g.length);
-    const double tolerance = stopping_tolerance(bodies, body_of_slot, links, motion, length, relative_tolerance, h);
-    parallel_for(pool, groups, [&](uint32_t g) {
         const GroupLinks held{links, s.link_pairs, s.link_order.data() + s.link_begin[g],
                               s.link_begin[g + 1] - s.link_begin[g]};
+        results[g].tolerance = stopping_tolerance(bodies, body_of_slot, links, held.order, held.count, motion, length,
+                                                  relative_tolerance, h);
         solve_group(records, pairs.data() + begin[g], order.data() + begin[g], begin[g + 1] - begin[g], held,
-                    max_iterations, tolerance, results[g]);
+                    max_iterations, results[g].tolerance, results[g]);
     });
 
     // Iterations and residual of the slowest group to converge, the deepest penetration.
@@ -406,7 +406,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     for (const GroupResult& g : results) {
         result.iterations = std::max(result.iterations, g.solve.iterations);
         result.residual = std::max(result.residual, g.solve.residual);
-        result.converged = result.converged && g.solve.residual <= tolerance;
+        result.converged = result.converged && g.solve.residual <= g.tolerance;
         result.max_penetration = std::max(result.max_penetration, g.solve.max_penetration);
         all_ticks += g.ticks;
         friction_ticks += g.friction_ticks;

@@ -36,17 +36,17 @@ struct ContactSolveResult {
     uint32_t iterations = 0;
     double residual = 0;         // m, largest correction made by the last sweep
     double max_penetration = 0;  // m, deepest remaining penetration (beyond kept offsets)
-    bool converged = true;       // every group ended within the tolerance
+    bool converged = true;       // every group ended within its tolerance
 };
 
 // `body_of_slot[s]` is the index in `bodies` of the body in world slot s. Records carry warm
 // start multipliers on entry and the converged ones (newtons) on exit; `x` of the bodies is
-// moved from x* to x^{n+1}. A sweep that corrects no node by more than the stopping tolerance
-// ends the solve, or max_iterations sweeps: the tolerance is relative_tolerance times the
-// largest relative motion of a pair over a step of h (the relative velocity at the start of
-// the step, times h), or 1e-9 of the finest boundary edge when nothing moves (resting
-// contact). Pairs linked through no movable body form groups that converge on their own, side
-// by side on the pool (results independent of the thread count). The result gives the
+// moved from x* to x^{n+1}. Pairs linked through no movable body form groups that converge on
+// their own, side by side on the pool (results independent of the thread count). A sweep that
+// corrects no node of a group by more than the group's stopping tolerance ends its solve, or
+// max_iterations sweeps: the tolerance is relative_tolerance times the largest relative motion
+// of a pair of the group over a step of h (the relative velocity at the start of the step,
+// times h), or 1e-9 of its finest boundary edge when nothing moves (resting contact). The result gives the
 // iterations and residual of the slowest group. The attachments' links (link_constraint.h)
 // are solved in the same sweeps, each in the group of its bodies; they carry their multipliers
 // in and out like the records. Adds its time to profile.normal_solve and,
