@@ -60,23 +60,40 @@ bool spin_until(const Ready& ready) {
 // busy) can never claim a task of a later round, and the caller never waits for a worker that
 // has not started: it takes that worker's range and waits only until every task of its round
 // has finished.
+//
+// A round is handed out without a lock: a step runs a hundred rounds a frame, and a mutex taken
+// by the caller to post each one and by every worker to read it passed its cache line between
+// the cores several times a round. The caller writes the round's task and count into the slot
+// of its parity, then its ranges, then `posted`; a worker that sees `posted` reads that slot.
+// A worker slow enough to read the slot after the caller has gone on to the round after next
+// gets that round's task with this round's number: the ranges by then carry a later round, so
+// it claims nothing. The mutex and the condition variables serve only threads that stopped
+// spinning and sleep: `sleepers` and `caller_asleep` tell the other side to take the mutex and
+// wake them (each side writes its flag before it reads the other's state, sequentially
+// consistent, so one of the two always sees the other).
 struct ThreadPool::Shared {
+    using Task = std::function<void(uint32_t)>;
+    struct Slot {
+        std::atomic<const Task*> task{nullptr};
+        std::atomic<uint32_t> count{0};
+    };
+    Slot slots[2];                     // round r's task and count in slots[r & 1]
+    std::atomic<uint32_t> posted{0};   // the newest round, read by spinning workers
+    std::atomic<bool> stop{false};
+    std::atomic<uint32_t> sleepers{0};      // workers asleep on `wake`, or about to be
+    std::atomic<bool> caller_asleep{false};  // the caller asleep on `done`, or about to be
     std::mutex mutex;
     std::condition_variable wake, done;
     std::vector<std::thread> workers;
-    const std::function<void(uint32_t)>* task = nullptr;  // the current round's (under mutex)
-    uint32_t count = 0;
-    uint32_t round = 0;
-    bool stop = false;
-    std::atomic<uint32_t> posted{0};  // the newest round (or stop), read by spinning workers
+    uint32_t round = 0;  // the caller's count of rounds
     // Per thread's range: (round << 32) | its next task index. Each on a cache line of its own.
     struct alignas(64) Range {
         std::atomic<uint64_t> next{0};
     };
     std::unique_ptr<Range[]> ranges;
     uint32_t threads = 1;
-    std::atomic<uint32_t> finished{0};  // tasks of the current round that have finished
-    std::exception_ptr error;
+    alignas(64) std::atomic<uint32_t> finished{0};  // tasks of the current round that have finished
+    std::exception_ptr error;  // the round's first, under mutex
 
     // The end of range r of a round of `count` tasks: the ranges split [0, count) evenly.
     uint32_t range_end(uint32_t r, uint32_t count) const { return uint32_t(uint64_t(count) * (r + 1) / threads); }
@@ -90,7 +107,7 @@ struct ThreadPool::Shared {
 
     // Runs tasks of `my_round`, thread `me`'s range first, then the others', until none is
     // left to claim.
-    void work(uint32_t me, uint32_t my_round, uint32_t my_count, const std::function<void(uint32_t)>& fn) {
+    void work(uint32_t me, uint32_t my_round, uint32_t my_count, const Task& fn) {
         // The tasks this thread ran, added to `finished` once at the end: a count shared by
         // every thread, bumped after each task, passed its cache line from core to core a few
         // hundred times a sub-step in a scene of small bodies.
@@ -112,7 +129,7 @@ struct ThreadPool::Shared {
                 v = next.load(std::memory_order_relaxed);
             }
         }
-        if (done_here != 0 && finished.fetch_add(done_here, std::memory_order_acq_rel) + done_here == my_count) {
+        if (done_here != 0 && finished.fetch_add(done_here) + done_here == my_count && caller_asleep.load()) {
             std::lock_guard<std::mutex> lock(mutex);
             done.notify_all();
         }
@@ -122,16 +139,27 @@ struct ThreadPool::Shared {
         uint32_t seen = 0;
         for (;;) {
             // A new round usually follows within microseconds: spin for it before sleeping.
-            spin_until([&] { return posted.load(std::memory_order_acquire) != seen; });
-            std::unique_lock<std::mutex> lock(mutex);
-            wake.wait(lock, [&] { return stop || (round != seen && task != nullptr); });
-            if (stop) return;
-            seen = round;
-            const std::function<void(uint32_t)>* fn = task;
-            const uint32_t n = count;
-            lock.unlock();
-            work(me, seen, n, *fn);  // *fn outlives the round: the caller waits for its tasks
+            if (!spin_until([&] { return posted.load(std::memory_order_acquire) != seen; })) {
+                std::unique_lock<std::mutex> lock(mutex);
+                sleepers.fetch_add(1);
+                wake.wait(lock, [&] { return posted.load() != seen; });
+                sleepers.fetch_sub(1);
+            }
+            if (stop.load(std::memory_order_acquire)) return;
+            seen = posted.load(std::memory_order_acquire);
+            const Slot& slot = slots[seen & 1];
+            const Task* fn = slot.task.load(std::memory_order_acquire);
+            const uint32_t n = slot.count.load(std::memory_order_acquire);
+            if (fn) work(me, seen, n, *fn);  // *fn outlives the round: the caller waits for its tasks
         }
+    }
+
+    // Wakes the sleeping workers after `posted` changed. Taking the mutex waits for a worker
+    // between its check and its sleep, so the notification cannot fall in between.
+    void wake_sleepers() {
+        if (sleepers.load() == 0) return;
+        { std::lock_guard<std::mutex> lock(mutex); }
+        wake.notify_all();
     }
 };
 
@@ -143,12 +171,9 @@ ThreadPool::ThreadPool(uint32_t threads) : shared_(new Shared) {
         for (uint32_t i = 1; i < s.threads; ++i) s.workers.emplace_back([&s, i] { s.worker_main(i); });
     } catch (...) {
         // Could not start every thread: stop the ones that run, then report.
-        {
-            std::lock_guard<std::mutex> lock(s.mutex);
-            s.stop = true;
-            s.posted.fetch_add(1, std::memory_order_release);
-        }
-        s.wake.notify_all();
+        s.stop.store(true);
+        s.posted.fetch_add(1);
+        s.wake_sleepers();
         for (std::thread& t : s.workers) t.join();
         throw;
     }
@@ -156,12 +181,9 @@ ThreadPool::ThreadPool(uint32_t threads) : shared_(new Shared) {
 
 ThreadPool::~ThreadPool() {
     Shared& s = *shared_;
-    {
-        std::lock_guard<std::mutex> lock(s.mutex);
-        s.stop = true;
-        s.posted.fetch_add(1, std::memory_order_release);
-    }
-    s.wake.notify_all();
+    s.stop.store(true);
+    s.posted.fetch_add(1);
+    s.wake_sleepers();
     for (std::thread& t : s.workers) t.join();
 }
 
@@ -169,25 +191,26 @@ uint32_t ThreadPool::size() const { return uint32_t(shared_->workers.size()) + 1
 
 void ThreadPool::run(uint32_t count, const std::function<void(uint32_t)>& task) {
     Shared& s = *shared_;
-    uint32_t my_round;
-    {
-        std::lock_guard<std::mutex> lock(s.mutex);
-        my_round = ++s.round;
-        s.task = &task;
-        s.count = count;
-        s.error = nullptr;
-        s.finished.store(0, std::memory_order_relaxed);
-        s.start_ranges(my_round, count);
-        s.posted.store(my_round, std::memory_order_release);
-    }
-    s.wake.notify_all();
+    // Nothing of the last round runs any more: its tasks have all finished, and a late worker
+    // claims none of this one's before the ranges carry this round's number.
+    const uint32_t my_round = ++s.round;
+    s.error = nullptr;
+    s.finished.store(0, std::memory_order_relaxed);
+    Shared::Slot& slot = s.slots[my_round & 1];
+    slot.task.store(&task, std::memory_order_release);
+    slot.count.store(count, std::memory_order_release);
+    s.start_ranges(my_round, count);
+    s.posted.store(my_round);
+    s.wake_sleepers();
     s.work(0, my_round, count, task);  // the caller takes part, its own range first
     // The other threads' last tasks usually end within microseconds: spin before sleeping.
-    const auto all_done = [&] { return s.finished.load(std::memory_order_acquire) == count; };
-    spin_until(all_done);
-    std::unique_lock<std::mutex> lock(s.mutex);
-    s.done.wait(lock, all_done);
-    s.task = nullptr;  // a worker waking from now on waits for the next round
+    const auto all_done = [&] { return s.finished.load() == count; };
+    if (!spin_until(all_done)) {
+        std::unique_lock<std::mutex> lock(s.mutex);
+        s.caller_asleep.store(true);
+        s.done.wait(lock, all_done);
+        s.caller_asleep.store(false, std::memory_order_relaxed);
+    }
     if (s.error) {
         std::exception_ptr e = s.error;
         s.error = nullptr;

@@ -1,13 +1,16 @@
 // The thread pool's loops (src/common/thread_pool.h): every task runs exactly once whatever the
 // number of threads and tasks (each thread starts with its own range of the tasks, then takes
-// what is left of the others'), an exception reaches the caller only after every other task
+// what is left of the others'), also when the threads had fallen asleep between rounds or while
+// waiting for a long task, an exception reaches the caller only after every other task
 // has finished, and blocked_sum gives the same bits for any number of threads.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "common/thread_pool.h"
@@ -27,6 +30,27 @@ TEST(ThreadPool, EveryTaskRunsExactlyOnceForAnyCountAndThreads) {
                 for (uint32_t i = 0; i < count; ++i)
                     ASSERT_EQ(runs[i].load(), 1) << "task " << i << " of " << count << ", " << threads << " threads";
             }
+    }
+}
+
+TEST(ThreadPool, RoundsAfterTheThreadsFellAsleepStillRunEveryTask) {
+    // The threads spin for 50 us, then sleep: a pause longer than that between two rounds puts
+    // the workers to sleep (the next round must wake them), and a task longer than that puts the
+    // caller to sleep while it waits (the last task must wake it). Neither wake-up may be lost
+    // (a lost one hangs the loop) nor a task run twice.
+    for (uint32_t threads = 2; threads <= 4; ++threads) {
+        lfem::ThreadPool pool(threads);
+        for (int round = 0; round < 60; ++round) {
+            const uint32_t count = 3 + uint32_t(round % 7);
+            std::vector<std::atomic<int>> runs(count);
+            for (auto& r : runs) r.store(0);
+            lfem::parallel_for(&pool, count, [&](uint32_t i) {
+                runs[i].fetch_add(1);
+                if (round % 3 == 1 && i == count - 1) std::this_thread::sleep_for(std::chrono::microseconds(200));
+            });
+            for (uint32_t i = 0; i < count; ++i) ASSERT_EQ(runs[i].load(), 1) << "task " << i << ", round " << round;
+            if (round % 2 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
     }
 }
 
