@@ -211,22 +211,24 @@ Aabb triangle_step_box(const ContactBody& b, uint32_t t, double grow) {
     return box;
 }
 
-bool candidates_hold(const std::vector<ContactBody>& bodies, double max_offset, bool scan_overlaps,
-                     ContactCandidates& c, ThreadPool* pool) {
+bool candidates_may_hold(const std::vector<ContactBody>& bodies, double max_offset, bool scan_overlaps,
+                         const ContactCandidates& c) {
     if (!c.valid || c.identity.size() != bodies.size()) return false;
     // A search for initial overlaps looked half an edge deep; after that step a narrower one
     // takes over.
     if (max_offset > c.offset_allowed || scan_overlaps != c.scanned) return false;
-    uint64_t work = 0;
-    for (uint32_t bi = 0; bi < bodies.size(); ++bi) {
-        if (c.identity[bi] != bodies[bi].identity) return false;
-        work += bodies[bi].surface_node_count;
-    }
-    for_bodies(pool, uint32_t(bodies.size()), work, [&](uint32_t bi) {
-        const ContactBody& b = bodies[bi];
-        c.moved[bi] = b.moves ? largest_move(b, &c.x_search[3 * std::size_t(c.surface_begin[bi])]) : 0.0;
-    });
     for (uint32_t bi = 0; bi < bodies.size(); ++bi)
+        if (c.identity[bi] != bodies[bi].identity) return false;
+    return true;
+}
+
+void measure_move(const std::vector<ContactBody>& bodies, uint32_t bi, ContactCandidates& c) {
+    const ContactBody& b = bodies[bi];
+    c.moved[bi] = b.moves ? largest_move(b, &c.x_search[3 * std::size_t(c.surface_begin[bi])]) : 0.0;
+}
+
+bool moves_within_budgets(const ContactCandidates& c) {
+    for (uint32_t bi = 0; bi < c.moved.size(); ++bi)
         if (!(c.moved[bi] <= c.budget[bi])) return false;  // also a NaN position
     return true;
 }

@@ -61,10 +61,14 @@ struct ContactCandidates {
 // The box of triangle t of body b over the step (its nodes at x_start and x*), grown by `grow`.
 Aabb triangle_step_box(const ContactBody& b, uint32_t t, double grow);
 
-// Whether the candidates still hold for the bodies at this sub-step (same bodies, each within
-// its budget and growth); on the pool body by body.
-bool candidates_hold(const std::vector<ContactBody>& bodies, double max_offset, bool scan_overlaps,
-                     ContactCandidates& c, ThreadPool* pool);
+// Whether the candidates still hold for the bodies at this sub-step: the same bodies, the same
+// growth (candidates_may_hold), and each within its budget: measure_move of every body (each
+// writes only its own c.moved, so the bodies can be measured side by side on the pool, with
+// other work of the sub-step in the same round), then moves_within_budgets.
+bool candidates_may_hold(const std::vector<ContactBody>& bodies, double max_offset, bool scan_overlaps,
+                         const ContactCandidates& c);
+void measure_move(const std::vector<ContactBody>& bodies, uint32_t bi, ContactCandidates& c);
+bool moves_within_budgets(const ContactCandidates& c);
 
 // A new search from the bodies as they are (x_start to x* of this sub-step).
 void search_candidates(const std::vector<ContactBody>& bodies, double max_offset, bool scan_overlaps,

@@ -399,12 +399,39 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
     double max_offset = 0.0;
     for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -std::min(r.gap_after, r.plane_gap));
     ContactCandidates& c = s.candidates;
+    // The moving candidate faces' boxes and normals over this sub-step (each once, in blocks of
+    // kFaceBlock), for the narrow phase.
+    const auto step_faces = [&](uint32_t b) {
+        const uint32_t faces = uint32_t(c.faces.size());
+        for (uint32_t k = b * kFaceBlock; k < std::min(faces, (b + 1) * kFaceBlock); ++k) {
+            const ContactBody& body = bodies[uint32_t(c.faces[k] >> 32)];
+            s.faces[k] = face_step(body, uint32_t(c.faces[k]));
+            advance_face_track(body, uint32_t(c.faces[k]), s.face_tracks[k]);
+        }
+    };
+    const auto face_blocks = [&] { return (uint32_t(c.faces.size()) + kFaceBlock - 1) / kFaceBlock; };
+    bool faces_stepped = false;
     {
         PhaseTimer timer(profile.broad_phase);
-        if (!candidates_hold(bodies, max_offset, scan_overlaps, c, pool)) {
+        bool hold = candidates_may_hold(bodies, max_offset, scan_overlaps, c);
+        if (hold) {
+            // One round for both: every body's move since the search, and the candidate faces'
+            // steps, made now on the chance that the candidates hold (they nearly always do; if
+            // not, the search below starts the faces' tracks again and they are stepped anew).
+            const uint32_t nb = uint32_t(bodies.size()), fb = s.tracks_ready ? face_blocks() : 0;
+            uint64_t work = c.faces.size();
+            for (const ContactBody& b : bodies) work += b.surface_node_count;
+            if (fb > 0) s.faces.resize(c.faces.size());
+            parallel_for(work >= 1024 ? pool : nullptr, nb + fb,
+                         [&](uint32_t k) { k < nb ? measure_move(bodies, k, c) : step_faces(k - nb); });
+            faces_stepped = fb > 0 || c.faces.empty();
+            hold = moves_within_budgets(c);
+        }
+        if (!hold) {
             search_candidates(bodies, max_offset, scan_overlaps, c, pool);
             profile.candidate_searches += 1;
             s.tracks_ready = false;  // new candidates: the tracks start again
+            faces_stepped = false;
         }
     }
     const uint32_t nodes = uint32_t(c.body.size());
@@ -426,16 +453,10 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
     uint8_t* ready = s.normal_ready.data();
     {
         PhaseTimer timer(profile.narrow_phase);
-        // The moving faces' boxes and normals over this sub-step, each once.
-        const uint32_t faces = uint32_t(c.faces.size());
-        s.faces.resize(faces);
-        parallel_for(pool, (faces + kFaceBlock - 1) / kFaceBlock, [&](uint32_t b) {
-            for (uint32_t k = b * kFaceBlock; k < std::min(faces, (b + 1) * kFaceBlock); ++k) {
-                const ContactBody& body = bodies[uint32_t(c.faces[k] >> 32)];
-                s.faces[k] = face_step(body, uint32_t(c.faces[k]));
-                advance_face_track(body, uint32_t(c.faces[k]), s.face_tracks[k]);
-            }
-        });
+        if (!faces_stepped) {
+            s.faces.resize(c.faces.size());
+            parallel_for(pool, face_blocks(), step_faces);
+        }
         parallel_for(pool, blocks, [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], normals, ready); });
         if (!any_shapes) return join_blocks(s, blocks, out, profile, pool);
     }
