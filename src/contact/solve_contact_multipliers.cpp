@@ -269,6 +269,14 @@ Pair make_pair(const ContactBody& a, const ContactBody& b, ContactRecord& r, dou
 // sixteen cubes on one static floor are sixteen groups. A group's result does not depend on the
 // others or on the thread count: on one thread the groups simply run one after another. The
 // pairs of group g are order[begin[g] .. begin[g+1]), in list order; returns the group count.
+// (group_pairs, below the scratch it fills.)
+
+// A run of records of one pair of bodies: from records[first] to the next run's first; a and b
+// index the bodies of the node and of the triangle.
+struct Run {
+    uint32_t first, a, b, group;
+};
+
 }  // namespace
 
 // The solve's arrays, kept from sub-step to sub-step for their capacity.
@@ -276,7 +284,8 @@ struct ContactSolveScratch::Arrays {
     std::vector<Pair> pairs;
     std::vector<double> fixed_points;  // 6 per pair: an immovable triangle's point (make_pair)
     std::vector<LinkPair> link_pairs;
-    std::vector<uint32_t> parent, group_of_root, group_of_pair, group_begin, order, next;
+    std::vector<uint32_t> parent, group_of_root, group_begin, order, next;
+    std::vector<Run> runs;  // the records' runs of one pair of bodies (group_pairs)
     std::vector<uint8_t> movable;  // per body
     std::vector<uint32_t> group_of_link, link_begin, link_order;
     std::vector<GroupResult> results;
@@ -308,15 +317,18 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     movable.resize(nb);
     for (uint32_t i = 0; i < nb; ++i) parent[i] = i, movable[i] = is_movable(bodies[i]);
     // The records come in runs of one pair of bodies (a body's nodes against another's faces,
-    // in node order): each pass below does its work once per run.
-    const auto same_run = [&](std::size_t j) {
-        return j > 0 && records[j].body_a == records[j - 1].body_a && records[j].body_b == records[j - 1].body_b;
-    };
+    // in node order): found in one pass, the work below is done once per run (a few dozen
+    // runs for hundreds of records), and the records are not read again.
+    std::vector<Run>& runs = s.runs;
+    runs.clear();
+    for (uint32_t j = 0; j < records.size(); ++j) {
+        const uint32_t a = body_of_slot[records[j].body_a], b = body_of_slot[records[j].body_b];
+        if (runs.empty() || runs.back().a != a || runs.back().b != b) runs.push_back(Run{j, a, b, 0});
+    }
     auto link_bodies = [&](uint32_t a, uint32_t b) {
         if (movable[a] && movable[b]) parent[root_of(parent, a)] = root_of(parent, b);
     };
-    for (std::size_t j = 0; j < records.size(); ++j)
-        if (!same_run(j)) link_bodies(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b]);
+    for (const Run& r : runs) link_bodies(r.a, r.b);
     for (const LinkRecord& l : links)
         if (l.body_b != UINT32_MAX) link_bodies(body_of_slot[l.body_a], body_of_slot[l.body_b]);
     // A pair's group is that of its movable body (the node's, or else the triangle's). Groups
@@ -331,10 +343,7 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     group_of_root.assign(nb, kNone);
     const auto root_of_pair = [&](uint32_t a, uint32_t b) { return root_of(parent, b == kNone || movable[a] ? a : b); };
     const auto slot_body = [&](uint32_t slot) { return slot == kNone ? kNone : body_of_slot[slot]; };
-    for (std::size_t j = 0; j < records.size(); ++j) {
-        if (same_run(j)) continue;
-        group_of_root[root_of_pair(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b])] = kUsed;
-    }
+    for (const Run& r : runs) group_of_root[root_of_pair(r.a, r.b)] = kUsed;
     for (const LinkRecord& l : links) group_of_root[root_of_pair(slot_body(l.body_a), slot_body(l.body_b))] = kUsed;
     uint32_t groups = 0;
     for (uint32_t i = 0; i < nb; ++i) {
@@ -342,14 +351,25 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
         if (group == kUsed) group = groups++;
     }
     const auto group_of = [&](uint32_t a, uint32_t b) { return group_of_root[root_of_pair(a, b)]; };
-    s.group_of_pair.resize(records.size());
-    for (std::size_t j = 0; j < records.size(); ++j)
-        s.group_of_pair[j] = same_run(j) ? s.group_of_pair[j - 1]
-                                         : group_of(body_of_slot[records[j].body_a], body_of_slot[records[j].body_b]);
+    // Each group's records in list order (a counting sort by runs): order[begin[g] .. begin[g+1]).
+    std::vector<uint32_t>& begin = s.group_begin;
+    begin.assign(groups + 1, 0);
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        const uint32_t end = k + 1 < runs.size() ? runs[k + 1].first : uint32_t(records.size());
+        runs[k].group = group_of(runs[k].a, runs[k].b);
+        begin[runs[k].group + 1] += end - runs[k].first;
+    }
+    for (uint32_t g = 0; g < groups; ++g) begin[g + 1] += begin[g];
+    s.next.assign(begin.begin(), begin.end() - 1);
+    s.order.resize(records.size());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        const uint32_t end = k + 1 < runs.size() ? runs[k + 1].first : uint32_t(records.size());
+        uint32_t& next = s.next[runs[k].group];
+        for (uint32_t j = runs[k].first; j < end; ++j) s.order[next++] = j;
+    }
     s.group_of_link.resize(links.size());
     for (std::size_t j = 0; j < links.size(); ++j)
         s.group_of_link[j] = group_of(slot_body(links[j].body_a), slot_body(links[j].body_b));
-    sort_by_group(s.group_of_pair, groups, s.group_begin, s.order, s.next);
     sort_by_group(s.group_of_link, groups, s.link_begin, s.link_order, s.next);
     return groups;
 }
