@@ -19,27 +19,34 @@ void World::begin_call_events() {
     sleep_events_.clear();
 }
 
-// After the sub-step's solve: the normal force of every active pair, summed per body pair; its
-// impulse is the force times the mid-step interval it changed the velocities over
-// (central_difference.h), the same for every body of the step.
+// After the sub-step's solve, in one pass over the list: the bodies that touch are marked (for
+// the commit's contact forces and for waking sleepers), and the normal force of every active
+// pair is summed per body pair; its impulse is the force times the mid-step interval it changed
+// the velocities over (central_difference.h), the same for every body of the step.
 void World::tally_contact_pairs(double h) {
     const double h_mid = mid_step(state_.counters.step_size, h);
     substep_serial_ += 1;
-    // The records come ordered by node, so a pair's come in runs: one lookup per run, the
-    // pair's force of this sub-step summed in its tally, its impulse and peak taken after.
+    // The records come ordered by node, so a pair's come in runs: the bodies marked and the
+    // pair's tally looked up once per run, its force of this sub-step summed in its tally, its
+    // impulse and peak taken after.
     substep_pairs_.clear();
+    uint32_t last_a = UINT32_MAX, last_b = UINT32_MAX;
     uint64_t key = UINT64_MAX;
     PairTally* t = nullptr;
     for (const ContactRecord& r : state_.contacts) {
         if (!r.active()) continue;
-        const uint64_t k = pair_key(r.body_a, r.body_b);
-        if (k != key) {
-            key = k;
-            t = &pair_tally_[key];  // references into the map stay valid as it grows
-            if (t->last_substep != substep_serial_) {
-                t->last_substep = substep_serial_;
-                t->substep_force = 0.0;
-                substep_pairs_.push_back(t);
+        if (r.body_a != last_a || r.body_b != last_b) {
+            last_a = r.body_a, last_b = r.body_b;
+            scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
+            const uint64_t k = pair_key(r.body_a, r.body_b);
+            if (k != key) {
+                key = k;
+                t = &pair_tally_[key];  // references into the map stay valid as it grows
+                if (t->last_substep != substep_serial_) {
+                    t->last_substep = substep_serial_;
+                    t->substep_force = 0.0;
+                    substep_pairs_.push_back(t);
+                }
             }
         }
         t->substep_force += r.lambda_n;

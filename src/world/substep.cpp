@@ -205,15 +205,8 @@ void World::solve(double h) {
         std::merge(detected_.begin(), detected_.end(), frozen_.begin(), frozen_.end(), std::back_inserter(state_.contacts),
                    order);
     }
-    // The bodies that touch: once per run of records of one pair of bodies.
-    uint32_t last_a = UINT32_MAX, last_b = UINT32_MAX;
-    for (const ContactRecord& r : state_.contacts)
-        if (r.active() && (r.body_a != last_a || r.body_b != last_b)) {
-            scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
-            last_a = r.body_a, last_b = r.body_b;
-        }
+    tally_contact_pairs(h);  // marks the bodies that touch
     for (const LinkRecord& l : links_) scratch_[l.body_a].touched = true;  // holds contact forces too
-    tally_contact_pairs(h);
     wake_touched_sleepers();
 }
 

@@ -240,7 +240,7 @@ private:
     void update_sleep(double dt);
     // events.cpp
     void begin_call_events();
-    void tally_contact_pairs(double h);
+    void tally_contact_pairs(double h);  // also marks the bodies that touch
     void finish_call_events();
 
     lfem_world_def def_;
