@@ -118,11 +118,15 @@ void World::step(double dt) {
     uint32_t substeps = substeps_for(dt, limit);
 
     // The snapshot: body by body on the pool (a copy of every node and tet array: with one
-    // sub-step a call, as much memory traffic as a fifth of the step).
+    // sub-step a call, as much memory traffic as a fifth of the step), the world's state (its
+    // contact list) as one more task of the same round.
     Snapshot saved;
-    saved.bodies.resize(bodies_.slot_count());
-    parallel_for(stages_.pool, bodies_.slot_count(), [&](uint32_t i) { saved.bodies[i] = bodies_.slot(i).state; });
-    saved.state = state_;
+    const uint32_t slots = bodies_.slot_count();
+    saved.bodies.resize(slots);
+    parallel_for(stages_.pool, slots + 1, [&](uint32_t i) {
+        if (i < slots) saved.bodies[i] = bodies_.slot(i).state;
+        else saved.state = state_;
+    });
     saved.profile = profile_;
     auto roll_back = [&] {
         for (uint32_t i = 0; i < bodies_.slot_count(); ++i) bodies_.slot(i).state = std::move(saved.bodies[i]);
@@ -140,6 +144,7 @@ void World::step(double dt) {
     // that bound within a few steps of becoming visible. Under the automatic step the limit is
     // re-checked after every sub-step (the neo-Hookean limit follows the current shape).
     const auto run = [&](double h) {
+        kept_offset_known_ = false;  // from the list as the attempt finds it
         Attempt a;
         a.limit_seen = limit;
         double work = 0.0, work_flow = 0.0;
