@@ -3,6 +3,8 @@
 // barycentric weights of eq. (6) and the multiplier (the contact force, newtons).
 #pragma once
 
+#include <algorithm>
+
 #include <cstdint>
 
 namespace lfem {
@@ -28,6 +30,9 @@ struct ContactRecord {
                                          //   added: let out at 1e-3 of an edge a step
 
     bool active() const { return lambda_n > 0.0; }  // carries force
+    // How deep the solve left the pair (m, >= 0): a kept overlap or the solver's residual,
+    // along the normal or from the triangle's plane, whichever is deeper (plane_gap).
+    double kept_offset() const { return std::max(0.0, -std::min(gap_after, plane_gap)); }
 };
 
 }  // namespace lfem

@@ -18,10 +18,8 @@ constexpr uint32_t kSlaveBlock = 64;
 // Moving candidate faces per block of the pass that makes their FaceSteps (cheap, one each).
 constexpr uint32_t kFaceBlock = 256;
 
-// How deep the last step left the pair: a kept overlap or the solver's residual, along the
-// contact's normal or from the triangle's plane, whichever is deeper (solve_contact_multipliers.cpp,
-// plane_gap).
-double kept_offset(const ContactRecord* r) { return r ? std::max(0.0, -std::min(r->gap_after, r->plane_gap)) : 0.0; }
+// How deep the last step left the pair (ContactRecord::kept_offset), 0 for a new one.
+double kept_offset(const ContactRecord* r) { return r ? r->kept_offset() : 0.0; }
 
 // What the narrow phase's blocks read and none of them writes (but each its own nodes' tracks
 // and pairs' skips).
@@ -391,13 +389,17 @@ FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRe
 
 }  // namespace
 
+double deepest_kept_offset(const std::vector<ContactRecord>& list) {
+    double deepest = 0.0;
+    for (const ContactRecord& r : list) deepest = std::max(deepest, r.kept_offset());
+    return deepest;
+}
+
 FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vector<ContactRecord>& previous,
-                          bool scan_overlaps, DetectionScratch& s, std::vector<ContactRecord>& out,
+                          double max_offset, bool scan_overlaps, DetectionScratch& s, std::vector<ContactRecord>& out,
                           lfem_profile& profile, ThreadPool* pool) {
     // `out` keeps its old records until the join overwrites them: resized, not cleared, so that
     // only the records beyond its last length are constructed before being copied over.
-    double max_offset = 0.0;
-    for (const ContactRecord& r : previous) max_offset = std::max(max_offset, -std::min(r.gap_after, r.plane_gap));
     ContactCandidates& c = s.candidates;
     // The moving candidate faces' boxes and normals over this sub-step (each once, in blocks of
     // kFaceBlock), for the narrow phase.

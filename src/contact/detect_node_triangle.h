@@ -91,7 +91,8 @@ struct DetectionScratch {
 // crossed or lies against, with its normal at x*, the barycentric weights of the contact point
 // and the target gap (a kept overlap). `previous` is the last step's list (same order: body,
 // node, other body), which says which overlaps are being recovered, and whose multipliers
-// warm-start the pairs found again (the same node and body: a resting contact starts solved).
+// warm-start the pairs found again (the same node and body: a resting contact starts solved);
+// max_offset is its deepest_kept_offset.
 // With scan_overlaps (the first step after bodies were added) nodes found up to half an edge
 // inside another body are taken as overlaps to be removed gradually. Time and counts of the
 // candidate search (broad phase), the node-triangle tests (narrow phase) and the rigid-shape
@@ -99,8 +100,12 @@ struct DetectionScratch {
 // list and the counts are bitwise the same for any number of threads, and whether or not the
 // candidates were searched for again. Returns the nodes found fallen in (a warning).
 FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies,
-                          const std::vector<ContactRecord>& previous, bool scan_overlaps,
+                          const std::vector<ContactRecord>& previous, double max_offset, bool scan_overlaps,
                           DetectionScratch& scratch, std::vector<ContactRecord>& out,
                           lfem_profile& profile, ThreadPool* pool = nullptr);
+
+// The deepest overlap a list leaves to be recovered (the largest ContactRecord::kept_offset, 0
+// for none): how much deeper than the capture band the next detection must look.
+double deepest_kept_offset(const std::vector<ContactRecord>& list);
 
 }  // namespace lfem

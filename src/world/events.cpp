@@ -19,8 +19,9 @@ void World::begin_call_events() {
     sleep_events_.clear();
 }
 
-// After the sub-step's solve, in one pass over the list: the bodies that touch are marked (for
-// the commit's contact forces and for waking sleepers), and the normal force of every active
+// After the sub-step's solve, in one pass over the list: its deepest kept offset is taken for
+// the next sub-step's detection, the bodies that touch are marked (for the commit's contact
+// forces and for waking sleepers), and the normal force of every active
 // pair is summed per body pair; its impulse is the force times the mid-step interval it changed
 // the velocities over (central_difference.h), the same for every body of the step.
 void World::tally_contact_pairs(double h) {
@@ -33,7 +34,9 @@ void World::tally_contact_pairs(double h) {
     uint32_t last_a = UINT32_MAX, last_b = UINT32_MAX;
     uint64_t key = UINT64_MAX;
     PairTally* t = nullptr;
+    double deepest = 0.0;
     for (const ContactRecord& r : state_.contacts) {
+        deepest = std::max(deepest, r.kept_offset());  // for the next sub-step's detection
         if (!r.active()) continue;
         if (r.body_a != last_a || r.body_b != last_b) {
             last_a = r.body_a, last_b = r.body_b;
@@ -51,6 +54,7 @@ void World::tally_contact_pairs(double h) {
         }
         t->substep_force += r.lambda_n;
     }
+    kept_offset_ = deepest, kept_offset_known_ = true;
     for (PairTally* p : substep_pairs_) {
         p->impulse += p->substep_force * h_mid;
         p->max_force = std::max(p->max_force, p->substep_force);

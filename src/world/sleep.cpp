@@ -40,6 +40,7 @@ void World::wake_touching(uint32_t slot) {
 // After a sub-step's solve: a sleeping body that an awake, moving body presses wakes (it takes
 // part from the next sub-step on; in this one it held like a static body).
 void World::wake_touched_sleepers() {
+    if (!stages_.any_asleep) return;  // no body fell asleep during a call: none to wake
     for (const ContactRecord& r : state_.contacts) {
         if (!r.active()) continue;
         const Body& a = bodies_.slot(r.body_a);

@@ -172,8 +172,11 @@ void World::detect() {
         detected_.clear();
         return;
     }
-    fallen_ = detect_node_triangle(contact_bodies_.bodies(), state_.contacts, c.scan_overlaps, detection_, detected_,
-                                   profile_, stages_.pool);
+    // The list's deepest kept offset: taken by the last sub-step's pass over it after the solve
+    // (tally_contact_pairs), else (a call's first sub-step) here.
+    const double max_offset = kept_offset_known_ ? kept_offset_ : deepest_kept_offset(state_.contacts);
+    fallen_ = detect_node_triangle(contact_bodies_.bodies(), state_.contacts, max_offset, c.scan_overlaps, detection_,
+                                   detected_, profile_, stages_.pool);
     c.scan_overlaps = false;
 }
 
