@@ -55,7 +55,9 @@ bool still_outside(const PairSkip& skip, bool scan_overlaps, double node_odomete
     const double df = face_track ? face_track->odometer - skip.face_mark + face->motion : 0.0;
     const double h = skip.height - 2.0 * df;
     if (!(h > 0.5 * skip.height)) return false;
-    return (dp + (2.1 + 2.0 * far_reach / h) * df) / h < 0.5 * skip.margin;
+    // (dp + (2.1 + 2 far_reach / h) df) / h < sigma / 2, multiplied by h^2 > 0: no division in
+    // the test that every skipped pair takes at every sub-step.
+    return dp * h + (2.1 * h + 2.0 * far_reach) * df < 0.5 * skip.margin * h * h;
 }
 
 // How far from a face's plane a node may be when it meets the face (its distance bounds the
