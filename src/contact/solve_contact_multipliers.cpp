@@ -119,6 +119,8 @@ struct GroupResult {
     uint64_t ticks = 0, friction_ticks = 0;
     bool friction = false;  // some pair of the group has friction
     double tolerance = 0;   // its stopping tolerance (stopping_tolerance)
+    double deepest_kept_offset = 0;  // of its records
+    uint32_t pair_forces = 0;  // how many BodyPairForces it left in its range of the scratch
 };
 
 // A group's links: links[order[0 .. count)] with their pairs.
@@ -213,6 +215,41 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
     out.ticks = ticks() - group_start;
 }
 
+// One active record of a group, for its tally: its pair of bodies and its place in the group.
+struct ForceEntry {
+    uint64_t key;  // slot_a << 32 | slot_b, slot_a <= slot_b
+    uint32_t k;    // in the group's list order
+    double force;
+};
+
+// What a group leaves for the events' tally (records[order[k]], k < count, in list order):
+// the sum of the active pairs' normal multipliers per pair of bodies, each added in list order
+// (a sort by pair, then by place), written as BodyPairForces over the front of `entries`
+// (`count` of scratch); and the deepest kept offset of its records.
+void tally_group(const std::vector<ContactRecord>& records, const uint32_t* order, uint32_t count,
+                 ForceEntry* entries, GroupResult& out) {
+    uint32_t n = 0;
+    double deepest = 0.0;
+    for (uint32_t k = 0; k < count; ++k) {
+        const ContactRecord& r = records[order[k]];
+        deepest = std::max(deepest, r.kept_offset());
+        if (!r.active()) continue;
+        const uint32_t a = std::min(r.body_a, r.body_b), b = std::max(r.body_a, r.body_b);
+        entries[n++] = ForceEntry{uint64_t(a) << 32 | b, k, r.lambda_n};
+    }
+    std::sort(entries, entries + n,
+              [](const ForceEntry& x, const ForceEntry& y) { return x.key != y.key ? x.key < y.key : x.k < y.k; });
+    uint32_t pairs = 0;
+    for (uint32_t j = 0; j < n;) {
+        const uint64_t key = entries[j].key;
+        double force = 0.0;
+        for (; j < n && entries[j].key == key; ++j) force += entries[j].force;
+        entries[pairs++] = ForceEntry{key, 0, force};  // pairs <= j: never over an entry still to read
+    }
+    out.deepest_kept_offset = deepest;
+    out.pair_forces = pairs;
+}
+
 // The pieces of record r's constraint: its points, weights, H and friction. `fixed`: 6 numbers
 // of scratch, where the point of an immovable triangle goes (at the end of the step and at its
 // start), kept for the solve.
@@ -286,6 +323,7 @@ struct ContactSolveScratch::Arrays {
     std::vector<LinkPair> link_pairs;
     std::vector<uint32_t> parent, group_of_root, group_begin, order, next;
     std::vector<Run> runs;  // the records' runs of one pair of bodies (group_pairs)
+    std::vector<ForceEntry> forces;  // per record: the groups' tallies (tally_group)
     std::vector<uint8_t> movable;  // per body
     std::vector<uint32_t> group_of_link, link_begin, link_order;
     std::vector<GroupResult> results;
@@ -381,7 +419,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
                                              std::vector<ContactRecord>& records, std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
                                              double h, ContactSolveScratch& scratch, lfem_profile& profile,
-                                             ThreadPool* pool) {
+                                             std::vector<BodyPairForce>& pair_forces, ThreadPool* pool) {
     // The whole solve is timed as the normal part; the friction passes' share of it is moved
     // to the friction part at the end.
     const auto solve_start = std::chrono::steady_clock::now();
@@ -400,6 +438,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     // the pool, not one to make the pairs and one to solve them.
     pairs.resize(records.size());
     s.fixed_points.resize(6 * records.size());
+    s.forces.resize(records.size());
     parallel_for(pool, groups, [&](uint32_t g) {
         double motion = 0.0, length = HUGE_VAL;
         for (uint32_t k = begin[g]; k < begin[g + 1]; ++k) {
@@ -416,7 +455,14 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
                                                   relative_tolerance, h);
         solve_group(records, pairs.data() + begin[g], order.data() + begin[g], begin[g + 1] - begin[g], held,
                     max_iterations, results[g].tolerance, results[g]);
+        tally_group(records, order.data() + begin[g], begin[g + 1] - begin[g], s.forces.data() + begin[g], results[g]);
     });
+    pair_forces.clear();
+    for (uint32_t g = 0; g < groups; ++g)
+        for (uint32_t k = begin[g]; k < begin[g] + results[g].pair_forces; ++k) {
+            const ForceEntry& e = s.forces[k];
+            pair_forces.push_back(BodyPairForce{uint32_t(e.key >> 32), uint32_t(e.key), e.force});
+        }
 
     // Iterations and residual of the slowest group to converge, the deepest penetration.
     ContactSolveResult result;
@@ -428,6 +474,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         result.residual = std::max(result.residual, g.solve.residual);
         result.converged = result.converged && g.solve.residual <= g.tolerance;
         result.max_penetration = std::max(result.max_penetration, g.solve.max_penetration);
+        result.deepest_kept_offset = std::max(result.deepest_kept_offset, g.deepest_kept_offset);
         all_ticks += g.ticks;
         friction_ticks += g.friction_ticks;
         any_friction = any_friction || g.friction;

@@ -32,11 +32,19 @@ private:
     std::unique_ptr<Arrays> arrays_;
 };
 
+// The normal force the solve left between two bodies (for the events' tallies): the sum of
+// the multipliers of their active pairs, added in list order.
+struct BodyPairForce {
+    uint32_t slot_a = 0, slot_b = 0;  // world slots, slot_a <= slot_b
+    double force = 0;                 // N
+};
+
 struct ContactSolveResult {
     uint32_t iterations = 0;
     double residual = 0;         // m, largest correction made by the last sweep
     double max_penetration = 0;  // m, deepest remaining penetration (beyond kept offsets)
     bool converged = true;       // every group ended within its tolerance
+    double deepest_kept_offset = 0;  // m, of the records as the solve left them (ContactRecord::kept_offset)
 };
 
 // `body_of_slot[s]` is the index in `bodies` of the body in world slot s. Records carry warm
@@ -49,13 +57,15 @@ struct ContactSolveResult {
 // times h), or 1e-9 of its finest boundary edge when nothing moves (resting contact). The result gives the
 // iterations and residual of the slowest group. The attachments' links (link_constraint.h)
 // are solved in the same sweeps, each in the group of its bodies; they carry their multipliers
-// in and out like the records. Adds its time to profile.normal_solve and,
-// when a pair has friction, profile.friction.
+// in and out like the records. pair_forces gets the force between every two bodies that touch
+// (each pair once, group by group), taken by each group as it ends, like the deepest kept
+// offset: the records are not read again on the calling thread. Adds its time to
+// profile.normal_solve and, when a pair has friction, profile.friction.
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
                                              std::vector<ContactRecord>& records, std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
                                              double h, ContactSolveScratch& scratch, lfem_profile& profile,
-                                             ThreadPool* pool);
+                                             std::vector<BodyPairForce>& pair_forces, ThreadPool* pool);
 
 }  // namespace lfem

@@ -19,42 +19,46 @@ void World::begin_call_events() {
     sleep_events_.clear();
 }
 
-// After the sub-step's solve, in one pass over the list: its deepest kept offset is taken for
-// the next sub-step's detection, the bodies that touch are marked (for the commit's contact
-// forces and for waking sleepers), and the normal force of every active
-// pair is summed per body pair; its impulse is the force times the mid-step interval it changed
-// the velocities over (central_difference.h), the same for every body of the step.
+// After the sub-step's solve: the bodies that touch are marked (for the commit's contact forces
+// and for waking sleepers), and the normal force between every two bodies that touch goes to
+// their tally; its impulse is the force times the mid-step interval it changed the velocities
+// over (central_difference.h), the same for every body of the step. The solve summed the
+// forces of the pairs it solved, each group on its own thread (pair_forces_); the pairs kept
+// frozen among sleeping bodies, merged into the list after it, are summed here (their bodies
+// never meet a solved pair's), and their kept offsets join the solve's deepest one for the
+// next sub-step's detection.
 void World::tally_contact_pairs(double h) {
     const double h_mid = mid_step(state_.counters.step_size, h);
     substep_serial_ += 1;
-    // The records come ordered by node, so a pair's come in runs: the bodies marked and the
-    // pair's tally looked up once per run, its force of this sub-step summed in its tally, its
-    // impulse and peak taken after.
     substep_pairs_.clear();
+    const auto tally_of = [&](uint64_t key) {
+        PairTally* t = &pair_tally_[key];  // references into the map stay valid as it grows
+        if (t->last_substep != substep_serial_) {
+            t->last_substep = substep_serial_;
+            t->substep_force = 0.0;
+            substep_pairs_.push_back(t);
+        }
+        return t;
+    };
+    for (const BodyPairForce& f : pair_forces_) {
+        scratch_[f.slot_a].touched = scratch_[f.slot_b].touched = true;
+        tally_of(pair_key(f.slot_a, f.slot_b))->substep_force += f.force;
+    }
+    // The frozen pairs come ordered by node, so a pair's come in runs: the bodies marked and the
+    // pair's tally looked up once per run, its force summed in list order.
     uint32_t last_a = UINT32_MAX, last_b = UINT32_MAX;
-    uint64_t key = UINT64_MAX;
     PairTally* t = nullptr;
-    double deepest = 0.0;
-    for (const ContactRecord& r : state_.contacts) {
-        deepest = std::max(deepest, r.kept_offset());  // for the next sub-step's detection
+    for (const ContactRecord& r : frozen_) {
+        kept_offset_ = std::max(kept_offset_, r.kept_offset());
         if (!r.active()) continue;
         if (r.body_a != last_a || r.body_b != last_b) {
             last_a = r.body_a, last_b = r.body_b;
             scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
-            const uint64_t k = pair_key(r.body_a, r.body_b);
-            if (k != key) {
-                key = k;
-                t = &pair_tally_[key];  // references into the map stay valid as it grows
-                if (t->last_substep != substep_serial_) {
-                    t->last_substep = substep_serial_;
-                    t->substep_force = 0.0;
-                    substep_pairs_.push_back(t);
-                }
-            }
+            t = tally_of(pair_key(r.body_a, r.body_b));
         }
         t->substep_force += r.lambda_n;
     }
-    kept_offset_ = deepest, kept_offset_known_ = true;
+    kept_offset_known_ = true;
     for (PairTally* p : substep_pairs_) {
         p->impulse += p->substep_force * h_mid;
         p->max_force = std::max(p->max_force, p->substep_force);

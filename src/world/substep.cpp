@@ -187,15 +187,18 @@ void World::detect() {
 void World::solve(double h) {
     unconverged_ = false;
     build_links(frame_fraction_);
+    pair_forces_.clear();
+    kept_offset_ = 0.0;
     if (!detected_.empty() || !links_.empty()) {
         const ContactSolveResult res =
             solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_, links_,
                                       def_.contact_iterations, def_.contact_tolerance, h, solve_scratch_, profile_,
-                                      stages_.pool);
+                                      pair_forces_, stages_.pool);
         state_.counters.solver_iterations = res.iterations;
         state_.counters.solver_residual = res.residual;
         state_.counters.max_penetration = res.max_penetration;
         unconverged_ = !res.converged;
+        kept_offset_ = res.deepest_kept_offset;
     }
     take_link_forces(h);
     if (frozen_.empty()) {
@@ -208,7 +211,7 @@ void World::solve(double h) {
         std::merge(detected_.begin(), detected_.end(), frozen_.begin(), frozen_.end(), std::back_inserter(state_.contacts),
                    order);
     }
-    tally_contact_pairs(h);  // marks the bodies that touch
+    tally_contact_pairs(h);  // marks the bodies that touch, completes kept_offset_
     for (const LinkRecord& l : links_) scratch_[l.body_a].touched = true;  // holds contact forces too
     wake_touched_sleepers();
 }

@@ -240,7 +240,7 @@ private:
     void update_sleep(double dt);
     // events.cpp
     void begin_call_events();
-    void tally_contact_pairs(double h);  // also marks the bodies that touch, takes kept_offset_
+    void tally_contact_pairs(double h);  // also marks the bodies that touch, completes kept_offset_
     void finish_call_events();
 
     lfem_world_def def_;
@@ -267,9 +267,10 @@ private:
     std::unordered_map<uint64_t, PairTally> pair_tally_;
     std::vector<PairTally*> substep_pairs_;  // the pairs met in the sub-step being tallied
     uint64_t substep_serial_ = 0;
-    // The contact list's deepest_kept_offset, taken with the tally after a sub-step's solve;
-    // known only from there to the next sub-step of the same attempt of a call (the list
-    // changes between calls and on a retry).
+    std::vector<BodyPairForce> pair_forces_;  // the sub-step's solve's, for the tally
+    // The contact list's deepest_kept_offset, from the solve and the frozen pairs after a
+    // sub-step; known only from there to the next sub-step of the same attempt of a call (the
+    // list changes between calls and on a retry).
     double kept_offset_ = 0;
     bool kept_offset_known_ = false;
     bool in_call_ = false;
