@@ -35,4 +35,11 @@ struct ContactRecord {
     double kept_offset() const { return std::max(0.0, -std::min(gap_after, plane_gap)); }
 };
 
+// A run of a contact list's records of one pair of bodies: from records[first] to the next
+// run's first (or the list's end), nodes of body_a (a slot) against body_b. A list ordered by
+// node, then by the other body, comes in such runs: the solve's grouping works on them.
+struct RecordRun {
+    uint32_t first = 0, body_a = 0, body_b = 0;
+};
+
 }  // namespace lfem

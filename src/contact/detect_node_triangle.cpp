@@ -367,9 +367,11 @@ void start_tracks(const std::vector<ContactBody>& bodies, DetectionScratch& s) {
 }
 
 // The blocks' records joined in block order, which is the list's order (each block copied on
-// the pool to its place); their counts added to the profile in the same order.
-FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out, lfem_profile& profile,
-                     ThreadPool* pool) {
+// the pool to its place, its runs of one pair of bodies found by the same task while its
+// records are in that core's cache); their counts added to the profile, and the runs joined
+// (a run cut by a block's end made whole), in the same order.
+FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out,
+                     std::vector<RecordRun>& runs, lfem_profile& profile, ThreadPool* pool) {
     FallenIn fallen;
     s.block_begin.resize(blocks + 1);
     std::size_t total = 0;
@@ -384,8 +386,21 @@ FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRe
     s.block_begin[blocks] = total;
     out.resize(total);
     parallel_for(total >= 512 ? pool : nullptr, blocks, [&](uint32_t b) {
-        std::copy(s.blocks[b].records.begin(), s.blocks[b].records.end(), out.begin() + std::ptrdiff_t(s.block_begin[b]));
+        DetectionBlock& block = s.blocks[b];
+        std::copy(block.records.begin(), block.records.end(), out.begin() + std::ptrdiff_t(s.block_begin[b]));
+        block.runs.clear();
+        for (uint32_t j = 0; j < block.records.size(); ++j) {
+            const ContactRecord& r = block.records[j];
+            if (block.runs.empty() || block.runs.back().body_a != r.body_a || block.runs.back().body_b != r.body_b)
+                block.runs.push_back(RecordRun{j, r.body_a, r.body_b});
+        }
     });
+    runs.clear();
+    for (uint32_t b = 0; b < blocks; ++b)
+        for (const RecordRun& r : s.blocks[b].runs) {
+            if (!runs.empty() && runs.back().body_a == r.body_a && runs.back().body_b == r.body_b) continue;
+            runs.push_back(RecordRun{uint32_t(s.block_begin[b]) + r.first, r.body_a, r.body_b});
+        }
     return fallen;
 }
 
@@ -399,7 +414,7 @@ double deepest_kept_offset(const std::vector<ContactRecord>& list) {
 
 FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vector<ContactRecord>& previous,
                           double max_offset, bool scan_overlaps, DetectionScratch& s, std::vector<ContactRecord>& out,
-                          lfem_profile& profile, ThreadPool* pool) {
+                          std::vector<RecordRun>& runs, lfem_profile& profile, ThreadPool* pool) {
     // `out` keeps its old records until the join overwrites them: resized, not cleared, so that
     // only the records beyond its last length are constructed before being copied over.
     ContactCandidates& c = s.candidates;
@@ -441,6 +456,7 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
     const uint32_t nodes = uint32_t(c.body.size());
     if (nodes == 0) {
         out.clear();
+        runs.clear();
         return FallenIn{};
     }
     const bool any_shapes = !c.shapes.empty();
@@ -462,11 +478,11 @@ FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std:
             parallel_for(pool, face_blocks(), step_faces);
         }
         parallel_for(pool, blocks, [&](uint32_t b) { test_block_triangles(in, b, s.blocks[b], normals, ready); });
-        if (!any_shapes) return join_blocks(s, blocks, out, profile, pool);
+        if (!any_shapes) return join_blocks(s, blocks, out, runs, profile, pool);
     }
     PhaseTimer timer(profile.shape_queries);
     parallel_for(pool, blocks, [&](uint32_t b) { test_block_shapes(in, b, s.blocks[b], normals, ready); });
-    return join_blocks(s, blocks, out, profile, pool);
+    return join_blocks(s, blocks, out, runs, profile, pool);
 }
 
 }  // namespace lfem

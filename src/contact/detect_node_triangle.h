@@ -50,6 +50,7 @@ struct DetectionBlock {
                                               //   best, turned from it (NodeSlots), and the bests
                                               //   they were found beside
     std::vector<uint32_t> accepted_begin;     // per touched body: its first in accepted
+    std::vector<RecordRun> runs;              // of its records (first: within the block), made by the join
     ShapeQueryCounts counts;                  // the profile's counts, added in block order
     FallenIn fallen;                          // of the block's records
 };
@@ -98,10 +99,12 @@ struct DetectionScratch {
 // candidate search (broad phase), the node-triangle tests (narrow phase) and the rigid-shape
 // queries are added to `profile`. The tests run in blocks on the pool when one is given; the
 // list and the counts are bitwise the same for any number of threads, and whether or not the
-// candidates were searched for again. Returns the nodes found fallen in (a warning).
+// candidates were searched for again. `runs` gets the list's runs of one pair of bodies (found
+// by the threads that copy the blocks' records into the list). Returns the nodes found fallen
+// in (a warning).
 FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies,
                           const std::vector<ContactRecord>& previous, double max_offset, bool scan_overlaps,
-                          DetectionScratch& scratch, std::vector<ContactRecord>& out,
+                          DetectionScratch& scratch, std::vector<ContactRecord>& out, std::vector<RecordRun>& runs,
                           lfem_profile& profile, ThreadPool* pool = nullptr);
 
 // The deepest overlap a list leaves to be recovered (the largest ContactRecord::kept_offset, 0

@@ -346,8 +346,8 @@ void sort_by_group(const std::vector<uint32_t>& group_of, uint32_t groups, std::
 }
 
 uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<uint32_t>& body_of_slot,
-                     const std::vector<ContactRecord>& records, const std::vector<LinkRecord>& links,
-                     ContactSolveScratch::Arrays& s) {
+                     const std::vector<ContactRecord>& records, const std::vector<RecordRun>& record_runs,
+                     const std::vector<LinkRecord>& links, ContactSolveScratch::Arrays& s) {
     const uint32_t nb = uint32_t(bodies.size());
     std::vector<uint32_t>& parent = s.parent;
     std::vector<uint8_t>& movable = s.movable;
@@ -355,14 +355,11 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
     movable.resize(nb);
     for (uint32_t i = 0; i < nb; ++i) parent[i] = i, movable[i] = is_movable(bodies[i]);
     // The records come in runs of one pair of bodies (a body's nodes against another's faces,
-    // in node order): found in one pass, the work below is done once per run (a few dozen
-    // runs for hundreds of records), and the records are not read again.
+    // in node order), found by the detection: the work below is done once per run (a few dozen
+    // runs for hundreds of records), and the records are not read.
     std::vector<Run>& runs = s.runs;
     runs.clear();
-    for (uint32_t j = 0; j < records.size(); ++j) {
-        const uint32_t a = body_of_slot[records[j].body_a], b = body_of_slot[records[j].body_b];
-        if (runs.empty() || runs.back().a != a || runs.back().b != b) runs.push_back(Run{j, a, b, 0});
-    }
+    for (const RecordRun& r : record_runs) runs.push_back(Run{r.first, body_of_slot[r.body_a], body_of_slot[r.body_b], 0});
     auto link_bodies = [&](uint32_t a, uint32_t b) {
         if (movable[a] && movable[b]) parent[root_of(parent, a)] = root_of(parent, b);
     };
@@ -416,7 +413,8 @@ uint32_t group_pairs(const std::vector<ContactBody>& bodies, const std::vector<u
 
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
-                                             std::vector<ContactRecord>& records, std::vector<LinkRecord>& links,
+                                             std::vector<ContactRecord>& records, const std::vector<RecordRun>& runs,
+                                             std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
                                              double h, ContactSolveScratch& scratch, lfem_profile& profile,
                                              std::vector<BodyPairForce>& pair_forces, ThreadPool* pool) {
@@ -426,7 +424,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     ContactSolveScratch::Arrays& s = scratch.arrays();
     std::vector<Pair>& pairs = s.pairs;
     make_link_pairs(bodies, body_of_slot, links, s.link_pairs);
-    const uint32_t groups = group_pairs(bodies, body_of_slot, records, links, s);
+    const uint32_t groups = group_pairs(bodies, body_of_slot, records, runs, links, s);
     const std::vector<uint32_t>& begin = s.group_begin;
     const std::vector<uint32_t>& order = s.order;
     std::vector<GroupResult>& results = s.results;

@@ -47,7 +47,8 @@ struct ContactSolveResult {
     double deepest_kept_offset = 0;  // m, of the records as the solve left them (ContactRecord::kept_offset)
 };
 
-// `body_of_slot[s]` is the index in `bodies` of the body in world slot s. Records carry warm
+// `body_of_slot[s]` is the index in `bodies` of the body in world slot s; `runs` are the
+// records' runs of one pair of bodies (detect_node_triangle gives them). Records carry warm
 // start multipliers on entry and the converged ones (newtons) on exit; `x` of the bodies is
 // moved from x* to x^{n+1}. Pairs linked through no movable body form groups that converge on
 // their own, side by side on the pool (results independent of the thread count). A sweep that
@@ -63,7 +64,8 @@ struct ContactSolveResult {
 // profile.normal_solve and, when a pair has friction, profile.friction.
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
-                                             std::vector<ContactRecord>& records, std::vector<LinkRecord>& links,
+                                             std::vector<ContactRecord>& records, const std::vector<RecordRun>& runs,
+                                             std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
                                              double h, ContactSolveScratch& scratch, lfem_profile& profile,
                                              std::vector<BodyPairForce>& pair_forces, ThreadPool* pool);

@@ -170,13 +170,14 @@ void World::detect() {
     c.max_penetration = 0.0;
     if (!contact_bodies_.may_touch()) {
         detected_.clear();
+        detected_runs_.clear();
         return;
     }
     // The list's deepest kept offset: taken by the last sub-step's pass over it after the solve
     // (tally_contact_pairs), else (a call's first sub-step) here.
     const double max_offset = kept_offset_known_ ? kept_offset_ : deepest_kept_offset(state_.contacts);
     fallen_ = detect_node_triangle(contact_bodies_.bodies(), state_.contacts, max_offset, c.scan_overlaps, detection_,
-                                   detected_, profile_, stages_.pool);
+                                   detected_, detected_runs_, profile_, stages_.pool);
     c.scan_overlaps = false;
 }
 
@@ -191,7 +192,8 @@ void World::solve(double h) {
     kept_offset_ = 0.0;
     if (!detected_.empty() || !links_.empty()) {
         const ContactSolveResult res =
-            solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_, links_,
+            solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_,
+                                      detected_runs_, links_,
                                       def_.contact_iterations, def_.contact_tolerance, h, solve_scratch_, profile_,
                                       pair_forces_, stages_.pool);
         state_.counters.solver_iterations = res.iterations;

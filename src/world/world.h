@@ -252,6 +252,7 @@ private:
     StageLists stages_;
     ContactBodies contact_bodies_;
     std::vector<ContactRecord> detected_, frozen_;  // frozen_: pairs among sleeping bodies
+    std::vector<RecordRun> detected_runs_;          // detected_'s runs of one pair of bodies
     FallenIn fallen_;           // by the sub-step's detection
     bool unconverged_ = false;  // the sub-step's contact solve used every sweep
     std::vector<LinkRecord> links_;  // the attachments' links of the sub-step
