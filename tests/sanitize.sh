@@ -58,13 +58,15 @@ start "robustness tests (checkpoints, out of memory, concurrent worlds)" \
   "$build/tests/lfem_robustness_tests" --gtest_brief=1
 finish
 
-# ThreadSanitizer: separate worlds in separate threads, and one world's own worker threads.
+# ThreadSanitizer: separate worlds in separate threads, one world's own worker threads, and the
+# thread pool's own tests (its rounds are handed out without a lock).
 tsan=build-tsan
 cmake -S . -B "$tsan" "${flags[@]}" -DLFEM_SANITIZE_THREAD=ON >/dev/null
-cmake --build "$tsan" -j2 --target lfem_robustness_tests
+cmake --build "$tsan" -j2 --target lfem_robustness_tests lfem_thread_pool_tests
 export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
 start "thread tests under ThreadSanitizer" \
   "$tsan/tests/lfem_robustness_tests" --gtest_brief=1 --gtest_filter='ConcurrentWorlds.*'
+start "thread pool tests under ThreadSanitizer" "$tsan/tests/lfem_thread_pool_tests" --gtest_brief=1
 finish
 
 # A failing test or a sanitizer report has already ended the script (set -e); count what ran.
