@@ -35,6 +35,9 @@ struct ContactRecord {
     double kept_offset() const { return std::max(0.0, -std::min(gap_after, plane_gap)); }
 };
 
+// The key of an unordered pair of bodies (world slots): the lower slot << 32 | the higher.
+inline uint64_t body_pair_key(uint32_t a, uint32_t b) { return a < b ? uint64_t(a) << 32 | b : uint64_t(b) << 32 | a; }
+
 // A run of a contact list's records of one pair of bodies: from records[first] to the next
 // run's first (or the list's end), nodes of body_a (a slot) against body_b. A list ordered by
 // node, then by the other body, comes in such runs: the solve's grouping works on them.

@@ -217,7 +217,7 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
 
 // One active record of a group, for its tally: its pair of bodies and its place in the group.
 struct ForceEntry {
-    uint64_t key;  // slot_a << 32 | slot_b, slot_a <= slot_b
+    uint64_t key;  // body_pair_key
     uint32_t k;    // in the group's list order
     double force;
 };
@@ -234,8 +234,7 @@ void tally_group(const std::vector<ContactRecord>& records, const uint32_t* orde
         const ContactRecord& r = records[order[k]];
         deepest = std::max(deepest, r.kept_offset());
         if (!r.active()) continue;
-        const uint32_t a = std::min(r.body_a, r.body_b), b = std::max(r.body_a, r.body_b);
-        entries[n++] = ForceEntry{uint64_t(a) << 32 | b, k, r.lambda_n};
+        entries[n++] = ForceEntry{body_pair_key(r.body_a, r.body_b), k, r.lambda_n};
     }
     std::sort(entries, entries + n,
               [](const ForceEntry& x, const ForceEntry& y) { return x.key != y.key ? x.key < y.key : x.k < y.k; });

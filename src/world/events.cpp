@@ -7,12 +7,6 @@
 #include "world/world.h"
 
 namespace lfem {
-namespace {
-
-uint64_t pair_key(uint32_t a, uint32_t b) { return a < b ? uint64_t(a) << 32 | b : uint64_t(b) << 32 | a; }
-
-}  // namespace
-
 void World::begin_call_events() {
     pair_tally_.clear();
     broken_.clear();
@@ -42,7 +36,7 @@ void World::tally_contact_pairs(double h) {
     };
     for (const BodyPairForce& f : pair_forces_) {
         scratch_[f.slot_a].touched = scratch_[f.slot_b].touched = true;
-        tally_of(pair_key(f.slot_a, f.slot_b))->substep_force += f.force;
+        tally_of(body_pair_key(f.slot_a, f.slot_b))->substep_force += f.force;
     }
     // The frozen pairs come ordered by node, so a pair's come in runs: the bodies marked and the
     // pair's tally looked up once per run, its force summed in list order.
@@ -54,7 +48,7 @@ void World::tally_contact_pairs(double h) {
         if (r.body_a != last_a || r.body_b != last_b) {
             last_a = r.body_a, last_b = r.body_b;
             scratch_[r.body_a].touched = scratch_[r.body_b].touched = true;
-            t = tally_of(pair_key(r.body_a, r.body_b));
+            t = tally_of(body_pair_key(r.body_a, r.body_b));
         }
         t->substep_force += r.lambda_n;
     }
