@@ -28,6 +28,9 @@ namespace lfem {
 // clock, not by a count of pauses: a pause takes 10 to 140 cycles depending on the CPU.
 constexpr std::chrono::microseconds kSpinTime{50};
 
+// The most tasks of one round: a range's front and back are 16-bit offsets.
+constexpr uint32_t kRoundTasks = 0xffff;
+
 inline void spin_pause() {
 #if defined(__x86_64__) || defined(__i386__)
     _mm_pause();
@@ -51,15 +54,22 @@ bool spin_until(const Ready& ready) {
 }
 
 // A loop is a "round". Its tasks are split into one contiguous range per thread (the caller's
-// first), and each thread runs its own range first, then takes what is left of the others':
-// a loop over the bodies puts each body on the same thread in every phase of a sub-step, so
-// the forces one thread wrote are read by that thread's predictor and commit from its own cache
-// (with one shared counter the bodies wandered between cores every phase, and the predictor
-// was slower on two threads than on one). Each range's next index is a 64-bit counter that
-// carries the round's number in its high half, so a worker that wakes late (the machine is
+// first), and each thread runs its own range from its front, then takes what is left of the
+// others' from their backs: a loop over the bodies puts each body on the same thread in every
+// phase of a sub-step, so the forces one thread wrote are read by that thread's predictor and
+// commit from its own cache (with one shared counter the bodies wandered between cores every
+// phase, and the predictor was slower on two threads than on one). A thief takes a range's
+// last task only while its owner has not started on it: an owner that has started takes it
+// itself a moment later, where the thief would read the body's data from the other core and
+// hand it back for the next phase. (Taking from the front, as each thread did before, the
+// thread that finished first took the next body of the other's range nearly every round, and
+// the two fought over that range's counter: 4 to 8 % of a 32-cube frame on two threads.)
+// Each range is one 64-bit word, the round's number in its high half and the range's front and
+// back (offsets from its start) in its low half, so a worker that wakes late (the machine is
 // busy) can never claim a task of a later round, and the caller never waits for a worker that
 // has not started: it takes that worker's range and waits only until every task of its round
-// has finished.
+// has finished. A round has at most kRoundTasks tasks (a range fits 16 bits); run() splits a
+// longer loop into rounds of that many.
 //
 // A round is handed out without a lock: a step runs a hundred rounds a frame, and a mutex taken
 // by the caller to post each one and by every worker to read it passed its cache line between
@@ -98,29 +108,42 @@ struct ThreadPool::Shared {
     // The end of range r of a round of `count` tasks: the ranges split [0, count) evenly.
     uint32_t range_end(uint32_t r, uint32_t count) const { return uint32_t(uint64_t(count) * (r + 1) / threads); }
 
-    // Sets every range of round my_round to its first task.
+    // The start of range r of a round of `count` tasks.
+    uint32_t range_begin(uint32_t r, uint32_t count) const { return r == 0 ? 0 : range_end(r - 1, count); }
+
+    // A range's word: the round, then its front and back (offsets from its start).
+    static uint64_t range_word(uint32_t round, uint32_t front, uint32_t back) {
+        return uint64_t(round) << 32 | uint64_t(front) << 16 | back;
+    }
+
+    // Sets every range of round my_round to all of its tasks.
     void start_ranges(uint32_t my_round, uint32_t count) {
         for (uint32_t r = 0; r < threads; ++r)
-            ranges[r].next.store(uint64_t(my_round) << 32 | (r == 0 ? 0 : range_end(r - 1, count)),
+            ranges[r].next.store(range_word(my_round, 0, range_end(r, count) - range_begin(r, count)),
                                  std::memory_order_release);
     }
 
-    // Runs tasks of `my_round`, thread `me`'s range first, then the others', until none is
-    // left to claim.
+    // Runs tasks of `my_round`: thread `me`'s range from its front, then the others' from their
+    // backs, until none is left to claim (but a started range's last task, left to its owner).
     void work(uint32_t me, uint32_t my_round, uint32_t my_count, const Task& fn) {
         // The tasks this thread ran, added to `finished` once at the end: a count shared by
         // every thread, bumped after each task, passed its cache line from core to core a few
         // hundred times a sub-step in a scene of small bodies.
         uint32_t done_here = 0;
         for (uint32_t k = 0; k < threads; ++k) {
-            const uint32_t r = (me + k) % threads, end = range_end(r, my_count);
+            const uint32_t r = (me + k) % threads, begin = range_begin(r, my_count);
+            const bool own = k == 0;
             std::atomic<uint64_t>& next = ranges[r].next;
             uint64_t v = next.load(std::memory_order_relaxed);
             for (;;) {
-                if (uint32_t(v >> 32) != my_round || uint32_t(v) >= end) break;
-                if (!next.compare_exchange_weak(v, v + 1, std::memory_order_acq_rel)) continue;
+                if (uint32_t(v >> 32) != my_round) break;
+                const uint32_t front = uint32_t(v >> 16) & 0xffff, back = uint32_t(v) & 0xffff;
+                if (front >= back || (!own && front > 0 && back - front < 2)) break;
+                // The owner moves the front up, a thief the back down.
+                const uint64_t claimed = own ? v + (uint64_t(1) << 16) : v - 1;
+                if (!next.compare_exchange_weak(v, claimed, std::memory_order_acq_rel)) continue;
                 try {
-                    fn(uint32_t(v));
+                    fn(begin + (own ? front : back - 1));
                 } catch (...) {
                     std::lock_guard<std::mutex> lock(mutex);
                     if (!error) error = std::current_exception();
@@ -134,6 +157,9 @@ struct ThreadPool::Shared {
             done.notify_all();
         }
     }
+
+    // One round of `count` (at most kRoundTasks) tasks.
+    void run_round(uint32_t count, const Task& task);
 
     void worker_main(uint32_t me) {
         uint32_t seen = 0;
@@ -191,29 +217,44 @@ uint32_t ThreadPool::size() const { return uint32_t(shared_->workers.size()) + 1
 
 void ThreadPool::run(uint32_t count, const std::function<void(uint32_t)>& task) {
     Shared& s = *shared_;
+    if (count <= kRoundTasks) return s.run_round(count, task);
+    // Every part runs, as every task of a round does, before the first exception comes back.
+    std::exception_ptr first;
+    for (uint32_t base = 0; base < count; base += std::min(kRoundTasks, count - base)) {
+        const Shared::Task part = [&task, base](uint32_t i) { task(base + i); };
+        try {
+            s.run_round(std::min(kRoundTasks, count - base), part);
+        } catch (...) {
+            if (!first) first = std::current_exception();
+        }
+    }
+    if (first) std::rethrow_exception(first);
+}
+
+void ThreadPool::Shared::run_round(uint32_t count, const Task& task) {
     // Nothing of the last round runs any more: its tasks have all finished, and a late worker
     // claims none of this one's before the ranges carry this round's number.
-    const uint32_t my_round = ++s.round;
-    s.error = nullptr;
-    s.finished.store(0, std::memory_order_relaxed);
-    Shared::Slot& slot = s.slots[my_round & 1];
+    const uint32_t my_round = ++round;
+    error = nullptr;
+    finished.store(0, std::memory_order_relaxed);
+    Slot& slot = slots[my_round & 1];
     slot.task.store(&task, std::memory_order_release);
     slot.count.store(count, std::memory_order_release);
-    s.start_ranges(my_round, count);
-    s.posted.store(my_round);
-    s.wake_sleepers();
-    s.work(0, my_round, count, task);  // the caller takes part, its own range first
+    start_ranges(my_round, count);
+    posted.store(my_round);
+    wake_sleepers();
+    work(0, my_round, count, task);  // the caller takes part, its own range first
     // The other threads' last tasks usually end within microseconds: spin before sleeping.
-    const auto all_done = [&] { return s.finished.load() == count; };
+    const auto all_done = [&] { return finished.load() == count; };
     if (!spin_until(all_done)) {
-        std::unique_lock<std::mutex> lock(s.mutex);
-        s.caller_asleep.store(true);
-        s.done.wait(lock, all_done);
-        s.caller_asleep.store(false, std::memory_order_relaxed);
+        std::unique_lock<std::mutex> lock(mutex);
+        caller_asleep.store(true);
+        done.wait(lock, all_done);
+        caller_asleep.store(false, std::memory_order_relaxed);
     }
-    if (s.error) {
-        std::exception_ptr e = s.error;
-        s.error = nullptr;
+    if (error) {
+        std::exception_ptr e = error;
+        error = nullptr;
         std::rethrow_exception(e);
     }
 }

@@ -1,7 +1,8 @@
 // A small fixed pool of worker threads for the data-parallel loops of a step (element forces,
 // predictor, commit). Created with the world, joined when it is destroyed. A parallel loop
 // gives each thread a contiguous range of the task indices (so the same body stays on the same
-// core from phase to phase); a thread done with its range takes what is left of the others'.
+// core from phase to phase); a thread done with its range takes what is left of the others'
+// from their backs.
 // Every task writes only its own outputs, so results never depend on which thread ran which
 // task (or on how many there are). Built with LFEM_WITH_THREADS=OFF the pool has no workers
 // and runs every task on the calling thread.

@@ -1,6 +1,7 @@
 // The thread pool's loops (src/common/thread_pool.h): every task runs exactly once whatever the
 // number of threads and tasks (each thread starts with its own range of the tasks, then takes
-// what is left of the others'), also when the threads had fallen asleep between rounds or while
+// what is left of the others' from their backs; a loop longer than a round's 65,535 tasks runs
+// as several rounds), also when the threads had fallen asleep between rounds or while
 // waiting for a long task, an exception reaches the caller only after every other task
 // has finished, and blocked_sum gives the same bits for any number of threads.
 #include <gtest/gtest.h>
@@ -30,6 +31,30 @@ TEST(ThreadPool, EveryTaskRunsExactlyOnceForAnyCountAndThreads) {
                 for (uint32_t i = 0; i < count; ++i)
                     ASSERT_EQ(runs[i].load(), 1) << "task " << i << " of " << count << ", " << threads << " threads";
             }
+    }
+}
+
+TEST(ThreadPool, LoopsLongerThanOneRoundRunEveryTaskOnce) {
+    // A round's ranges hold 16-bit offsets: 65,535 tasks at most; longer loops are split.
+    for (uint32_t threads = 2; threads <= 3; ++threads) {
+        lfem::ThreadPool pool(threads);
+        for (uint32_t count : {65535u, 65536u, 131071u, 200003u}) {
+            std::vector<std::atomic<uint8_t>> runs(count);
+            for (auto& r : runs) r.store(0);
+            lfem::parallel_for(&pool, count, [&](uint32_t i) { runs[i].fetch_add(1); });
+            uint32_t wrong = 0;
+            for (uint32_t i = 0; i < count; ++i) wrong += runs[i].load() != 1;
+            EXPECT_EQ(wrong, 0u) << count << " tasks, " << threads << " threads";
+        }
+        // An exception in one part: every other task of every part still runs, then it comes back.
+        std::atomic<uint32_t> ran{0};
+        EXPECT_THROW(lfem::parallel_for(&pool, 140000u,
+                                        [&](uint32_t i) {
+                                            if (i == 70000) throw std::runtime_error("task 70000");
+                                            ran.fetch_add(1);
+                                        }),
+                     std::runtime_error);
+        EXPECT_EQ(ran.load(), pool.size() > 1 ? 139999u : 70000u);  // inline, it stops at the throw
     }
 }
 
