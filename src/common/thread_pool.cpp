@@ -63,7 +63,7 @@ bool spin_until(const Ready& ready) {
 // itself a moment later, where the thief would read the body's data from the other core and
 // hand it back for the next phase. (Taking from the front, as each thread did before, the
 // thread that finished first took the next body of the other's range nearly every round, and
-// the two fought over that range's counter: 4 to 8 % of a 32-cube frame on two threads.)
+// the two fought over that range's counter: 2 to 9 % of a 32-cube frame on two threads.)
 // Each range is one 64-bit word, the round's number in its high half and the range's front and
 // back (offsets from its start) in its low half, so a worker that wakes late (the machine is
 // busy) can never claim a task of a later round, and the caller never waits for a worker that
