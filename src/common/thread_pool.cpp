@@ -220,10 +220,11 @@ void ThreadPool::run(uint32_t count, const std::function<void(uint32_t)>& task) 
     if (count <= kRoundTasks) return s.run_round(count, task);
     // Every part runs, as every task of a round does, before the first exception comes back.
     std::exception_ptr first;
-    for (uint32_t base = 0; base < count; base += std::min(kRoundTasks, count - base)) {
+    for (uint32_t base = 0, part_count; base < count; base += part_count) {
+        part_count = std::min(kRoundTasks, count - base);
         const Shared::Task part = [&task, base](uint32_t i) { task(base + i); };
         try {
-            s.run_round(std::min(kRoundTasks, count - base), part);
+            s.run_round(part_count, part);
         } catch (...) {
             if (!first) first = std::current_exception();
         }
