@@ -8,6 +8,7 @@
  * initial overlaps, a checkpoint round trip and bodies of 10-node tets.
  *
  *   scene_digest [scene-name]      (all scenes when no name is given)
+ * Each line: the physics digest, the profile's counts, and the events of every call.
  *   scene_digest --queries [name]  the same, casting rays and overlapping boxes after every
  *                                  call, with a digest of their answers: the physics and
  *                                  profile digests must not change
@@ -28,6 +29,9 @@
  * a change of how the work is done (fewer shape queries, say) may alter while the physics
  * stays bitwise the same. */
 static uint64_t g_hash, g_profile_hash;
+/* The events of every call (lfem_world_get_events), digested apart so that the physics digests
+ * stay comparable with runs from before events were digested. */
+static uint64_t g_event_hash;
 
 static void hash_into(uint64_t* h, const void* p, size_t n) {
     const unsigned char* c = (const unsigned char*)p;
@@ -168,9 +172,26 @@ static void ask_queries(lfem_world* w) {
     }
 }
 
+/* The call's events, handles' generations left out (a process-wide counter). */
+static void digest_events(lfem_world* w) {
+    uint32_t n = 0;
+    (void)lfem_world_get_events(w, NULL, 0, &n); /* the count, whatever the status */
+    lfem_event* e = malloc(sizeof(lfem_event) * (n + 1));
+    check(lfem_world_get_events(w, e, n, &n), "events");
+    for (uint32_t i = 0; i < n; ++i)
+        e[i].body_a.generation = e[i].body_b.generation = e[i].attachment.generation = 0;
+    hash_into(&g_event_hash, e, sizeof(lfem_event) * n);
+    if (getenv("SCENE_DIGEST_VERBOSE"))
+        for (uint32_t i = 0; i < n; ++i)
+            fprintf(stderr, "  event %d: bodies %u, %u, impulse %.6g N s, force %.6g N\n", (int)e[i].type,
+                    e[i].body_a.index, e[i].body_b.index, e[i].normal_impulse, e[i].max_force);
+    free(e);
+}
+
 static void step(lfem_world* w, int calls, double dt) {
     for (int i = 0; i < calls; ++i) {
         check(lfem_world_step(w, dt), "step");
+        digest_events(w);
         if (g_queries) ask_queries(w);
     }
 }
@@ -453,6 +474,92 @@ static void scene_quadratic(uint32_t threads) {
     lfem_world_destroy(w);
 }
 
+/* What a game does between frames, with sleeping on: soft cubes dropped on a floor and on each
+ * other, one held by its top nodes to a frame the caller moves, one hanging from a rigid box by
+ * an attachment that breaks; velocities set and node forces applied between calls, a sleeper
+ * woken, a touching body destroyed. The events of every call enter their own digest. */
+static void scene_game(uint32_t threads) {
+    lfem_world_def wd = lfem_world_def_default();
+    wd.thread_count = threads;
+    wd.enable_sleep = 1;
+    wd.sleep_time = 0.1;
+    lfem_world* w = NULL;
+    check(lfem_world_create(&wd, &w), "world");
+    lfem_body b[7];
+    b[0] = static_floor(w);
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 2e5;
+    d.damping = 10.0;
+    d.model = LFEM_MODEL_COROTATIONAL;
+    b[1] = add_box(w, &d, 0.08, 0.08, 0.08, 2, 2, 2, -0.3, -0.04, 0.002);
+    b[2] = add_box(w, &d, 0.08, 0.08, 0.08, 2, 2, 2, -0.29, -0.03, 0.09);
+    d.model = LFEM_MODEL_NEO_HOOKEAN;
+    b[3] = add_box(w, &d, 0.08, 0.08, 0.08, 2, 2, 2, 0.0, -0.04, 0.2);
+    d.model = LFEM_MODEL_PAPER;
+    b[4] = add_box(w, &d, 0.06, 0.06, 0.06, 2, 2, 2, 0.2, -0.03, 0.15);
+    lfem_body_def r = lfem_body_def_default();
+    r.type = LFEM_BODY_RIGID;
+    r.density = 800;
+    b[5] = add_box(w, &r, 0.05, 0.05, 0.05, 1, 1, 1, 0.2, -0.025, 0.25);
+    d.model = LFEM_MODEL_COROTATIONAL;
+    b[6] = add_box(w, &d, 0.05, 0.05, 0.05, 2, 2, 2, 0.3, -0.025, 0.1);
+    /* The neo-Hookean cube held by its top nodes to the caller's frame. */
+    const double lo[3] = {-1, -1, 0.279}, hi[3] = {1, 1, 1};
+    uint32_t top[32], n_top = 0;
+    check(lfem_body_find_nodes_in_box(w, b[3], lo, hi, top, 32, &n_top), "top nodes");
+    lfem_attachment_def ad = lfem_attachment_def_default();
+    ad.body = b[3];
+    ad.nodes = top;
+    ad.node_count = n_top;
+    lfem_attachment held;
+    check(lfem_attachment_create(w, &ad, &held), "attach to frame");
+    /* The paper cube's top nodes to the rigid box, breaking once it pulls hard. */
+    const double lo2[3] = {-1, -1, 0.209};
+    check(lfem_body_find_nodes_in_box(w, b[4], lo2, hi, top, 32, &n_top), "top nodes");
+    ad = lfem_attachment_def_default();
+    ad.body = b[4];
+    ad.target = b[5];
+    ad.nodes = top;
+    ad.node_count = n_top;
+    ad.break_force = 2.0;
+    lfem_attachment hung;
+    check(lfem_attachment_create(w, &ad, &hung), "attach to rigid");
+    int woken = 0;
+    for (int call = 0; call < 60; ++call) {
+        const double frame[7] = {0.001 * call, 0.0, 0.0, cos(0.01 * call), 0.0, 0.0, sin(0.01 * call)};
+        check(lfem_attachment_set_frame(w, held, frame), "frame");
+        if (call == 10) {
+            uint32_t n = 0;
+            check(lfem_body_get_node_count(w, b[6], &n), "nodes");
+            double* v = malloc(sizeof(double) * 3 * n);
+            for (uint32_t i = 0; i < n; ++i) v[3 * i] = -0.5, v[3 * i + 1] = 0.1, v[3 * i + 2] = 0.2;
+            check(lfem_body_set_velocities(w, b[6], v, n), "set velocities");
+            free(v);
+        }
+        if (call == 20) {
+            const uint32_t nodes[2] = {0, 1};
+            const double f[6] = {0.5, 0, 1, 0, 0.5, 1};
+            check(lfem_body_set_node_forces(w, b[1], nodes, 2, f), "node forces");
+        }
+        if (call == 30) check(lfem_body_clear_node_forces(w, b[1]), "clear forces");
+        if (call >= 40 && !woken && lfem_body_is_awake(w, b[2]) == 0) {  /* once it has fallen asleep */
+            check(lfem_body_wake(w, b[2]), "wake");
+            woken = 1;
+        }
+        if (call == 50) check(lfem_body_destroy(w, b[6]), "destroy");
+        step(w, 1, 1.0 / 60.0);
+        for (int i = 0; i < 7; ++i) {
+            const int awake = lfem_body_is_awake(w, b[i]);
+            hash_into(&g_event_hash, &awake, sizeof awake);
+        }
+        double force[3];
+        check(lfem_attachment_get_force(w, held, force), "force");
+        hash_bytes(force, sizeof force);
+    }
+    digest_world(w, b, 6);
+    lfem_world_destroy(w);
+}
+
 struct scene {
     const char* name;
     void (*run)(uint32_t);
@@ -470,16 +577,16 @@ static const struct scene scenes[] = {
     {"shapes", scene_shapes},        {"rigid_terrain", scene_rigid_terrain},
     {"supports", scene_supports},    {"crush", scene_crush},
     {"overlap_checkpoint", scene_overlap_checkpoint},
-    {"quadratic", scene_quadratic},
+    {"quadratic", scene_quadratic},  {"game", scene_game},
 };
 
-/* One run of a scene; the digests in *physics, *profile and *queries. */
+/* One run of a scene; the digests in *physics, *profile, *events and *queries. */
 static void run_scene(size_t i, uint32_t threads, int queries, uint64_t* physics, uint64_t* profile,
-                      uint64_t* answers) {
-    g_hash = g_profile_hash = g_query_hash = 1469598103934665603ull;
+                      uint64_t* events, uint64_t* answers) {
+    g_hash = g_profile_hash = g_query_hash = g_event_hash = 1469598103934665603ull;
     g_queries = queries;
     scenes[i].run(threads);
-    *physics = g_hash, *profile = g_profile_hash, *answers = g_query_hash;
+    *physics = g_hash, *profile = g_profile_hash, *events = g_event_hash, *answers = g_query_hash;
 }
 
 /* Exits 1 when a scene's digest depends on the thread count (results must not) or, with
@@ -492,21 +599,23 @@ int main(int argc, char** argv) {
     int differ = 0, ran = 0;
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; ++i) {
         if (only && strcmp(only, scenes[i].name) != 0) continue;
-        uint64_t first = 0, first_profile = 0, first_answers = 0;
+        uint64_t first = 0, first_profile = 0, first_events = 0, first_answers = 0;
         for (uint32_t threads = 1; threads <= 3; ++threads) {
-            uint64_t physics, profile, answers;
-            run_scene(i, threads, queries || check_queries, &physics, &profile, &answers);
-            if (threads == 1) first = physics, first_profile = profile, first_answers = answers;
-            int different = physics != first || profile != first_profile || answers != first_answers;
+            uint64_t physics, profile, events, answers;
+            run_scene(i, threads, queries || check_queries, &physics, &profile, &events, &answers);
+            if (threads == 1) first = physics, first_profile = profile, first_events = events, first_answers = answers;
+            int different = physics != first || profile != first_profile || events != first_events ||
+                            answers != first_answers;
             const char* why = different ? "  DIFFERS from 1 thread" : "";
             if (check_queries) {  /* and the same run without the queries */
-                uint64_t quiet, quiet_profile, none;
-                run_scene(i, threads, 0, &quiet, &quiet_profile, &none);
-                if (quiet != physics || quiet_profile != profile) different = 1, why = "  CHANGED BY THE QUERIES";
+                uint64_t quiet, quiet_profile, quiet_events, none;
+                run_scene(i, threads, 0, &quiet, &quiet_profile, &quiet_events, &none);
+                if (quiet != physics || quiet_profile != profile || quiet_events != events)
+                    different = 1, why = "  CHANGED BY THE QUERIES";
             }
             differ |= different;
-            printf("%-20s threads %u  physics %016llx  profile %016llx", scenes[i].name, threads,
-                   (unsigned long long)physics, (unsigned long long)profile);
+            printf("%-20s threads %u  physics %016llx  profile %016llx  events %016llx", scenes[i].name, threads,
+                   (unsigned long long)physics, (unsigned long long)profile, (unsigned long long)events);
             if (queries || check_queries) printf("  queries %016llx", (unsigned long long)answers);
             printf("%s\n", why);
             fflush(stdout);
