@@ -11,7 +11,6 @@ using namespace lfem::api;
 
 namespace {
 
-bool is_null(lfem_body b) { return b.index == 0 && b.generation == 0; }
 
 // A frame as the caller gives it: a finite centre and a quaternion that can be normalised.
 void check_frame(const double* frame, const char* what) {
@@ -23,10 +22,10 @@ void check_frame(const double* frame, const char* what) {
 
 lfem_event event_as_c(const StepEvent& e) {
     lfem_event out{};
-    out.type = e.type;
-    out.body_a = e.a;
-    out.body_b = e.b;
-    out.attachment = e.attachment;
+    out.type = to_c(e.type);
+    out.body_a = to_c(e.a);
+    out.body_b = to_c(e.b);
+    out.attachment = to_c(e.attachment);
     out.normal_impulse = e.normal_impulse;
     out.max_force = e.max_force;
     return out;
@@ -49,53 +48,54 @@ LFEM_API lfem_status lfem_attachment_create(lfem_world* world, const lfem_attach
         require_pointer(def, "def");
         require_pointer(out, "out");
         require(def->internal_value == attachment_def_cookie, "def was not initialised by lfem_attachment_def_default()");
-        const Body& b = w.body(def->body);
+        const Body& b = w.body(from_c(def->body));
+        const BodyHandle target = from_c(def->target);
         require(def->node_count >= 1, "def->node_count must be >= 1");
-        require(is_null(def->target) || w.is_valid(def->target),
+        require(target.is_null() || w.is_valid(target),
                 "def->target {" + std::to_string(def->target.index) + ", " + std::to_string(def->target.generation) +
                     "} is stale or of another world (the null handle means the caller's frame)");
-        if (is_null(def->target)) check_frame(def->frame, "def->frame");
+        if (target.is_null()) check_frame(def->frame, "def->frame");
         require(std::isfinite(def->break_force) && def->break_force >= 0.0,
                 "def->break_force must be finite and >= 0 N (0 = never breaks)");
         const std::vector<uint32_t> nodes = internal_nodes(b, def->nodes, def->node_count);
         double frame[7];
         for (int k = 0; k < 7; ++k) frame[k] = def->frame[k];
-        *out = w.create_attachment(def->body, nodes, def->target, frame, def->break_force);
+        *out = to_c(w.create_attachment(from_c(def->body), nodes, target, frame, def->break_force));
     });
 }
 
 LFEM_API lfem_status lfem_attachment_destroy(lfem_world* world, lfem_attachment attachment) {
-    return guard(__func__, [&] { world_of(world).destroy_attachment(attachment); });
+    return guard(__func__, [&] { world_of(world).destroy_attachment(from_c(attachment)); });
 }
 
 LFEM_API int lfem_attachment_is_valid(const lfem_world* world, lfem_attachment attachment) {
-    return world != nullptr && world->world.is_valid(attachment) ? 1 : 0;
+    return world != nullptr && world->world.is_valid(from_c(attachment)) ? 1 : 0;
 }
 
 LFEM_API lfem_status lfem_attachment_set_frame(lfem_world* world, lfem_attachment attachment, const double frame[7]) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        w.attachment(attachment);  // the handle first
+        w.attachment(from_c(attachment));  // the handle first
         check_frame(frame, "frame");
-        w.set_attachment_frame(attachment, frame);
+        w.set_attachment_frame(from_c(attachment), frame);
     });
 }
 
 LFEM_API lfem_status lfem_attachment_get_force(const lfem_world* world, lfem_attachment attachment, double force[3]) {
     return guard(__func__, [&] {
-        const Attachment& a = world_of(world).attachment(attachment);
+        const Attachment& a = world_of(world).attachment(from_c(attachment));
         require_pointer(force, "force");
         for (int k = 0; k < 3; ++k) force[k] = a.force[k];
     });
 }
 
 LFEM_API lfem_status lfem_body_wake(lfem_world* world, lfem_body body) {
-    return guard(__func__, [&] { world_of(world).wake_body(body); });
+    return guard(__func__, [&] { world_of(world).wake_body(from_c(body)); });
 }
 
 LFEM_API int lfem_body_is_awake(const lfem_world* world, lfem_body body) {
-    if (world == nullptr || !world->world.is_valid(body)) return -1;
-    return world->world.is_awake(world->world.body(body)) ? 1 : 0;
+    if (world == nullptr || !world->world.is_valid(from_c(body))) return -1;
+    return world->world.is_awake(world->world.body(from_c(body))) ? 1 : 0;
 }
 
 LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* out, uint32_t capacity,
@@ -108,7 +108,7 @@ LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* 
         const uint32_t n = uint32_t(events.size());
         if (n > capacity) {
             *count = n;
-            throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) + " is below the " +
+            throw Error(Status::buffer_too_small, "capacity " + std::to_string(capacity) + " is below the " +
                                                    std::to_string(n) + " events of the last step");
         }
         for (uint32_t i = 0; i < n; ++i) out[i] = event_as_c(events[i]);

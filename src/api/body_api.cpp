@@ -48,7 +48,7 @@ namespace {
 
 void require_capacity(uint32_t capacity, uint32_t needed, const char* what) {
     if (capacity < needed)
-        throw Error(LFEM_BUFFER_TOO_SMALL, std::string(what) + " capacity " + std::to_string(capacity) +
+        throw Error(Status::buffer_too_small, std::string(what) + " capacity " + std::to_string(capacity) +
                                                " is below the " + std::to_string(needed) + " needed");
 }
 
@@ -56,7 +56,7 @@ void require_capacity(uint32_t capacity, uint32_t needed, const char* what) {
 template <class T, class Read>
 lfem_status read_body(const char* function, const lfem_world* world, lfem_body body, T* out, const Read& read) {
     return guard(function, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
         *out = read(b);
     });
@@ -78,9 +78,9 @@ lfem_status add_tet_mesh(const char* function, lfem_world* world, lfem_body body
                          uint32_t node_count, const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet) {
     return guard(function, [&] {
         World& w = world_of(world);
-        w.body(body);  // the handle first
+        w.body(from_c(body));  // the handle first
         check_mesh_arrays(positions, node_count, nodes_per_tet, tets, "tets", tet_count, "tet_count");
-        w.add_mesh(body, positions, node_count, tets, tet_count, nodes_per_tet);
+        w.add_mesh(from_c(body), positions, node_count, tets, tet_count, nodes_per_tet);
     });
 }
 
@@ -99,14 +99,14 @@ lfem_status set_node_mode(const char* function, lfem_world* world, lfem_body bod
                           uint32_t count, NodeMode mode, const char* what, const double* velocity = nullptr) {
     return guard(function, [&] {
         World& w = world_of(world);
-        const Body& b = w.body(body);
+        const Body& b = w.body(from_c(body));
         require_deformable(b, what);
         const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
         if (mode == NodeMode::prescribed) {
             require_pointer(velocity, "velocity");
             require_finite(velocity, 3, "velocity");
         }
-        w.set_node_mode(body, internal.data(), count, mode, velocity);
+        w.set_node_mode(from_c(body), internal.data(), count, mode, velocity);
     });
 }
 
@@ -137,16 +137,16 @@ LFEM_API lfem_status lfem_body_create(lfem_world* world, const lfem_body_def* de
         require_pointer(def, "def");
         require_pointer(out, "out");
         check_body_def(*def);
-        *out = w.create_body(*def);
+        *out = to_c(w.create_body(to_body_def(*def)));
     });
 }
 
 LFEM_API lfem_status lfem_body_destroy(lfem_world* world, lfem_body body) {
-    return guard(__func__, [&] { world_of(world).destroy_body(body); });
+    return guard(__func__, [&] { world_of(world).destroy_body(from_c(body)); });
 }
 
 LFEM_API int lfem_body_is_valid(const lfem_world* world, lfem_body body) {
-    return world != nullptr && world->world.is_valid(body) ? 1 : 0;
+    return world != nullptr && world->world.is_valid(from_c(body)) ? 1 : 0;
 }
 
 LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body, const double* positions,
@@ -164,9 +164,9 @@ LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body bo
                                                  uint32_t triangle_count) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        w.body(body);  // the handle first
+        w.body(from_c(body));  // the handle first
         check_mesh_arrays(positions, node_count, 3, triangles, "triangles", triangle_count, "triangle_count");
-        w.add_triangle_mesh(body, positions, node_count, triangles, triangle_count);
+        w.add_triangle_mesh(from_c(body), positions, node_count, triangles, triangle_count);
     });
 }
 
@@ -199,7 +199,7 @@ LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body 
                                              double* min_jacobian, double* inverted_for) {
     return guard(__func__, [&] {
         const World& w = world_of(world);
-        const Body& b = w.body(body);
+        const Body& b = w.body(from_c(body));
         const bool deformable = b.is_deformable() && b.has_mesh();
         const BodyState& s = b.state;
         if (inverted_tets) *inverted_tets = deformable ? s.inverted_tets : 0;
@@ -213,7 +213,7 @@ LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body b
     return guard(__func__, [&] {
         const World& w = world_of(world);
         Vec3 P, L;
-        w.body_momentum(w.body(body), P, L);
+        w.body_momentum(w.body(from_c(body)), P, L);
         for (int k = 0; k < 3; ++k) {
             if (linear) linear[k] = P[k];
             if (angular) angular[k] = L[k];
@@ -224,7 +224,7 @@ LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body b
 LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body body, double* out,
                                              uint32_t node_capacity) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
         require_capacity(node_capacity, b.ref.node_count(), "node");
         b.ref.numbering.nodes_to_api(b.state.x.data(), b.ref.node_count(), out);
@@ -235,7 +235,7 @@ LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body
                                               uint32_t node_capacity) {
     return guard(__func__, [&] {
         const World& w = world_of(world);
-        const Body& b = w.body(body);
+        const Body& b = w.body(from_c(body));
         require_pointer(out, "out");
         require_capacity(node_capacity, b.ref.node_count(), "node");
         std::vector<double> v(b.state.x.size());  // internal order
@@ -248,7 +248,7 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
                                               uint32_t node_count) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        const Body& b = w.body(body);
+        const Body& b = w.body(from_c(body));
         require_deformable(b, "setting node velocities");
         require_pointer(velocities, "velocities");
         require(node_count == b.ref.node_count(),
@@ -257,7 +257,7 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
         require_finite(velocities, 3 * std::size_t(node_count), "velocities");
         std::vector<double> v(b.state.x.size());  // internal order
         b.ref.numbering.nodes_from_api(velocities, node_count, v.data());
-        w.set_velocities(body, v.data());
+        w.set_velocities(from_c(body), v.data());
     });
 }
 
@@ -269,7 +269,7 @@ LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* wor
 LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, lfem_body body,
                                                       uint32_t* out, uint32_t triangle_capacity) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
         const std::vector<uint32_t>& triangles = b.ref.surface.triangles;
         require_capacity(triangle_capacity, b.ref.surface.triangle_count(), "triangle");
@@ -284,7 +284,7 @@ LFEM_API lfem_status lfem_body_get_boundary_face_count(const lfem_world* world, 
 LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_body body, uint32_t* out,
                                                   uint32_t face_capacity) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
         const std::vector<uint32_t>& faces = boundary_faces(b);
         require_capacity(face_capacity, uint32_t(faces.size() / face_nodes(b)), "face");
@@ -295,7 +295,7 @@ LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_
 LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
                                                     double* out, uint32_t tet_capacity) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
         require_capacity(tet_capacity, b.ref.tet_count(), "tet");
         if (b.is_deformable()) {
@@ -311,7 +311,7 @@ LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfe
 
 LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body body, double out[9]) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
         const Mat3 R = load_quaternion(b.state.global.rotation).toRotationMatrix();
         for (int r = 0; r < 3; ++r)
@@ -323,7 +323,7 @@ LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_b
                                                  const double hi[3], uint32_t* out, uint32_t capacity,
                                                  uint32_t* count) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(lo, "lo");
         require_pointer(hi, "hi");
         require_pointer(count, "count");
@@ -342,7 +342,7 @@ LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_b
         for (uint32_t i = 0; i < b.ref.node_count(); ++i) found += inside(i);
         if (found > capacity) {
             *count = found;
-            throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) + " is below the " +
+            throw Error(Status::buffer_too_small, "capacity " + std::to_string(capacity) + " is below the " +
                                                    std::to_string(found) + " nodes found");
         }
         uint32_t k = 0;
@@ -373,20 +373,20 @@ LFEM_API lfem_status lfem_body_set_node_forces(lfem_world* world, lfem_body body
                                                uint32_t count, const double* forces) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        const Body& b = w.body(body);
+        const Body& b = w.body(from_c(body));
         require_deformable(b, "node forces");
         const std::vector<uint32_t> internal = internal_nodes(b, nodes, count);
         require(count == 0 || forces != nullptr, "forces is NULL");
         require_finite(forces, 3 * std::size_t(count), "forces");
-        w.set_node_forces(body, internal.data(), count, forces);
+        w.set_node_forces(from_c(body), internal.data(), count, forces);
     });
 }
 
 LFEM_API lfem_status lfem_body_clear_node_forces(lfem_world* world, lfem_body body) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        w.body(body);
-        w.clear_node_forces(body);
+        w.body(from_c(body));
+        w.clear_node_forces(from_c(body));
     });
 }
 
@@ -394,12 +394,12 @@ LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_bo
                                                       const double linear[3], const double angular[3]) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        require(w.body(body).is_kinematic(), "the body is not kinematic");
+        require(w.body(from_c(body)).is_kinematic(), "the body is not kinematic");
         require_pointer(linear, "linear");
         require_pointer(angular, "angular");
         require_finite(linear, 3, "linear");
         require_finite(angular, 3, "angular");
-        w.set_kinematic_velocity(body, linear, angular);
+        w.set_kinematic_velocity(from_c(body), linear, angular);
     });
 }
 

@@ -16,8 +16,8 @@ lfem_contact contact_as_c(const World& w, const ContactRecord& c) {
     lfem_contact out{};
     const Body& a = w.bodies().slot(c.body_a);
     const Body& b = w.bodies().slot(c.body_b);
-    out.body_a = w.bodies().handle_of(c.body_a);
-    out.body_b = w.bodies().handle_of(c.body_b);
+    out.body_a = to_c(w.bodies().handle_of(c.body_a));
+    out.body_b = to_c(w.bodies().handle_of(c.body_b));
     out.node = a.ref.numbering.api_node(c.node);
     out.shape = c.shape;
     const double wt[3] = {1.0 - c.t1 - c.t2, c.t2, c.t1};
@@ -52,7 +52,7 @@ LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_con
         require(active <= UINT32_MAX, "more than 2^32 - 1 active contacts");
         *count = uint32_t(active);
         if (active > capacity)
-            throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) + " is below the " +
+            throw Error(Status::buffer_too_small, "capacity " + std::to_string(capacity) + " is below the " +
                                                    std::to_string(active) + " active contacts");
         std::size_t i = 0;
         for (const ContactRecord& c : contacts)

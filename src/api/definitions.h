@@ -1,6 +1,6 @@
 // Checks of the caller's definitions, shared by the entry points that take them and by
 // lfem_world_load (a checkpoint's definitions are held to the same rules). Each throws
-// lfem::Error(LFEM_INVALID_ARGUMENT) naming the field.
+// lfem::Error(Status::invalid_argument) naming the field.
 #pragma once
 
 #include "lfem.h"

@@ -8,6 +8,7 @@
 #include <new>
 #include <string>
 
+#include "api/conversions.h"
 #include "common/error.h"
 #include "lfem.h"
 
@@ -23,7 +24,7 @@ lfem_status guard(const char* function, Body&& body) noexcept {
         return LFEM_OK;
     } catch (const Error& e) {
         set_last_error(function, e.what());
-        return e.status();
+        return to_c(e.status());
     } catch (const std::bad_alloc&) {
         set_last_error(function, "out of memory");
         return LFEM_OUT_OF_MEMORY;
@@ -36,10 +37,10 @@ lfem_status guard(const char* function, Body&& body) noexcept {
     }
 }
 
-// Argument checks shared by every entry point: each throws lfem::Error(LFEM_INVALID_ARGUMENT)
+// Argument checks shared by every entry point: each throws lfem::Error(Status::invalid_argument)
 // naming the argument, so the shim reads as a list of requirements.
 inline void require(bool condition, const std::string& message) {
-    if (!condition) throw Error(LFEM_INVALID_ARGUMENT, message);
+    if (!condition) throw Error(Status::invalid_argument, message);
 }
 inline void require_pointer(const void* p, const char* name) {
     require(p != nullptr, std::string(name) + " is NULL");
@@ -47,14 +48,14 @@ inline void require_pointer(const void* p, const char* name) {
 inline void require_finite(const double* v, std::size_t n, const char* name) {
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(v[i]))
-            throw Error(LFEM_INVALID_ARGUMENT,
+            throw Error(Status::invalid_argument,
                         std::string(name) + "[" + std::to_string(i) + "] is not finite");
 }
 
 // A feature this build leaves out: LFEM_UNSUPPORTED, naming the CMake option that brings it
 // back. Called after the arguments were checked, so a bad argument still gets its own status.
 [[noreturn]] inline void unsupported(const std::string& what, const char* option) {
-    throw Error(LFEM_UNSUPPORTED, what + " is not part of this build of lfem (configured with " +
+    throw Error(Status::unsupported, what + " is not part of this build of lfem (configured with " +
                                       option + "=OFF; rebuild with " + option + "=ON)");
 }
 

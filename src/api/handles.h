@@ -6,7 +6,7 @@
 #include "world/world.h"
 
 struct lfem_world {
-    explicit lfem_world(const lfem_world_def& def) : world(def) {}
+    explicit lfem_world(const lfem::WorldDef& def) : world(def) {}
     lfem::World world;
 };
 

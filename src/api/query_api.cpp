@@ -37,7 +37,7 @@ QueryFilter filter_of(const lfem_query_filter& f) {
 
 lfem_ray_hit hit_as_c(const World& w, const RayHit& h) {
     lfem_ray_hit out{};
-    out.body = w.bodies().handle_of(h.slot);
+    out.body = to_c(w.bodies().handle_of(h.slot));
     out.triangle = h.triangle;
     out.shape = h.shape;
     out.barycentric[0] = h.t1, out.barycentric[1] = h.t2;
@@ -52,7 +52,7 @@ void give_list(std::size_t total, T* out, uint32_t capacity, uint32_t* count, co
     require(total <= UINT32_MAX, std::string("more than 2^32 - 1 ") + what);
     *count = uint32_t(total);
     if (total > capacity)
-        throw Error(LFEM_BUFFER_TOO_SMALL, "capacity " + std::to_string(capacity) + " is below the " +
+        throw Error(Status::buffer_too_small, "capacity " + std::to_string(capacity) + " is below the " +
                                                std::to_string(total) + " " + what);
     for (std::size_t i = 0; i < total; ++i) out[i] = put(i);
 }
@@ -115,7 +115,7 @@ LFEM_API lfem_status lfem_world_overlap_box(const lfem_world* world, const doubl
         std::vector<uint32_t> slots;
         w.overlap_box(box, filter_of(filter), slots);
         give_list(slots.size(), out, capacity, count, "bodies",
-                  [&](std::size_t i) { return w.bodies().handle_of(slots[i]); });
+                  [&](std::size_t i) { return to_c(w.bodies().handle_of(slots[i])); });
     });
 }
 

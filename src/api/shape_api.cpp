@@ -53,36 +53,37 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, cons
                                          uint32_t* index) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        const Body& b = w.body(body);
+        const Body& b = w.body(from_c(body));
         require_pointer(def, "def");
         const lfem_shape_def& d = *def;
         require(d.internal_value == shape_def_cookie, "def was not initialised by lfem_shape_def_default()");
-        require(b.def.type == LFEM_BODY_STATIC || b.def.type == LFEM_BODY_KINEMATIC,
+        require(b.is_static() || b.is_kinematic(),
                 "rigid shapes belong to static or kinematic bodies");
         require_finite(d.center, 3, "def->center");
         require_finite(d.rotation, 4, "def->rotation");
         const Quat q = load_quaternion(d.rotation);
         require(std::fabs(q.norm() - 1.0) < 1e-6, "def->rotation must be a unit quaternion (w, x, y, z)");
         RigidShape shape;
-        shape.type = d.type;
-        switch (d.type) {
-            case LFEM_SHAPE_PLANE: break;
-            case LFEM_SHAPE_BOX:
+        if (!shape_type_from_c(d.type, shape.type))
+            throw Error(Status::invalid_argument, "def->type " + std::to_string(int(d.type)) + " is not a shape type");
+        switch (shape.type) {
+            case ShapeType::plane: break;
+            case ShapeType::box:
                 for (int k = 0; k < 3; ++k) require_positive(d.half_extents[k], "def->half_extents");
                 for (int k = 0; k < 3; ++k) shape.half_extents[k] = d.half_extents[k];
                 break;
-            case LFEM_SHAPE_SPHERE:
+            case ShapeType::sphere:
                 require_positive(d.radius, "def->radius");
                 shape.radius = d.radius;
                 break;
-            case LFEM_SHAPE_CAPSULE:
+            case ShapeType::capsule:
                 require_positive(d.radius, "def->radius");
                 require(std::isfinite(d.half_length) && d.half_length >= 0.0,
                         "def->half_length must be finite and >= 0 m");
                 shape.radius = d.radius;
                 shape.half_length = d.half_length;
                 break;
-            case LFEM_SHAPE_CONVEX_HULL:
+            case ShapeType::convex_hull:
                 require_pointer(d.points, "def->points");
                 check_hull(d.points, d.point_count);
 #if !LFEM_WITH_CCD
@@ -90,12 +91,10 @@ LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body, cons
 #endif
                 shape.points.assign(d.points, d.points + 3 * std::size_t(d.point_count));
                 break;
-            default:
-                throw Error(LFEM_INVALID_ARGUMENT, "def->type " + std::to_string(int(d.type)) + " is not a shape type");
         }
         const double pose[7] = {d.center[0], d.center[1], d.center[2], q.w() / q.norm(),
                                 q.x() / q.norm(), q.y() / q.norm(), q.z() / q.norm()};
-        const uint32_t added = w.add_shape(body, shape, pose);
+        const uint32_t added = w.add_shape(from_c(body), shape, pose);
         if (index) *index = added;
     });
 }

@@ -18,7 +18,7 @@ const Skin& skin_of(const Body& b, uint32_t skin) {
 
 void require_vertex_capacity(const Skin& s, uint32_t capacity) {
     if (capacity < s.vertex_count())
-        throw Error(LFEM_BUFFER_TOO_SMALL, "vertex_capacity " + std::to_string(capacity) + " is below the skin's " +
+        throw Error(Status::buffer_too_small, "vertex_capacity " + std::to_string(capacity) + " is below the skin's " +
                                                std::to_string(s.vertex_count()) + " vertices");
 }
 
@@ -28,11 +28,11 @@ void check_skin_triangles(const uint32_t* triangles, uint32_t triangle_count, ui
         const uint32_t* f = &triangles[3 * std::size_t(t)];
         for (int k = 0; k < 3; ++k)
             if (f[k] >= vertex_count)
-                throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " has vertex index " +
+                throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " has vertex index " +
                                                    std::to_string(f[k]) + ", beyond the " +
                                                    std::to_string(vertex_count) + " vertices");
         if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
-            throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " repeats a vertex");
+            throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " repeats a vertex");
     }
 }
 
@@ -50,21 +50,21 @@ LFEM_API lfem_status lfem_body_add_skin(lfem_world* world, lfem_body body, const
                                         uint32_t* skin_index) {
     return guard(__func__, [&] {
         World& w = world_of(world);
-        w.body(body);  // the handle first
+        w.body(from_c(body));  // the handle first
         require_pointer(positions, "positions");
         require_pointer(triangles, "triangles");
         require(vertex_count >= 1, "vertex_count must be >= 1");
         require(triangle_count >= 1, "triangle_count must be >= 1");
         require_finite(positions, 3 * std::size_t(vertex_count), "positions");
         check_skin_triangles(triangles, triangle_count, vertex_count);
-        const uint32_t index = w.add_skin(body, positions, vertex_count, triangles, triangle_count);
+        const uint32_t index = w.add_skin(from_c(body), positions, vertex_count, triangles, triangle_count);
         if (skin_index) *skin_index = index;
     });
 }
 
 LFEM_API lfem_status lfem_body_get_skin_count(const lfem_world* world, lfem_body body, uint32_t* out) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
         *out = uint32_t(b.skins.size());
     });
@@ -73,7 +73,7 @@ LFEM_API lfem_status lfem_body_get_skin_count(const lfem_world* world, lfem_body
 LFEM_API lfem_status lfem_body_get_skin_sizes(const lfem_world* world, lfem_body body, uint32_t skin,
                                               uint32_t* vertex_count, uint32_t* triangle_count) {
     return guard(__func__, [&] {
-        const Skin& s = skin_of(world_of(world).body(body), skin);
+        const Skin& s = skin_of(world_of(world).body(from_c(body)), skin);
         if (vertex_count) *vertex_count = s.vertex_count();
         if (triangle_count) *triangle_count = s.triangle_count();
     });
@@ -82,10 +82,10 @@ LFEM_API lfem_status lfem_body_get_skin_sizes(const lfem_world* world, lfem_body
 LFEM_API lfem_status lfem_body_get_skin_triangles(const lfem_world* world, lfem_body body, uint32_t skin,
                                                   uint32_t* out, uint32_t triangle_capacity) {
     return guard(__func__, [&] {
-        const Skin& s = skin_of(world_of(world).body(body), skin);
+        const Skin& s = skin_of(world_of(world).body(from_c(body)), skin);
         require_pointer(out, "out");
         if (triangle_capacity < s.triangle_count())
-            throw Error(LFEM_BUFFER_TOO_SMALL, "triangle_capacity " + std::to_string(triangle_capacity) +
+            throw Error(Status::buffer_too_small, "triangle_capacity " + std::to_string(triangle_capacity) +
                                                    " is below the skin's " + std::to_string(s.triangle_count()) +
                                                    " triangles");
         std::copy(s.triangles.begin(), s.triangles.end(), out);
@@ -95,7 +95,7 @@ LFEM_API lfem_status lfem_body_get_skin_triangles(const lfem_world* world, lfem_
 LFEM_API lfem_status lfem_body_get_skin_vertices(const lfem_world* world, lfem_body body, uint32_t skin,
                                                  double* positions, double* normals, uint32_t vertex_capacity) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         const Skin& s = skin_of(b, skin);
         require_pointer(positions, "positions");
         require_vertex_capacity(s, vertex_capacity);
@@ -110,7 +110,7 @@ LFEM_API lfem_status lfem_body_get_skin_vertices_f32(const lfem_world* world, lf
                                                      float* positions, uint32_t position_stride, float* normals,
                                                      uint32_t normal_stride, uint32_t vertex_capacity) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(body);
+        const Body& b = world_of(world).body(from_c(body));
         const Skin& s = skin_of(b, skin);
         require_pointer(positions, "positions");
         require(position_stride >= 3, "position_stride must be >= 3 floats, got " + std::to_string(position_stride));

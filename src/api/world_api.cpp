@@ -96,7 +96,7 @@ LFEM_API lfem_status lfem_world_create(const lfem_world_def* def, lfem_world** o
         require_pointer(def, "def");
         require_pointer(out, "out");
         check_world_def(*def);
-        *out = new lfem_world(*def);
+        *out = new lfem_world(to_world_def(*def));
     });
 }
 
@@ -132,17 +132,17 @@ LFEM_API lfem_status lfem_world_load(const char* path, lfem_world** out) {
 #if !LFEM_WITH_CCD
         for (const Body& b : image.bodies)
             for (const RigidShape& s : b.shapes)
-                if (s.type == LFEM_SHAPE_CONVEX_HULL)
+                if (s.type == ShapeType::convex_hull)
                     unsupported(std::string("checkpoint ") + path + " holds a convex-hull shape: hulls (libccd)",
                                 "LFEM_WITH_CCD");
 #endif
         // The definitions must pass the checks a caller's would: a file is not trusted more.
         try {
-            check_world_def(image.def);
+            check_world_def(to_c(image.def, world_def_cookie));
             for (const Body& b : image.bodies)
-                if (b.generation != 0) check_body_def(b.def);
+                if (b.generation != 0) check_body_def(to_c(b.def, body_def_cookie));
         } catch (const Error& e) {
-            throw Error(LFEM_IO_ERROR, std::string("checkpoint ") + path + ": " + e.what());
+            throw Error(Status::io_error, std::string("checkpoint ") + path + ": " + e.what());
         }
         std::unique_ptr<lfem_world> world(new lfem_world(image.def));
         world->world.restore(std::move(image));
@@ -191,7 +191,7 @@ LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profil
     return guard(__func__, [&] {
         const World& w = world_of(world);
         require_pointer(out, "out");
-        lfem_profile p = w.profile();
+        lfem_profile p = to_c(w.profile());
         const QueryCounts& q = w.query_counts();
         p.queries = q.queries, p.query_bodies = q.bodies, p.query_primitives = q.primitives;
         p.query_refits = q.refits;

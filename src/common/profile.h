@@ -1,5 +1,6 @@
-// Per-phase timing of the step (lfem_profile): one steady_clock reading at the start and one at
-// the end of a phase, per sub-step, never per element, so profiling costs nothing measurable.
+// Per-phase timing of the step: one steady_clock reading at the start and one at the end of a
+// phase, per sub-step, never per element, so profiling costs nothing measurable. The shim
+// copies Profile into the public lfem_profile, field by field.
 #pragma once
 
 #include <chrono>
@@ -8,15 +9,28 @@
 #include <x86intrin.h>
 #endif
 
-#include "lfem.h"
-
 namespace lfem {
+
+// The wall time spent in a phase and how often it ran.
+struct PhaseTime {
+    double seconds = 0;
+    uint64_t calls = 0;
+};
+
+// Where the step spends its time (the phases of lfem_profile, which documents each).
+struct Profile {
+    uint64_t substeps = 0;
+    PhaseTime internal_forces, predictor, kinematic_motion, broad_phase, narrow_phase, shape_queries;
+    uint64_t shape_tests = 0, ccd_queries = 0;  // point queries of shapes; of those, by libccd
+    PhaseTime normal_solve, friction, global_rotation, commit;
+    uint64_t candidate_searches = 0;  // contact's searches for candidate faces
+};
 
 // Adds the time from construction to destruction to `phase`, and `calls` to its count.
 class PhaseTimer {
 public:
     // An inactive timer (active = false) reads no clock and adds nothing.
-    explicit PhaseTimer(lfem_phase_time& phase, uint64_t calls = 1, bool active = true)
+    explicit PhaseTimer(PhaseTime& phase, uint64_t calls = 1, bool active = true)
         : phase_(phase), calls_(calls), stopped_(!active) {
         if (active) start_ = std::chrono::steady_clock::now();
     }
@@ -35,7 +49,7 @@ public:
     PhaseTimer& operator=(const PhaseTimer&) = delete;
 
 private:
-    lfem_phase_time& phase_;
+    PhaseTime& phase_;
     uint64_t calls_;
     bool stopped_;
     std::chrono::steady_clock::time_point start_;
@@ -67,7 +81,7 @@ inline uint64_t ticks() {
 // Phases that ran interleaved on several threads (a round of the pool, groups of the contact
 // solve): the round's wall time shared out among them by the CPU time each took in it (in any
 // unit: ticks). All of it to the first phase when no CPU time was measured.
-inline void share_wall_time(double wall, const double* cpu, lfem_phase_time* const* phases, int n) {
+inline void share_wall_time(double wall, const double* cpu, PhaseTime* const* phases, int n) {
     double total = 0.0;
     for (int k = 0; k < n; ++k) total += cpu[k];
     if (!(total > 0.0)) {

@@ -8,7 +8,7 @@
 
 #include "contact/contact_body.h"
 #include "contact/triangle_bvh.h"
-#include "lfem.h"
+#include "common/body_kind.h"
 #include "mesh/surface.h"
 
 namespace lfem {
@@ -19,7 +19,7 @@ struct ContactBodyInput {
     uint64_t identity = 0;               // changes whenever the body's geometry does
     const TriangleBvh* static_bvh = nullptr;  // static bodies: the tree of their triangles
     const double* face_normals = nullptr;     // static bodies: their unit face normals
-    lfem_body_type type = LFEM_BODY_STATIC;
+    BodyKind type = BodyKind::static_body;
     const Surface* surface = nullptr;    // its boundary (triangles, slave candidates)
     const uint32_t* elements = nullptr;  // the tets (nodes_per_tet each), nullptr without
     uint32_t nodes_per_tet = 4;

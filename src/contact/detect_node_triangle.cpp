@@ -372,7 +372,7 @@ void start_tracks(const std::vector<ContactBody>& bodies, DetectionScratch& s) {
 // records are in that core's cache); their counts added to the profile, and the runs joined
 // (a run cut by a block's end made whole), in the same order.
 FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRecord>& out,
-                     std::vector<RecordRun>& runs, lfem_profile& profile, ThreadPool* pool) {
+                     std::vector<RecordRun>& runs, Profile& profile, ThreadPool* pool) {
     FallenIn fallen;
     s.block_begin.resize(blocks + 1);
     std::size_t total = 0;
@@ -415,7 +415,7 @@ double deepest_kept_offset(const std::vector<ContactRecord>& list) {
 
 FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies, const std::vector<ContactRecord>& previous,
                           double max_offset, bool scan_overlaps, DetectionScratch& s, std::vector<ContactRecord>& out,
-                          std::vector<RecordRun>& runs, lfem_profile& profile, ThreadPool* pool) {
+                          std::vector<RecordRun>& runs, Profile& profile, ThreadPool* pool) {
     // `out` keeps its old records until the join overwrites them: resized, not cleared, so that
     // only the records beyond its last length are constructed before being copied over.
     ContactCandidates& c = s.candidates;

@@ -12,7 +12,7 @@
 #include "contact/contact_candidates.h"
 #include "contact/contact_record.h"
 #include "contact/node_face.h"
-#include "lfem.h"
+#include "common/profile.h"
 
 namespace lfem {
 
@@ -105,7 +105,7 @@ struct DetectionScratch {
 FallenIn detect_node_triangle(const std::vector<ContactBody>& bodies,
                           const std::vector<ContactRecord>& previous, double max_offset, bool scan_overlaps,
                           DetectionScratch& scratch, std::vector<ContactRecord>& out, std::vector<RecordRun>& runs,
-                          lfem_profile& profile, ThreadPool* pool = nullptr);
+                          Profile& profile, ThreadPool* pool = nullptr);
 
 // The deepest overlap a list leaves to be recovered (the largest ContactRecord::kept_offset, 0
 // for none): how much deeper than the capture band the next detection must look.

@@ -323,7 +323,7 @@ void test_node_shape(const ContactBody& a, uint32_t p, const Vec3& node_normal, 
     if ((x_end - pose_end.center).norm() > reach) return;  // far from a bounded shape
     double gap, start_gap;
     Vec3 n, n_start;
-    const uint64_t by_ccd = shape.type == LFEM_SHAPE_CONVEX_HULL;
+    const uint64_t by_ccd = shape.type == ShapeType::convex_hull;
     counts.shape_tests += 1, counts.ccd_queries += by_ccd;
     if (!shape_signed_distance(shape, pose_end, x_end, band, gap, n)) return;
     // At the start the node may be anywhere along its path: ask with the whole path as reach.

@@ -83,10 +83,10 @@ double box_distance(const Vec3& p, const double h[3], Vec3& n) {
 
 double shape_bounding_radius(const RigidShape& s) {
     switch (s.type) {
-        case LFEM_SHAPE_PLANE: return std::numeric_limits<double>::infinity();
-        case LFEM_SHAPE_BOX: return Vec3(s.half_extents).norm();
-        case LFEM_SHAPE_SPHERE: return s.radius;
-        case LFEM_SHAPE_CAPSULE: return s.half_length + s.radius;
+        case ShapeType::plane: return std::numeric_limits<double>::infinity();
+        case ShapeType::box: return Vec3(s.half_extents).norm();
+        case ShapeType::sphere: return s.radius;
+        case ShapeType::capsule: return s.half_length + s.radius;
         default: {
             double r = 0.0;
             for (std::size_t i = 0; i < s.points.size(); i += 3)
@@ -101,20 +101,20 @@ bool shape_signed_distance(const RigidShape& s, const ShapePose& pose, const Vec
     const Vec3 p = pose.rotation.conjugate() * (x - pose.center);  // local coordinates
     Vec3 n_local;
     switch (s.type) {
-        case LFEM_SHAPE_PLANE:
+        case ShapeType::plane:
             distance = p.z();
             n_local = Vec3::UnitZ();
             break;
-        case LFEM_SHAPE_SPHERE: {
+        case ShapeType::sphere: {
             const double r = p.norm();
             distance = r - s.radius;
             n_local = r > 0.0 ? Vec3(p / r) : Vec3::UnitZ();
             break;
         }
-        case LFEM_SHAPE_BOX:
+        case ShapeType::box:
             distance = box_distance(p, s.half_extents, n_local);
             break;
-        case LFEM_SHAPE_CAPSULE: {
+        case ShapeType::capsule: {
             const Vec3 axis_point(0.0, 0.0, std::clamp(p.z(), -s.half_length, s.half_length));
             const Vec3 v = p - axis_point;
             const double r = v.norm();

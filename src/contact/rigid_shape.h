@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "common/math.h"
-#include "lfem.h"
-
 namespace lfem {
 
+// The public ShapeType's values (the shim converts).
+enum class ShapeType : int32_t { plane, box, sphere, capsule, convex_hull };
+
 struct RigidShape {
-    lfem_shape_type type = LFEM_SHAPE_PLANE;
+    ShapeType type = ShapeType::plane;
     double half_extents[3] = {0, 0, 0};
     double radius = 0;
     double half_length = 0;

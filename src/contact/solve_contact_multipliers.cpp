@@ -8,7 +8,6 @@
 #include "common/thread_pool.h"
 #include "contact/constraint_point.h"
 #include "contact/link_constraint.h"
-#include "fem/tet_element.h"
 
 namespace lfem {
 namespace {
@@ -415,7 +414,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
                                              std::vector<ContactRecord>& records, const std::vector<RecordRun>& runs,
                                              std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
-                                             double h, ContactSolveScratch& scratch, lfem_profile& profile,
+                                             double h, ContactSolveScratch& scratch, Profile& profile,
                                              std::vector<BodyPairForce>& pair_forces, ThreadPool* pool) {
     // The whole solve is timed as the normal part; the friction passes' share of it is moved
     // to the friction part at the end.
@@ -477,7 +476,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         any_friction = any_friction || g.friction;
     }
     const double cpu[2] = {double(all_ticks - friction_ticks), double(friction_ticks)};
-    lfem_phase_time* phases[2] = {&profile.normal_solve, &profile.friction};
+    PhaseTime* phases[2] = {&profile.normal_solve, &profile.friction};
     share_wall_time(seconds_since(solve_start), cpu, phases, 2);
     profile.friction.calls += any_friction;
     profile.normal_solve.calls += 1;

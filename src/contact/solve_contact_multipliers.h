@@ -13,7 +13,7 @@
 #include "contact/contact_body.h"
 #include "contact/contact_record.h"
 #include "contact/link_constraint.h"
-#include "lfem.h"
+#include "common/profile.h"
 
 namespace lfem {
 
@@ -67,7 +67,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
                                              std::vector<ContactRecord>& records, const std::vector<RecordRun>& runs,
                                              std::vector<LinkRecord>& links,
                                              uint32_t max_iterations, double relative_tolerance,
-                                             double h, ContactSolveScratch& scratch, lfem_profile& profile,
+                                             double h, ContactSolveScratch& scratch, Profile& profile,
                                              std::vector<BodyPairForce>& pair_forces, ThreadPool* pool);
 
 }  // namespace lfem

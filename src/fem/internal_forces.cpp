@@ -340,9 +340,9 @@ ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& ma
     if (mesh.nodes_per_tet == kQuadraticTetNodes) return compute_quadratic_elastic_forces(mesh, material, state, pool);
     const Lame lame = material.lame;
     switch (material.model) {
-        case LFEM_MODEL_LINEAR:
+        case Model::linear:
             return elastic_forces<true>(mesh, state, pool, LinearModel{{lame}});
-        case LFEM_MODEL_PAPER: {
+        case Model::paper: {
             // Floating frame: strain measured in the body's rotated frame, R^T F - I; the
             // translation of the frame drops out because the gradients of N sum to zero.
             const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> Rm = load_quaternion(state.frame).toRotationMatrix();
@@ -350,12 +350,12 @@ ElasticResult compute_elastic_forces(const ElementMesh& mesh, const Material& ma
             for (int i = 0; i < 9; ++i) model.R[i] = Rm.data()[i];
             return elastic_forces<false>(mesh, state, pool, model);
         }
-        case LFEM_MODEL_COROTATIONAL:
+        case Model::corotational:
             // One rotation per tet, the polar rotation of F (warm-started from the last step):
             // the stress R C:(R^T F - I) is torque-free for an isotropic material, so angular
             // momentum is kept.
             return elastic_forces<false>(mesh, state, pool, CorotationalModel{lame, state.tet_rotation.data()});
-        case LFEM_MODEL_NEO_HOOKEAN:
+        case Model::neo_hookean:
         default:
             return elastic_forces<false>(mesh, state, pool, NeoHookeanModel{lame.mu, lame.lambda + lame.mu});
     }
@@ -374,7 +374,7 @@ void compute_von_mises(const ElementMesh& mesh, const Material& material, const 
     if (mesh.nodes_per_tet == kQuadraticTetNodes)
         return compute_quadratic_von_mises(mesh, material, x, tet_rotation, frame, out);
     const double* X = mesh.X.data();
-    const Mat3 R_body = material.model == LFEM_MODEL_PAPER ? Mat3(load_quaternion(frame).toRotationMatrix())
+    const Mat3 R_body = material.model == Model::paper ? Mat3(load_quaternion(frame).toRotationMatrix())
                                                            : Mat3::Identity();
     for (uint32_t e = 0; e < mesh.tet_count(); ++e) {
         const uint32_t* t = &mesh.tets[4 * e];
@@ -382,7 +382,7 @@ void compute_von_mises(const ElementMesh& mesh, const Material& material, const 
         const Mat3 F = edge_matrix(x + 3 * t[0], x + 3 * t[1], x + 3 * t[2], x + 3 * t[3]) * Dm_inv;
         Mat3 sigma;
         switch (material.model) {
-            case LFEM_MODEL_LINEAR: {
+            case Model::linear: {
                 double u[4][3];
                 for (int a = 0; a < 4; ++a)
                     for (int r = 0; r < 3; ++r) u[a][r] = x[3 * t[a] + r] - X[3 * t[a] + r];
@@ -390,11 +390,11 @@ void compute_von_mises(const ElementMesh& mesh, const Material& material, const 
                                      nullptr);
                 break;
             }
-            case LFEM_MODEL_PAPER:
+            case Model::paper:
                 // Von Mises is invariant under rotation: the stress in the frame is enough.
                 sigma = hooke_stress(R_body.transpose() * F - Mat3::Identity(), material.lame, nullptr);
                 break;
-            case LFEM_MODEL_COROTATIONAL: {
+            case Model::corotational: {
                 const float* s = &tet_rotation[4 * std::size_t(e)];
                 Eigen::Quaterniond q(s[0], s[1], s[2], s[3]);
                 q.normalize();

@@ -4,9 +4,13 @@
 
 #include <cmath>
 
-#include "lfem.h"
+#include <cstdint>
 
 namespace lfem {
+
+// The material models (the public Model, converted by the shim; lfem_types.h describes
+// each).
+enum class Model : int32_t { paper, corotational, neo_hookean, linear };
 
 struct Lame {
     double mu = 0;      // shear modulus (Pa)
@@ -15,7 +19,7 @@ struct Lame {
 
 // What the element kernels need to know of a body's material.
 struct Material {
-    lfem_model model = LFEM_MODEL_PAPER;
+    Model model = Model::paper;
     Lame lame;
 };
 

@@ -269,11 +269,11 @@ Mat3 cauchy_stress(const Material& material, const Mat3& F, const Mat3& R_body, 
                    std::size_t k) {
     const Lame& lame = material.lame;
     switch (material.model) {
-        case LFEM_MODEL_LINEAR:
+        case Model::linear:
             return hooke_stress(F, lame, nullptr);
-        case LFEM_MODEL_PAPER:
+        case Model::paper:
             return R_body * hooke_stress(R_body.transpose() * F - Mat3::Identity(), lame, nullptr) * R_body.transpose();
-        case LFEM_MODEL_COROTATIONAL: {
+        case Model::corotational: {
             const float* s = tet_rotation + 4 * k;
             Eigen::Quaterniond q(s[0], s[1], s[2], s[3]);
             q.normalize();
@@ -295,13 +295,13 @@ ElasticResult compute_quadratic_elastic_forces(const ElementMesh& mesh, const Ma
                                                const ElasticState& state, ThreadPool* pool) {
     const Lame lame = material.lame;
     switch (material.model) {
-        case LFEM_MODEL_LINEAR:
+        case Model::linear:
             return quadratic_forces<true>(mesh, state, pool, LinearStress{{lame}});
-        case LFEM_MODEL_PAPER:
+        case Model::paper:
             return quadratic_forces<false>(mesh, state, pool, PaperStress{lame, frame_rotation(state.frame)});
-        case LFEM_MODEL_COROTATIONAL:
+        case Model::corotational:
             return quadratic_forces<false>(mesh, state, pool, CorotationalStress{lame, state.tet_rotation.data()});
-        case LFEM_MODEL_NEO_HOOKEAN:
+        case Model::neo_hookean:
         default:
             return quadratic_forces<false>(mesh, state, pool, NeoHookeanStress{lame});
     }
@@ -316,8 +316,8 @@ void apply_quadratic_reference_stiffness(const ElementMesh& mesh, const Lame& la
 
 void compute_quadratic_von_mises(const ElementMesh& mesh, const Material& material, const double* x,
                                  const float* tet_rotation, const double* frame, double* out) {
-    const Mat3 R_body = material.model == LFEM_MODEL_PAPER ? frame_rotation(frame) : Mat3::Identity();
-    const bool displacement = material.model == LFEM_MODEL_LINEAR;
+    const Mat3 R_body = material.model == Model::paper ? frame_rotation(frame) : Mat3::Identity();
+    const bool displacement = material.model == Model::linear;
     const QuadraticLoop d{x, mesh.X.data(), mesh.tets.data(), mesh.Dm_inv.data(), mesh.qp_volume.data(),
                           nullptr, mesh.tet_count(), 0};
     for (uint32_t e = 0; e < mesh.tet_count(); ++e) {

@@ -110,7 +110,7 @@ std::vector<unsigned char> boundary_flags(const uint32_t* tets, uint32_t stride,
         std::size_t end = i + 1;
         while (end < faces.size() && same_key(faces[i], faces[end])) ++end;
         if (end - i > 2)
-            throw Error(LFEM_INVALID_MESH,
+            throw Error(Status::invalid_mesh,
                         triangle_name(faces[i]) + " is shared by more than two tets (tets " +
                             std::to_string(faces[i].tet) + ", " + std::to_string(faces[i + 1].tet) +
                             " and " + std::to_string(faces[i + 2].tet) + ")");
@@ -118,7 +118,7 @@ std::vector<unsigned char> boundary_flags(const uint32_t* tets, uint32_t stride,
             // Two positively oriented tets on either side of a triangle see it with opposite
             // orientations; the same orientation means they lie on the same side: they
             // overlap, or one tet is listed twice.
-            throw Error(LFEM_INVALID_MESH,
+            throw Error(Status::invalid_mesh,
                         "tets " + std::to_string(faces[i].tet) + " and " +
                             std::to_string(faces[i + 1].tet) + " lie on the same side of " +
                             triangle_name(faces[i]) + ": they overlap or are duplicates");

@@ -8,7 +8,7 @@ namespace lfem {
 
 // 3 node indices per boundary triangle, ordered counter-clockwise seen from outside (the
 // normal (b-a)x(c-a) points out of the body). O(tets) with a hash of sorted face keys. Throws
-// Error(LFEM_INVALID_MESH) when a face is shared by more than two tets (non-manifold or
+// Error(Status::invalid_mesh) when a face is shared by more than two tets (non-manifold or
 // duplicated tets). Output order is deterministic (order of first appearance).
 std::vector<uint32_t> extract_boundary_triangles(const uint32_t* tets, uint32_t tet_count);
 

@@ -63,7 +63,7 @@ public:
     std::size_t line_number() const { return line_number_; }
 
     [[noreturn]] void fail(const std::string& what) const {
-        throw Error(LFEM_IO_ERROR, path_ + ":" + std::to_string(line_number_) + ": " + what);
+        throw Error(Status::io_error, path_ + ":" + std::to_string(line_number_) + ": " + what);
     }
 
     void expect_token_count(std::size_t count, const char* record) const {
@@ -309,7 +309,7 @@ void read_elements_v4(LineReader& r, RawMesh& raw) {
 // ---- from tags to a dense mesh ---------------------------------------------------------------
 
 [[noreturn]] void fail_at(const std::string& path, std::size_t line, const std::string& what) {
-    throw Error(LFEM_IO_ERROR, path + ":" + std::to_string(line) + ": " + what);
+    throw Error(Status::io_error, path + ":" + std::to_string(line) + ": " + what);
 }
 
 TetMesh resolve(const RawMesh& raw, const std::string& path, std::size_t last_line) {
@@ -398,7 +398,7 @@ void skip_section(LineReader& r, std::string_view name) {
 
 TetMesh read_gmsh(const std::string& path) {
     std::ifstream in(path, std::ios::in | std::ios::binary);
-    if (!in) throw Error(LFEM_IO_ERROR, path + ": cannot open: " + std::strerror(errno));
+    if (!in) throw Error(Status::io_error, path + ": cannot open: " + std::strerror(errno));
     LineReader r(in, path);
 
     RawMesh raw;

@@ -8,7 +8,7 @@
 
 namespace lfem {
 
-// Throws Error(LFEM_IO_ERROR, "<path>:<line>: <what is wrong>") for a missing or malformed
+// Throws Error(Status::io_error, "<path>:<line>: <what is wrong>") for a missing or malformed
 // file. Unused nodes are dropped and nodes renumbered densely; negatively oriented tets get
 // two corners swapped (a 10-node tet's mid-edge nodes follow); zero-volume tets are an error.
 // 10-node tets come in lfem's node order (common/quadratic_tet_nodes.h), nodes_per_tet 10.

@@ -37,7 +37,7 @@ std::string number(double v) {
     return text;
 }
 
-[[noreturn]] void invalid(const std::string& what) { throw Error(LFEM_INVALID_ARGUMENT, what); }
+[[noreturn]] void invalid(const std::string& what) { throw Error(Status::invalid_argument, what); }
 
 void require_length(double value, const std::string& name) {
     if (!(std::isfinite(value) && value > 0.0))

@@ -1,6 +1,6 @@
 // Structured tetrahedral meshes of the shapes the paper's scenes and the tests use. Every
 // builder returns a conforming mesh (neighbouring tets share whole faces) with positively
-// oriented tets and no unused nodes. Bad parameters throw Error(LFEM_INVALID_ARGUMENT).
+// oriented tets and no unused nodes. Bad parameters throw Error(Status::invalid_argument).
 #pragma once
 
 #include <cstdint>

@@ -18,7 +18,7 @@ namespace lfem {
 namespace {
 
 [[noreturn]] void invalid_mesh(const std::string& message) {
-    throw Error(LFEM_INVALID_MESH, message);
+    throw Error(Status::invalid_mesh, message);
 }
 
 std::string format_volume(double volume) {

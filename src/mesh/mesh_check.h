@@ -5,7 +5,7 @@
 
 namespace lfem {
 
-// Throws Error(LFEM_INVALID_MESH, message naming the first offending tet or node) when an
+// Throws Error(Status::invalid_mesh, message naming the first offending tet or node) when an
 // index is out of range, a tet repeats a node, a tet (its corners) is inverted or has
 // (relatively) zero volume, or a node belongs to no tet; for 10-node tets (nodes_per_tet 10)
 // also when the mid-edge nodes do not conform (check_quadratic_topology). Positions are assumed

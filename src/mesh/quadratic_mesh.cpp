@@ -39,7 +39,7 @@ std::vector<EdgeRecord> sorted_edges(const uint32_t* tets, uint32_t tet_count, u
     return edges;
 }
 
-[[noreturn]] void invalid_mesh(const std::string& message) { throw Error(LFEM_INVALID_MESH, message); }
+[[noreturn]] void invalid_mesh(const std::string& message) { throw Error(Status::invalid_mesh, message); }
 
 std::string edge_name(const EdgeRecord& r) {
     return "the edge between nodes " + std::to_string(r.lo) + " and " + std::to_string(r.hi);
@@ -49,7 +49,7 @@ std::string edge_name(const EdgeRecord& r) {
 
 TetMesh make_quadratic(const TetMesh& linear) {
     if (linear.nodes_per_tet != kLinearTetNodes)
-        throw Error(LFEM_INVALID_ARGUMENT, "the mesh already has 10-node tets");
+        throw Error(Status::invalid_argument, "the mesh already has 10-node tets");
     const std::vector<EdgeRecord> edges = sorted_edges(linear.tets.data(), linear.tet_count(), kLinearTetNodes);
     TetMesh out;
     out.nodes_per_tet = kQuadraticTetNodes;
@@ -61,7 +61,7 @@ TetMesh make_quadratic(const TetMesh& linear) {
     for (std::size_t i = 0; i < edges.size(); ++i) {
         const EdgeRecord& r = edges[i];
         if (i == 0 || r.lo != edges[i - 1].lo || r.hi != edges[i - 1].hi) {  // a new edge: its node
-            if (next >= 0xFFFFFFF0ull) throw Error(LFEM_INVALID_ARGUMENT, "the quadratic mesh would pass 2^32 nodes");
+            if (next >= 0xFFFFFFF0ull) throw Error(Status::invalid_argument, "the quadratic mesh would pass 2^32 nodes");
             for (int k = 0; k < 3; ++k)
                 out.positions.push_back(0.5 * (linear.positions[3 * std::size_t(r.lo) + k] +
                                                linear.positions[3 * std::size_t(r.hi) + k]));

@@ -22,7 +22,7 @@ constexpr int kVtkTetra = 10;           // VTK cell type of the linear tetrahedr
 constexpr int kVtkQuadraticTetra = 24;  // and of the 10-node one
 
 [[noreturn]] void io_error(const std::string& path, const char* action, int error_number) {
-    throw Error(LFEM_IO_ERROR, "cannot " + std::string(action) + " '" + path +
+    throw Error(Status::io_error, "cannot " + std::string(action) + " '" + path +
                                    "': " + std::strerror(error_number));
 }
 
@@ -124,12 +124,12 @@ void write_piece(OutputFile& out, const VtkPiece& p, bool with_velocity, bool wi
 void check_piece(const VtkPiece& p, std::size_t index) {
     const std::string name = "vtk piece " + std::to_string(index);
     if ((p.node_count > 0 && !p.positions) || (p.tet_count > 0 && !p.tets))
-        throw Error(LFEM_INVALID_ARGUMENT, name + " lacks its positions or tets");
+        throw Error(Status::invalid_argument, name + " lacks its positions or tets");
     if (p.nodes_per_tet != 4 && p.nodes_per_tet != 10)
-        throw Error(LFEM_INVALID_ARGUMENT, name + " has tets of " + std::to_string(p.nodes_per_tet) + " nodes");
+        throw Error(Status::invalid_argument, name + " has tets of " + std::to_string(p.nodes_per_tet) + " nodes");
     for (std::size_t i = 0; i < std::size_t(p.nodes_per_tet) * p.tet_count; ++i)
         if (p.tets[i] >= p.node_count)
-            throw Error(LFEM_INVALID_ARGUMENT, name + " has a tet node index out of range");
+            throw Error(Status::invalid_argument, name + " has a tet node index out of range");
 }
 
 // Escapes a file name for an XML attribute value.
@@ -220,7 +220,7 @@ std::string PvdSeries::next_frame_path() const {
 }
 
 void PvdSeries::add_frame(double time) {
-    if (!std::isfinite(time)) throw Error(LFEM_INVALID_ARGUMENT, "frame time is not finite");
+    if (!std::isfinite(time)) throw Error(Status::invalid_argument, "frame time is not finite");
     times_.push_back(time);
     try {
         write_collection(pvd_path_, times_);

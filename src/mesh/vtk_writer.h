@@ -21,7 +21,7 @@ struct VtkPiece {
                                          // order is lfem's, common/quadratic_tet_nodes.h)
 };
 
-// Writes one .vtu file (ASCII, one <Piece> per body). Throws Error(LFEM_IO_ERROR) when the
+// Writes one .vtu file (ASCII, one <Piece> per body). Throws Error(Status::io_error) when the
 // file cannot be written.
 void write_vtu(const std::string& path, const std::vector<VtkPiece>& pieces);
 
@@ -32,7 +32,7 @@ public:
     // The .vtu path for the next frame, beside the .pvd: <stem>_<000123>.vtu
     std::string next_frame_path() const;
     // Record that the frame at next_frame_path() was written at `time` and rewrite the .pvd
-    // (so the collection is valid after every frame). Throws Error(LFEM_IO_ERROR).
+    // (so the collection is valid after every frame). Throws Error(Status::io_error).
     void add_frame(double time);
     uint32_t frame_count() const { return uint32_t(times_.size()); }
 

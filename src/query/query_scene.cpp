@@ -13,12 +13,12 @@ Aabb shape_box(const RigidShape& s, const ShapePose& pose) {
     Aabb b;
     Vec3 reach;
     switch (s.type) {
-        case LFEM_SHAPE_BOX: {
+        case ShapeType::box: {
             const Mat3 R = pose.rotation.toRotationMatrix();
             reach = R.cwiseAbs() * Vec3(s.half_extents);
             break;
         }
-        case LFEM_SHAPE_CAPSULE:
+        case ShapeType::capsule:
             reach = (pose.rotation * Vec3(0, 0, s.half_length)).cwiseAbs() + Vec3::Constant(s.radius);
             break;
         default: reach = Vec3::Constant(shape_bounding_radius(s)); break;
@@ -47,7 +47,7 @@ void QueryScene::box_body(uint32_t slot, const QueryBody& b) {
     }
     for (uint32_t j = 0; j < b.shape_count; ++j) {
         const RigidShape& shape = b.shapes[j];
-        if (shape.type == LFEM_SHAPE_PLANE) {
+        if (shape.type == ShapeType::plane) {
             s.unbounded = true;
             continue;
         }

@@ -130,21 +130,21 @@ void box_corners(const Aabb& box, Vec3 corners[8]) {
 
 bool line_through_shape(const RigidShape& s, const ShapePose& pose, const Vec3& origin, const Vec3& dir,
                         LineInterval& out) {
-    if (s.type == LFEM_SHAPE_CONVEX_HULL) return line_hull(s, pose, origin, dir, out);
+    if (s.type == ShapeType::convex_hull) return line_hull(s, pose, origin, dir, out);
     const Quat inv = pose.rotation.conjugate();
     const Vec3 o = inv * (origin - pose.center), d = inv * dir;
     bool hit = false;
     switch (s.type) {
-        case LFEM_SHAPE_PLANE:  // the solid is local z <= 0
+        case ShapeType::plane:  // the solid is local z <= 0
             if (d.z() == 0.0) return false;
             out.t_in = d.z() < 0.0 ? -o.z() / d.z() : -HUGE_VAL;
             out.t_out = d.z() > 0.0 ? -o.z() / d.z() : HUGE_VAL;
             out.n_in = out.n_out = Vec3::UnitZ();
             hit = true;
             break;
-        case LFEM_SHAPE_SPHERE: hit = line_sphere(o, d, Vec3::Zero(), s.radius, out); break;
-        case LFEM_SHAPE_BOX: hit = line_box(o, d, s.half_extents, out); break;
-        case LFEM_SHAPE_CAPSULE: hit = line_capsule(o, d, s.radius, s.half_length, out); break;
+        case ShapeType::sphere: hit = line_sphere(o, d, Vec3::Zero(), s.radius, out); break;
+        case ShapeType::box: hit = line_box(o, d, s.half_extents, out); break;
+        case ShapeType::capsule: hit = line_capsule(o, d, s.radius, s.half_length, out); break;
         default: return false;
     }
     if (!hit) return false;
@@ -156,25 +156,25 @@ bool shape_overlaps_box(const RigidShape& s, const ShapePose& pose, const Aabb& 
     Vec3 corners[8];
     box_corners(box, corners);
     const double size = std::max({box.hi[0] - box.lo[0], box.hi[1] - box.lo[1], box.hi[2] - box.lo[2]});
-    const double touch = 1e-12 * (size + (s.type == LFEM_SHAPE_PLANE ? 0.0 : shape_bounding_radius(s)));
+    const double touch = 1e-12 * (size + (s.type == ShapeType::plane ? 0.0 : shape_bounding_radius(s)));
     const ConvexPoints query{corners, 8};
     switch (s.type) {
-        case LFEM_SHAPE_PLANE: {  // a corner on or below the plane
+        case ShapeType::plane: {  // a corner on or below the plane
             const Vec3 n = pose.rotation * Vec3::UnitZ();
             double lowest = HUGE_VAL;
             for (const Vec3& c : corners) lowest = std::min(lowest, n.dot(c - pose.center));
             return lowest <= touch;
         }
-        case LFEM_SHAPE_SPHERE: {
+        case ShapeType::sphere: {
             const ConvexPoints centre{&pose.center, 1};
             return convex_distance(centre, query) <= s.radius + touch;
         }
-        case LFEM_SHAPE_CAPSULE: {
+        case ShapeType::capsule: {
             const Vec3 axis = pose.rotation * Vec3(0, 0, s.half_length);
             const Vec3 ends[2] = {pose.center - axis, pose.center + axis};
             return convex_distance(ConvexPoints{ends, 2}, query) <= s.radius + touch;
         }
-        case LFEM_SHAPE_BOX: {
+        case ShapeType::box: {
             Vec3 local[8];
             Aabb own;
             for (int k = 0; k < 3; ++k) own.lo[k] = -s.half_extents[k], own.hi[k] = s.half_extents[k];

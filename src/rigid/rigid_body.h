@@ -1,4 +1,4 @@
-// LFEM_BODY_RIGID: the paper's global translation and global rotation alone (eq. 2 for the
+// Rigid bodies (BodyKind::rigid): the paper's global translation and global rotation alone (eq. 2 for the
 // rotation, Newton for the centre), with no local deformation. The nodes follow rigidly:
 // x_i = c + R (X_i - C).
 #pragma once

@@ -150,7 +150,7 @@ Skin bind_skin(const SkinTets& mesh, const double* positions, uint32_t vertex_co
                 if (overlaps(tet_box(mesh, e), near)) consider(e);
             });
         }
-        if (!(best.distance <= reach)) throw Error(LFEM_INVALID_ARGUMENT, vertex_far(v, p, best, reach));
+        if (!(best.distance <= reach)) throw Error(Status::invalid_argument, vertex_far(v, p, best, reach));
         for (uint32_t k = 0; k < per; ++k) {
             skin.nodes[per * std::size_t(v) + k] = mesh.tets[std::size_t(best.tet) * per + k];
             skin.weights[per * std::size_t(v) + k] = best.w[k];

@@ -46,7 +46,7 @@ struct SkinTets {
 // to the nearest tet if that is at most `reach` (m) away (a curved 10-node tet's distance is
 // its corners' straight tet's). A vertex of a curved 10-node tet whose coordinates Newton's
 // iterations do not find (far outside a strongly curved element) is bound to the corners alone
-// by their barycentric weights (the mid-edge nodes' weights 0). Throws Error(LFEM_INVALID_ARGUMENT)
+// by their barycentric weights (the mid-edge nodes' weights 0). Throws Error(Status::invalid_argument)
 // naming the first vertex that lies farther than reach from every tet. O(T log T + V log T).
 Skin bind_skin(const SkinTets& mesh, const double* positions, uint32_t vertex_count, const uint32_t* triangles,
                uint32_t triangle_count, double reach);

@@ -38,7 +38,7 @@ void check_quadratic_jacobians(const double* positions, const uint32_t* tets, ui
         const double longest = tet_geometry::longest_edge(x[0], x[1], x[2], x[3]);
         const double smallest = smallest_jacobian(positions, tet);
         if (tet_geometry::is_flat(smallest, longest) || smallest < 0.0)
-            throw Error(LFEM_INVALID_MESH, "tet " + std::to_string(t) + " is curved so far that its map folds over "
+            throw Error(Status::invalid_mesh, "tet " + std::to_string(t) + " is curved so far that its map folds over "
                                            "(smallest det J of its quadrature points and corners " + number(smallest) +
                                            ", 6 V of its corners " +
                                            number(tet_geometry::six_volume(x[0], x[1], x[2], x[3])) +
@@ -84,7 +84,7 @@ void append_reference_tets(BodyReference& ref, uint32_t old_tets, bool composite
 // numbering. The reordered copies go as soon as they are appended (peak memory).
 BodyReference append_reference(const Body& body, const double* positions, uint32_t node_count,
                                const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet,
-                               const lfem_world_def& def, ThreadPool* pool) {
+                               const WorldDef& def, ThreadPool* pool) {
     BodyReference ref = body.ref;
     ref.nodes_per_tet = nodes_per_tet;
     const uint32_t old_nodes = ref.node_count(), old_tets = ref.tet_count();
@@ -113,11 +113,11 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
         mesh.mass = physical;
         const double omega_target = 2.0 * def.step_safety / def.mass_scaling_step;
         ref.stable_step =
-            2.0 / scale_masses_for_step(mesh, body.lame, body.def.density, omega_target, ref.mass.data(), pool).omega_max;
+            2.0 / scale_masses_for_step(mesh, body.lame(), body.def.density, omega_target, ref.mass.data(), pool).omega_max;
         ref.added_mass = 0.0;
         for (uint32_t i = 0; i < n; ++i) ref.added_mass += ref.mass[i] - physical[i];
     } else if (body.is_deformable()) {
-        ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame, pool).omega_max;
+        ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame(), pool).omega_max;
     }
     ref.total_mass = 0.0;
     for (double m : ref.mass) ref.total_mass += m;
@@ -153,7 +153,7 @@ BodyState append_state(const World& world, const Body& body, const BodyReference
     state.v_half = std::move(v);
     state.h_last = 0.0;
     state.elastic.assign(3 * std::size_t(n), 0.0);
-    if (body.is_deformable() && body.def.model == LFEM_MODEL_COROTATIONAL) {
+    if (body.is_deformable() && body.def.model == Model::corotational) {
         const std::size_t per_tet = ref.rotations_per_tet();
         state.tet_rotation.resize(4 * per_tet * ref.tet_count(), 0.0f);
         for (std::size_t k = per_tet * body.ref.tet_count(); k < per_tet * ref.tet_count(); ++k)
@@ -206,7 +206,7 @@ void derive_reference_data(const Body& body, BodyReference& ref) {
         for (uint32_t i = 0; i < ref.node_count(); ++i) ref.every_node.push_back(i);
     ref.bvh = TriangleBvh{};
     ref.face_normals.clear();
-    if (body.def.type != LFEM_BODY_STATIC) return;
+    if (body.def.type != BodyKind::static_body) return;
     // Never moves: its tree and its faces' normals are made once, here (as contact would make
     // them at every sub-step: the same bits).
     ref.bvh.build(ref.X.data(), ref.surface.triangles.data(), ref.surface.triangle_count());
@@ -221,25 +221,24 @@ void derive_reference_data(const Body& body, BodyReference& ref) {
     }
 }
 
-void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_count, const uint32_t* tets,
+void World::add_mesh(BodyHandle handle, const double* positions, uint32_t node_count, const uint32_t* tets,
                      uint32_t tet_count, uint32_t nodes_per_tet) {
     Body& body = bodies_.get(handle);
     check_tet_mesh(positions, node_count, tets, tet_count, nodes_per_tet);
     if (nodes_per_tet == kQuadraticTetNodes) check_quadratic_jacobians(positions, tets, tet_count);
     if (body.is_rigid() && body.has_mesh())
-        throw Error(LFEM_INVALID_ARGUMENT, "a rigid body takes one mesh (give it all its parts at once)");
+        throw Error(Status::invalid_argument, "a rigid body takes one mesh (give it all its parts at once)");
     if (body.ref.tet_count() > 0 && body.ref.nodes_per_tet != nodes_per_tet)
-        throw Error(LFEM_INVALID_ARGUMENT, "the body has " + std::to_string(body.ref.nodes_per_tet) +
+        throw Error(Status::invalid_argument, "the body has " + std::to_string(body.ref.nodes_per_tet) +
                                                "-node tets; a mesh of " + std::to_string(nodes_per_tet) +
                                                "-node tets cannot join them");
     const uint32_t old_nodes = body.ref.node_count();
     const uint32_t old_tets = body.ref.tet_count();
     if (uint64_t(old_nodes) + node_count > 0xFFFFFFF0ull || uint64_t(old_tets) + tet_count > 0xFFFFFFF0ull)
-        throw Error(LFEM_INVALID_ARGUMENT, "the body would exceed 2^32 nodes or tets");
+        throw Error(Status::invalid_argument, "the body would exceed 2^32 nodes or tets");
 
     Body candidate;
     candidate.def = body.def;
-    candidate.lame = body.lame;
     candidate.ref = append_reference(body, positions, node_count, tets, tet_count, nodes_per_tet, def_, pool_.get());
     double added_kinetic = 0.0;
     BodyState state = append_state(*this, body, candidate.ref, old_nodes,
@@ -264,26 +263,26 @@ void World::add_mesh(lfem_body handle, const double* positions, uint32_t node_co
     moved();
 }
 
-void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_t node_count,
+void World::add_triangle_mesh(BodyHandle handle, const double* positions, uint32_t node_count,
                               const uint32_t* triangles, uint32_t triangle_count) {
     Body& body = bodies_.get(handle);
-    if (body.is_dynamic()) throw Error(LFEM_INVALID_ARGUMENT, "triangle meshes belong to static or kinematic bodies");
-    if (body.has_mesh()) throw Error(LFEM_INVALID_ARGUMENT, "the body already has a mesh");
+    if (body.is_dynamic()) throw Error(Status::invalid_argument, "triangle meshes belong to static or kinematic bodies");
+    if (body.has_mesh()) throw Error(Status::invalid_argument, "the body already has a mesh");
     // Each triangle: indices in range, three different nodes, an area above 1e-12 of its
     // longest edge squared (the same round-off argument as for tets).
     for (uint32_t t = 0; t < triangle_count; ++t) {
         const uint32_t* f = &triangles[3 * t];
         for (int v = 0; v < 3; ++v)
             if (f[v] >= node_count)
-                throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " has node index " +
+                throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " has node index " +
                                                    std::to_string(f[v]) + ", beyond the " +
                                                    std::to_string(node_count) + " nodes");
         if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
-            throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " repeats a node");
+            throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " repeats a node");
         const Vec3 a(&positions[3 * f[0]]), b(&positions[3 * f[1]]), c(&positions[3 * f[2]]);
         const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
         if (!((b - a).cross(c - a).norm() > 1e-12 * longest * longest))
-            throw Error(LFEM_INVALID_MESH, "triangle " + std::to_string(t) + " has no area");
+            throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " has no area");
     }
     BodyReference ref;
     ref.X.assign(positions, positions + 3 * std::size_t(node_count));
@@ -307,7 +306,7 @@ void World::add_triangle_mesh(lfem_body handle, const double* positions, uint32_
     moved();
 }
 
-uint32_t World::add_shape(lfem_body handle, const RigidShape& shape, const double pose[7]) {
+uint32_t World::add_shape(BodyHandle handle, const RigidShape& shape, const double pose[7]) {
     Body& body = bodies_.get(handle);  // a static or kinematic one (checked by the shim)
     RigidShape copy = shape;
     body.shapes.reserve(body.shapes.size() + 1);

@@ -6,11 +6,11 @@
 
 namespace lfem {
 
-uint32_t World::add_skin(lfem_body handle, const double* positions, uint32_t vertex_count,
+uint32_t World::add_skin(BodyHandle handle, const double* positions, uint32_t vertex_count,
                          const uint32_t* triangles, uint32_t triangle_count) {
     Body& body = bodies_.get(handle);
     if (body.ref.tet_count() == 0)
-        throw Error(LFEM_INVALID_ARGUMENT, "a skin is bound to tets: give the body a tet mesh first "
+        throw Error(Status::invalid_argument, "a skin is bound to tets: give the body a tet mesh first "
                                            "(lfem_body_add_mesh)");
     SkinTets tets;
     tets.X = body.ref.X;

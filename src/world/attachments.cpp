@@ -40,18 +40,18 @@ static Pose target_pose(const BodyRegistry& bodies, const Attachment& a, double 
     return Pose{Vec3(g.center), load_quaternion(g.rotation).normalized()};
 }
 
-lfem_attachment World::create_attachment(lfem_body body, const std::vector<uint32_t>& nodes, lfem_body target,
+AttachmentHandle World::create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,
                                          const double frame[7], double break_force) {
     const Body& b = this->body(body);
     if (!b.is_deformable() || !b.has_mesh())
-        throw Error(LFEM_INVALID_ARGUMENT, "def->body must be a deformable body with a mesh");
+        throw Error(Status::invalid_argument, "def->body must be a deformable body with a mesh");
     Attachment a;
     a.body = body.index, a.body_generation = body.generation;
     if (target.index != 0 || target.generation != 0) {
         const Body& t = this->body(target);
-        if (target.index == body.index) throw Error(LFEM_INVALID_ARGUMENT, "def->target is def->body itself");
-        if (t.is_deformable()) throw Error(LFEM_INVALID_ARGUMENT, "def->target must be rigid, kinematic or static, not deformable");
-        if (!t.has_geometry()) throw Error(LFEM_INVALID_ARGUMENT, "def->target has no mesh or shape yet");
+        if (target.index == body.index) throw Error(Status::invalid_argument, "def->target is def->body itself");
+        if (t.is_deformable()) throw Error(Status::invalid_argument, "def->target must be rigid, kinematic or static, not deformable");
+        if (!t.has_geometry()) throw Error(Status::invalid_argument, "def->target has no mesh or shape yet");
         a.target = target.index, a.target_generation = target.generation;
     } else {
         std::copy(frame, frame + 7, a.frame_start);
@@ -80,22 +80,22 @@ lfem_attachment World::create_attachment(lfem_body body, const std::vector<uint3
         all.slots.push_back(std::move(a));
     }
     wake(body.index);
-    return lfem_attachment{index, all.slots[index].generation};
+    return AttachmentHandle{index, all.slots[index].generation};
 }
 
-bool World::is_valid(lfem_attachment h) const {
+bool World::is_valid(AttachmentHandle h) const {
     const Attachments& all = state_.attachments;
     return h.generation != 0 && h.index < all.slots.size() && all.slots[h.index].generation == h.generation;
 }
 
-const Attachment& World::attachment(lfem_attachment h) const {
+const Attachment& World::attachment(AttachmentHandle h) const {
     if (!is_valid(h))
-        throw Error(LFEM_INVALID_HANDLE, "attachment handle {" + std::to_string(h.index) + ", " +
+        throw Error(Status::invalid_handle, "attachment handle {" + std::to_string(h.index) + ", " +
                                              std::to_string(h.generation) + "} is stale, null or of another world");
     return state_.attachments.slots[h.index];
 }
 
-void World::destroy_attachment(lfem_attachment h) {
+void World::destroy_attachment(AttachmentHandle h) {
     const Attachment& a = attachment(h);
     Attachments& all = state_.attachments;
     all.free_slots.reserve(all.free_slots.size() + 1);  // the only allocation: before any change
@@ -104,9 +104,9 @@ void World::destroy_attachment(lfem_attachment h) {
     all.free_slots.push_back(h.index);
 }
 
-void World::set_attachment_frame(lfem_attachment h, const double frame[7]) {
+void World::set_attachment_frame(AttachmentHandle h, const double frame[7]) {
     if (attachment(h).target != kFrameTarget)
-        throw Error(LFEM_INVALID_ARGUMENT, "the attachment holds its nodes to a body, not to a frame");
+        throw Error(Status::invalid_argument, "the attachment holds its nodes to a body, not to a frame");
     Attachment& a = state_.attachments.slots[h.index];
     std::copy(frame, frame + 7, a.frame_end);
     wake(a.body);
@@ -156,10 +156,10 @@ void World::take_link_forces(double h) {
         for (int d = 0; d < 3; ++d) a.force[d] = total[d];
         if (a.break_force > 0.0 && total.norm() > a.break_force) {
             StepEvent e;
-            e.type = LFEM_EVENT_ATTACHMENT_BROKEN;
+            e.type = EventType::attachment_broken;
             e.a = bodies_.handle_of(a.body);
             if (a.target != kFrameTarget) e.b = bodies_.handle_of(a.target);
-            e.attachment = lfem_attachment{i, a.generation};
+            e.attachment = AttachmentHandle{i, a.generation};
             e.normal_impulse = total.norm() * h;
             e.max_force = total.norm();
             broken_.push_back(e);

@@ -14,12 +14,12 @@
 #include "fem/element_mesh.h"
 #include "fem/internal_forces.h"
 #include "fem/material.h"
-#include "lfem.h"
 #include "mesh/node_ordering.h"
 #include "mesh/surface.h"
 #include "rigid/global_rotation.h"
 #include "rigid/rigid_body.h"
 #include "skin/skin.h"
+#include "world/definitions.h"
 
 namespace lfem {
 
@@ -85,8 +85,7 @@ struct Body {
     uint32_t generation = 0;
     uint32_t geometry_revision = 0;           // counts the meshes and shapes added (contact's
                                               // cached candidates hold while it does not change)
-    lfem_body_def def{};
-    Lame lame;
+    BodyDef def{};
     BodyReference ref;
     BodyState state;
     std::vector<NodeMode> node_mode;          // per node
@@ -96,17 +95,20 @@ struct Body {
     std::vector<Skin> skins;                  // render meshes bound to the tets (skin/skin.h);
                                               // never read by a step
 
-    bool is_deformable() const { return def.type == LFEM_BODY_DEFORMABLE; }
-    bool is_rigid() const { return def.type == LFEM_BODY_RIGID; }
-    bool is_kinematic() const { return def.type == LFEM_BODY_KINEMATIC; }
+    // The Lame parameters of the def's Young's modulus and Poisson's ratio (derived, never
+    // stored: a change of the def changes them).
+    Lame lame() const { return lame_from_young_poisson(def.young_modulus, def.poisson_ratio); }
+    bool is_deformable() const { return def.type == BodyKind::deformable; }
+    bool is_rigid() const { return def.type == BodyKind::rigid; }
+    bool is_kinematic() const { return def.type == BodyKind::kinematic; }
     bool is_dynamic() const { return is_deformable() || is_rigid(); }  // moved by forces
-    bool is_static() const { return def.type == LFEM_BODY_STATIC; }
+    bool is_static() const { return def.type == BodyKind::static_body; }
     bool moves_kinematically() const {
         const double* v = def.linear_velocity;
         const double* w = def.angular_velocity;
         return is_kinematic() && (v[0] != 0 || v[1] != 0 || v[2] != 0 || w[0] != 0 || w[1] != 0 || w[2] != 0);
     }
-    bool is_paper() const { return is_deformable() && def.model == LFEM_MODEL_PAPER; }
+    bool is_paper() const { return is_deformable() && def.model == Model::paper; }
     bool has_mesh() const { return !ref.X.empty(); }  // tets, or a static triangle surface
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
     // Changes whenever the geometry does: a new generation, a mesh or a shape added.
@@ -135,7 +137,7 @@ inline ElementMesh element_mesh(const BodyReference& ref) {
     return m;
 }
 
-inline Material material_of(const Body& b) { return Material{b.def.model, b.lame}; }
+inline Material material_of(const Body& b) { return Material{b.def.model, b.lame()}; }
 
 // The elastic state at b.state.x, written into `elastic` (b.state.elastic for the step).
 inline ElasticState elastic_state(const BodyState& s, std::vector<double>& elastic, std::vector<float>& tet_rotation) {

@@ -28,7 +28,7 @@ void keep_generations_above(uint32_t highest) {
     }
 }
 
-lfem_body BodyRegistry::create(const lfem_body_def& def) {
+BodyHandle BodyRegistry::create(const BodyDef& def) {
     uint32_t index;
     if (!free_slots_.empty()) {
         index = free_slots_.back();
@@ -38,29 +38,28 @@ lfem_body BodyRegistry::create(const lfem_body_def& def) {
     }
     Body body;
     body.def = def;
-    body.lame = lame_from_young_poisson(def.young_modulus, def.poisson_ratio);
     body.generation = next_generation();
     if (!free_slots_.empty() && free_slots_.back() == index) free_slots_.pop_back();
     slots_[index] = std::move(body);
-    return lfem_body{index, slots_[index].generation};
+    return BodyHandle{index, slots_[index].generation};
 }
 
-bool BodyRegistry::is_valid(lfem_body h) const {
+bool BodyRegistry::is_valid(BodyHandle h) const {
     return h.generation != 0 && h.index < slots_.size() && slots_[h.index].generation == h.generation;
 }
 
-Body& BodyRegistry::get(lfem_body h) { return const_cast<Body&>(static_cast<const BodyRegistry&>(*this).get(h)); }
+Body& BodyRegistry::get(BodyHandle h) { return const_cast<Body&>(static_cast<const BodyRegistry&>(*this).get(h)); }
 
-const Body& BodyRegistry::get(lfem_body h) const {
-    if (h.generation == 0 && h.index == 0) throw Error(LFEM_INVALID_HANDLE, "null body handle");
+const Body& BodyRegistry::get(BodyHandle h) const {
+    if (h.generation == 0 && h.index == 0) throw Error(Status::invalid_handle, "null body handle");
     if (!is_valid(h))
-        throw Error(LFEM_INVALID_HANDLE, "body handle {" + std::to_string(h.index) + ", " +
+        throw Error(Status::invalid_handle, "body handle {" + std::to_string(h.index) + ", " +
                                              std::to_string(h.generation) +
                                              "} is stale or belongs to another world");
     return slots_[h.index];
 }
 
-void BodyRegistry::destroy(lfem_body h) {
+void BodyRegistry::destroy(BodyHandle h) {
     Body& b = get(h);
     free_slots_.reserve(free_slots_.size() + 1);  // the only allocation: before any change
     b = Body{};                                   // generation 0: the slot is free

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "lfem.h"
 #include "world/body.h"
+#include "world/definitions.h"
 
 namespace lfem {
 
@@ -20,13 +20,13 @@ void keep_generations_above(uint32_t highest);
 class BodyRegistry {
 public:
     // A new body (generation from the process-wide counter) in a free slot or a new one.
-    lfem_body create(const lfem_body_def& def);
-    // Frees the body's slot (throws Error(LFEM_INVALID_HANDLE) for a bad handle).
-    void destroy(lfem_body handle);
-    bool is_valid(lfem_body handle) const;
-    // The body of a handle; throws Error(LFEM_INVALID_HANDLE) for a stale, foreign or null one.
-    Body& get(lfem_body handle);
-    const Body& get(lfem_body handle) const;
+    BodyHandle create(const BodyDef& def);
+    // Frees the body's slot (throws Error(Status::invalid_handle) for a bad handle).
+    void destroy(BodyHandle handle);
+    bool is_valid(BodyHandle handle) const;
+    // The body of a handle; throws Error(Status::invalid_handle) for a stale, foreign or null one.
+    Body& get(BodyHandle handle);
+    const Body& get(BodyHandle handle) const;
     uint32_t live_count() const;
 
     // Slots by index, live or free (generation 0), in the order every loop uses.
@@ -34,7 +34,7 @@ public:
     Body& slot(uint32_t i) { return slots_[i]; }
     const Body& slot(uint32_t i) const { return slots_[i]; }
     bool live(uint32_t i) const { return slots_[i].generation != 0; }
-    lfem_body handle_of(uint32_t i) const { return lfem_body{i, slots_[i].generation}; }
+    BodyHandle handle_of(uint32_t i) const { return BodyHandle{i, slots_[i].generation}; }
     // f(body, slot) for the live bodies in slot order.
     template <class F>
     void for_each(F&& f) const {

@@ -24,13 +24,15 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 9;  // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 10; // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
                                         // sleeping, the touching pairs; 7: 10-node tets (nodes
                                         // per tet, quadrature volumes, 6-node faces); 8: skins;
-                                        // 9: contacts' plane gap and gentle flag
+                                        // 9: contacts' plane gap and gentle flag; 10: the
+                                        // definitions field by field, no Lame parameters
+                                        // (derived from the body's def)
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -57,7 +59,7 @@ uint64_t fnv1a(const char* data, std::size_t n) {
 }
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
-    throw Error(LFEM_IO_ERROR, "checkpoint " + path + ": " + what);
+    throw Error(Status::io_error, "checkpoint " + path + ": " + what);
 }
 
 class Writer {
@@ -153,23 +155,26 @@ void shape_fields(A& a, S& s) {
     a(s.type), a(s.half_extents), a(s.radius), a(s.half_length), a(s.points);
 }
 
-// user_data is a pointer into the saving process: never written, NULL after loading.
-void def_field(Writer& a, const lfem_body_def& d) {
-    lfem_body_def c = d;
-    c.user_data = nullptr;
-    a(c);
+template <class A, class D>
+void world_def_fields(A& a, D& d) {
+    a(d.gravity), a(d.time_step), a(d.step_safety), a(d.contact_iterations), a(d.thread_count);
+    a(d.contact_tolerance), a(d.max_substeps), a(d.allow_unstable_step), a(d.enable_sleep);
+    a(d.mass_scaling_step), a(d.sleep_velocity), a(d.sleep_time);
 }
-void def_field(Reader& a, lfem_body_def& d) {
-    a(d);
-    d.user_data = nullptr;
+
+// user_data is a pointer into the saving process: never written, NULL after loading.
+template <class A, class D>
+void body_def_fields(A& a, D& d) {
+    a(d.type), a(d.model), a(d.young_modulus), a(d.poisson_ratio), a(d.density), a(d.damping);
+    a(d.friction), a(d.linear_velocity), a(d.angular_velocity), a(d.category_bits), a(d.mask_bits);
+    a(d.enable_sleep), a(d.self_contact), a(d.composite_tets);
 }
 
 template <class A, class B>
 void body_fields(A& a, B& b) {
     a(b.generation);
     if (b.generation == 0) return;  // a free slot
-    def_field(a, b.def);
-    a(b.lame.mu), a(b.lame.lambda);
+    body_def_fields(a, b.def);
     auto& r = b.ref;
     a(r.nodes_per_tet), a(r.X), a(r.mass), a(r.tets), a(r.Dm_inv), a(r.volume), a(r.qp_volume);
     a(r.surface.triangles), a(r.surface.quadratic_faces), a(r.surface.nodes);
@@ -186,28 +191,24 @@ void body_fields(A& a, B& b) {
     uint64_t shapes = b.shapes.size();
     a(shapes);
     if constexpr (A::loading) {
-        if (shapes > (1u << 20)) throw Error(LFEM_IO_ERROR, "checkpoint: implausible shape count");
+        if (shapes > (1u << 20)) throw Error(Status::io_error, "checkpoint: implausible shape count");
         b.shapes.resize(std::size_t(shapes));
     }
     for (auto& shape : b.shapes) shape_fields(a, shape);
     uint64_t skins = b.skins.size();
     a(skins);
     if constexpr (A::loading) {
-        if (skins > (1u << 20)) throw Error(LFEM_IO_ERROR, "checkpoint: implausible skin count");
+        if (skins > (1u << 20)) throw Error(Status::io_error, "checkpoint: implausible skin count");
         b.skins.resize(std::size_t(skins));
     }
     for (auto& skin : b.skins) a(skin.nodes_per_vertex), a(skin.nodes), a(skin.weights), a(skin.triangles);
 }
 
-// A C enum of the file as the int its bytes hold: a corrupted one may lie outside the values
-// the enum can hold, and loading it as the enum would be undefined behaviour (UBSan's enum
-// check), so its range is checked on the int before it is used as the enum.
+// An enum of the file within its values (from `first` to `last`): each is an int32_t, which a
+// corrupted file may set to anything.
 template <class E>
-int32_t enum_bits(const E& e) {
-    static_assert(sizeof(E) == sizeof(int32_t), "a C enum is stored as an int");
-    int32_t v;
-    std::memcpy(&v, &e, sizeof v);
-    return v;
+bool in_range(E e, E first, E last) {
+    return int32_t(e) >= int32_t(first) && int32_t(e) <= int32_t(last);
 }
 
 // Consistency of what a Reader produced: every size and index a step relies on.
@@ -218,11 +219,9 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     };
     const BodyReference& r = b.ref;
     const BodyState& s = b.state;
-    const int32_t type = enum_bits(b.def.type), model = enum_bits(b.def.model);
-    require(type >= LFEM_BODY_DEFORMABLE && type <= LFEM_BODY_RIGID, "bad body type");
-    require(model >= LFEM_MODEL_PAPER && model <= LFEM_MODEL_LINEAR, "bad model");
-    require(b.def.self_contact <= 1 && (b.def.self_contact == 0 || b.is_deformable()), "bad self-contact flag");
-    require(b.def.composite_tets <= 1, "bad composite-tets flag");
+    require(in_range(b.def.type, BodyKind::deformable, BodyKind::rigid), "bad body type");
+    require(in_range(b.def.model, Model::paper, Model::linear), "bad model");
+    require(!b.def.self_contact || b.is_deformable(), "bad self-contact flag");
     require(r.X.size() % 3 == 0, "bad reference positions");
     require(r.nodes_per_tet == 4 || r.nodes_per_tet == 10, "bad nodes per tet");
     const bool quadratic = r.nodes_per_tet == 10;
@@ -242,7 +241,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
             "bad node or tet numbering");
     require(s.x.size() == 3 * n && s.v_half.size() == 3 * n && s.elastic.size() == 3 * n,
             "state size disagrees with the mesh");
-    const bool corotational = b.is_deformable() && b.def.model == LFEM_MODEL_COROTATIONAL;
+    const bool corotational = b.is_deformable() && b.def.model == Model::corotational;
     require(s.tet_rotation.size() == (corotational ? 4 * points * t : 0), "tet rotations disagree with the mesh");
     for (float v : s.tet_rotation) require(std::isfinite(v), "a non-finite number");
     require(s.contact_force.empty() || s.contact_force.size() == 3 * n, "bad contact forces");
@@ -253,7 +252,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(b.node_force.empty() || b.node_force.size() == 3 * n, "bad node forces");
     require(s.shape_pose.size() == 7 * b.shapes.size(), "shape poses disagree with the shapes");
     for (const RigidShape& sh : b.shapes)
-        require(enum_bits(sh.type) >= LFEM_SHAPE_PLANE && enum_bits(sh.type) <= LFEM_SHAPE_CONVEX_HULL &&
+        require(in_range(sh.type, ShapeType::plane, ShapeType::convex_hull) &&
                     sh.points.size() % 3 == 0,
                 "bad shape");
     for (const Skin& sk : b.skins) {
@@ -270,7 +269,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     bool prescribed = false;
     for (NodeMode m : b.node_mode) prescribed = prescribed || m == NodeMode::prescribed;
     require(!prescribed || b.prescribed_velocity.size() == 3 * n, "prescribed nodes without velocities");
-    require(b.shapes.empty() || b.def.type == LFEM_BODY_STATIC || b.def.type == LFEM_BODY_KINEMATIC,
+    require(b.shapes.empty() || b.def.type == BodyKind::static_body || b.def.type == BodyKind::kinematic,
             "shapes on a body that cannot have them");
     require(!b.is_deformable() || n == 0 || (std::isfinite(r.stable_step) && r.stable_step > 0.0),
             "bad stable step");
@@ -332,14 +331,14 @@ T get(const char* p) {
     return v;
 }
 
-const uint32_t kLayout[4] = {uint32_t(sizeof(lfem_world_def)), uint32_t(sizeof(lfem_body_def)),
+const uint32_t kLayout[4] = {uint32_t(sizeof(WorldDef)), uint32_t(sizeof(BodyDef)),
                              uint32_t(sizeof(Body)), uint32_t(sizeof(ContactRecord))};
 
 }  // namespace
 
 void save_checkpoint(const World& world, const std::string& path) {
     Writer w;
-    w(world.def());
+    world_def_fields(w, world.def());
     counter_fields(w, world.state().counters);
     const std::vector<Body>& slots = world.bodies().slots();
     w(uint64_t(slots.size()));
@@ -415,7 +414,7 @@ WorldImage read_checkpoint(const std::string& path) {
 
     Reader r(path, payload, std::size_t(size));
     WorldImage im;
-    r(im.def);
+    world_def_fields(r, im.def);
     counter_fields(r, im.state.counters);
     uint64_t slots = 0;
     r(slots);

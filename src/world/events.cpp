@@ -84,11 +84,11 @@ void World::finish_call_events() {
         e.b = bodies_.handle_of(uint32_t(key));
         if (found != pair_tally_.end()) e.normal_impulse = found->second.impulse, e.max_force = found->second.max_force;
         if (during && !before) {
-            e.type = LFEM_EVENT_CONTACT_BEGIN;
+            e.type = EventType::contact_begin;
             events.push_back(e);
         }
         if ((before || during) && !after) {
-            e.type = LFEM_EVENT_CONTACT_END;
+            e.type = EventType::contact_end;
             events.push_back(e);
         }
     }

@@ -9,7 +9,7 @@
 namespace lfem {
 
 // Each change wakes the body first (wake() changes nothing if it fails).
-void World::set_velocities(lfem_body handle, const double* v) {
+void World::set_velocities(BodyHandle handle, const double* v) {
     Body& body = bodies_.get(handle);
     wake(handle.index);
     const uint32_t n = body.ref.node_count();
@@ -35,7 +35,7 @@ void World::set_velocities(lfem_body handle, const double* v) {
     state_.counters.external_work += after - before;
 }
 
-void World::set_node_mode(lfem_body handle, const uint32_t* nodes, uint32_t count, NodeMode mode,
+void World::set_node_mode(BodyHandle handle, const uint32_t* nodes, uint32_t count, NodeMode mode,
                           const double velocity[3]) {
     Body& body = bodies_.get(handle);
     wake(handle.index);
@@ -48,7 +48,7 @@ void World::set_node_mode(lfem_body handle, const uint32_t* nodes, uint32_t coun
     }
 }
 
-void World::set_node_forces(lfem_body handle, const uint32_t* nodes, uint32_t count, const double* forces) {
+void World::set_node_forces(BodyHandle handle, const uint32_t* nodes, uint32_t count, const double* forces) {
     Body& body = bodies_.get(handle);
     wake(handle.index);
     if (body.node_force.empty()) body.node_force.assign(3 * std::size_t(body.ref.node_count()), 0.0);
@@ -56,13 +56,13 @@ void World::set_node_forces(lfem_body handle, const uint32_t* nodes, uint32_t co
         std::copy_n(&forces[3 * std::size_t(i)], 3, &body.node_force[3 * std::size_t(nodes[i])]);
 }
 
-void World::clear_node_forces(lfem_body handle) {
+void World::clear_node_forces(BodyHandle handle) {
     bodies_.get(handle);
     wake(handle.index);
     std::vector<double>().swap(bodies_.get(handle).node_force);  // unused features hold no memory
 }
 
-void World::set_kinematic_velocity(lfem_body handle, const double linear[3], const double angular[3]) {
+void World::set_kinematic_velocity(BodyHandle handle, const double linear[3], const double angular[3]) {
     Body& body = bodies_.get(handle);
     wake_touching(handle.index);
     for (int k = 0; k < 3; ++k) {

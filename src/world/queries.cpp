@@ -15,7 +15,7 @@ public:
         const Body& b = bodies_.slot(slot);
         if (!b.has_geometry()) return false;
         out.identity = b.geometry_identity();
-        out.moves = b.def.type != LFEM_BODY_STATIC;
+        out.moves = b.def.type != BodyKind::static_body;
         out.solid = b.ref.tet_count() > 0;
         out.category = b.def.category_bits, out.mask = b.def.mask_bits;
         out.x = b.state.x.data();
@@ -23,7 +23,7 @@ public:
         out.triangle_count = b.ref.surface.triangle_count();
         out.surface_nodes = b.ref.surface.nodes.data();
         out.surface_node_count = uint32_t(b.ref.surface.nodes.size());
-        out.static_tree = b.def.type == LFEM_BODY_STATIC ? &b.ref.bvh : nullptr;
+        out.static_tree = b.def.type == BodyKind::static_body ? &b.ref.bvh : nullptr;
         out.shapes = b.shapes.data();
         out.shape_count = uint32_t(b.shapes.size());
         out.shape_pose = b.state.shape_pose.data();

@@ -23,7 +23,7 @@ void World::wake(uint32_t slot) {
     s.sleep_timer = 0.0;
     if (!s.asleep) return;
     StepEvent e;
-    e.type = LFEM_EVENT_WAKE;
+    e.type = EventType::wake;
     e.a = bodies_.handle_of(slot);
     (in_call_ ? sleep_events_ : pending_events_).push_back(e);  // first: it may throw
     s.asleep = 0;
@@ -108,7 +108,7 @@ void World::update_sleep(double dt) {
                           std::fill(std::begin(b.state.global.angular_momentum), std::end(b.state.global.angular_momentum), 0.0);
         b.state.asleep = 1;
         StepEvent e;
-        e.type = LFEM_EVENT_SLEEP;
+        e.type = EventType::sleep;
         e.a = bodies_.handle_of(i);
         sleep_events_.push_back(e);
     }

@@ -41,7 +41,7 @@ struct Attempt {
                               std::to_string(substeps) + " (step " + seconds(h) + ", stable limit " +
                               seconds(a.limit_seen) + ", after " + std::to_string(attempt) +
                               " retries with more sub-steps)";
-    throw Error(LFEM_UNSTABLE, (a.blew_up_at ? "the state blew up at sub-step " + where
+    throw Error(Status::unstable, (a.blew_up_at ? "the state blew up at sub-step " + where
                                              : "a body stiffened (or a self-contact body sped) beyond the "
                                                "sub-step at sub-step " +
                                                    where + "; the next retry would need " + number(wanted) +
@@ -57,7 +57,7 @@ struct Attempt {
 struct World::Snapshot {
     std::vector<BodyState> bodies;
     WorldState state;
-    lfem_profile profile{};
+    Profile profile{};
 };
 
 // The sub-steps a call of dt needs: no larger than the fixed time_step, or step_safety times the
@@ -67,7 +67,7 @@ uint32_t World::substeps_for(double dt, double limit) const {
     double h_allowed;
     if (def_.time_step > 0.0) {
         if (def_.time_step > limit && !def_.allow_unstable_step)
-            throw Error(LFEM_INVALID_ARGUMENT,
+            throw Error(Status::invalid_argument,
                         "fixed time_step " + seconds(def_.time_step) + " exceeds the stable limit " + seconds(limit) +
                             " of central differences (2/omega_max); use a step below it, 0 "
                             "for automatic, or set allow_unstable_step");
@@ -78,7 +78,7 @@ uint32_t World::substeps_for(double dt, double limit) const {
     double count = std::isfinite(h_allowed) ? std::ceil(dt / h_allowed * (1.0 - 1e-12)) : 1.0;
     if (count < 1.0) count = 1.0;
     if (!(count <= double(def_.max_substeps)))  // also a NaN count; count may exceed 2^64
-        throw Error(LFEM_INVALID_ARGUMENT, "dt " + seconds(dt) + " needs " + number(count) + " sub-steps of at most " +
+        throw Error(Status::invalid_argument, "dt " + seconds(dt) + " needs " + number(count) + " sub-steps of at most " +
                                                seconds(h_allowed) + ", more than max_substeps " +
                                                std::to_string(def_.max_substeps));
     return uint32_t(count);
@@ -103,7 +103,7 @@ double World::blow_up_energy_scale(double& start_energy) {
         const Body& b = bodies_.slot(j);
         if (b.generation == 0 || !b.is_dynamic() || !b.has_mesh()) continue;
         start_energy += b.state.strain_energy + body_energy[j];
-        const double cd = dilatational_wave_speed(b.lame, b.def.density);
+        const double cd = dilatational_wave_speed(b.lame(), b.def.density);
         scale += 1e-12 * b.ref.total_mass * cd * cd;
     }
     return scale;

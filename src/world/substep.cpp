@@ -131,7 +131,7 @@ void World::detect() {
         in.identity = b.geometry_identity() ^ (b.state.asleep ? uint64_t(1) << 31 : 0);
         in.static_bvh = b.is_static() ? &b.ref.bvh : nullptr;
         in.face_normals = b.is_static() && !b.ref.face_normals.empty() ? b.ref.face_normals.data() : nullptr;
-        in.type = b.state.asleep ? LFEM_BODY_STATIC : b.def.type;
+        in.type = b.state.asleep ? BodyKind::static_body : b.def.type;
         in.surface = &b.ref.surface;
         in.every_node = &b.ref.every_node;
         in.elements = b.ref.tets.empty() ? nullptr : b.ref.tets.data();
@@ -308,7 +308,7 @@ void World::commit_rotate_and_load(double h) {
     double cpu[3] = {0, 0, 0};
     for (uint32_t i : stages_.side_by_side)
         for (int p = 0; p < 3; ++p) cpu[p] += double(scratch_[i].phase_ticks[p]);
-    lfem_phase_time* phases[3] = {&profile_.commit, &profile_.global_rotation, &profile_.internal_forces};
+    PhaseTime* phases[3] = {&profile_.commit, &profile_.global_rotation, &profile_.internal_forces};
     share_wall_time(seconds_since(round_start), cpu, phases, 3);
 }
 

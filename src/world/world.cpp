@@ -15,7 +15,7 @@ void World::set_gravity(const double g[3]) {
     for (int k = 0; k < 3; ++k) def_.gravity[k] = g[k];
 }
 
-void World::destroy_body(lfem_body h) {
+void World::destroy_body(BodyHandle h) {
     bodies_.get(h);  // the handle first
     // The only allocation, before any change: room for its attachments' slots.
     state_.attachments.free_slots.reserve(state_.attachments.free_slots.size() + state_.attachments.slots.size());

@@ -17,7 +17,6 @@
 #include "contact/contact_bodies.h"
 #include "contact/detect_node_triangle.h"
 #include "contact/solve_contact_multipliers.h"
-#include "lfem.h"
 #include "query/query_scene.h"
 #include "world/body.h"
 #include "contact/link_constraint.h"
@@ -33,9 +32,9 @@ constexpr uint64_t kPoolWork = 2048;
 
 // One event of a call (lfem_event), with the world's handles.
 struct StepEvent {
-    lfem_event_type type = LFEM_EVENT_CONTACT_BEGIN;
-    lfem_body a{}, b{};
-    lfem_attachment attachment{};
+    EventType type = EventType::contact_begin;
+    BodyHandle a{}, b{};
+    AttachmentHandle attachment{};
     double normal_impulse = 0;  // N s
     double max_force = 0;       // N
 };
@@ -61,57 +60,57 @@ class World {
 public:
     // Starts def.thread_count - 1 worker threads (joined by the destructor). The kernels'
     // instruction-set variant is chosen here, once for the process (common/cpu_dispatch.h).
-    explicit World(const lfem_world_def& def)
+    explicit World(const WorldDef& def)
         : def_(def), pool_(new ThreadPool(def.thread_count)) { cpu_level(); }
 
-    const lfem_world_def& def() const { return def_; }
+    const WorldDef& def() const { return def_; }
     void set_gravity(const double g[3]);
     void set_time_step(double h) { def_.time_step = h; }
 
-    // ---- bodies (body_registry.h); body() throws Error(LFEM_INVALID_HANDLE) for a bad handle
-    lfem_body create_body(const lfem_body_def& def) { return bodies_.create(def); }
-    void destroy_body(lfem_body handle);
-    bool is_valid(lfem_body handle) const { return bodies_.is_valid(handle); }
-    const Body& body(lfem_body handle) const { return bodies_.get(handle); }
+    // ---- bodies (body_registry.h); body() throws Error(Status::invalid_handle) for a bad handle
+    BodyHandle create_body(const BodyDef& def) { return bodies_.create(def); }
+    void destroy_body(BodyHandle handle);
+    bool is_valid(BodyHandle handle) const { return bodies_.is_valid(handle); }
+    const Body& body(BodyHandle handle) const { return bodies_.get(handle); }
     const BodyRegistry& bodies() const { return bodies_; }
 
     // ---- mesh ingestion (add_mesh.cpp); each all or nothing
     // Appends a checked tet mesh to a body (see lfem_body_add_mesh): tets of nodes_per_tet nodes,
     // 4 or 10 (lfem_body_add_quadratic_mesh), the same for every mesh of a body.
-    void add_mesh(lfem_body body, const double* positions, uint32_t node_count, const uint32_t* tets,
+    void add_mesh(BodyHandle body, const double* positions, uint32_t node_count, const uint32_t* tets,
                   uint32_t tet_count, uint32_t nodes_per_tet = 4);
     // Gives a static or kinematic body a surface of triangles (no tets, no mass), e.g. terrain.
-    void add_triangle_mesh(lfem_body body, const double* positions, uint32_t node_count,
+    void add_triangle_mesh(BodyHandle body, const double* positions, uint32_t node_count,
                            const uint32_t* triangles, uint32_t triangle_count);
     // Gives a static or kinematic body a rigid shape at the given placement (7 doubles);
     // returns its index on the body.
-    uint32_t add_shape(lfem_body body, const RigidShape& shape, const double pose[7]);
+    uint32_t add_shape(BodyHandle body, const RigidShape& shape, const double pose[7]);
     // Binds a render mesh (vertices in the body's rest frame, triangles checked by the caller)
     // to the body's tets (see lfem_body_add_skin); returns its index on the body.
-    uint32_t add_skin(lfem_body body, const double* positions, uint32_t vertex_count, const uint32_t* triangles,
+    uint32_t add_skin(BodyHandle body, const double* positions, uint32_t vertex_count, const uint32_t* triangles,
                       uint32_t triangle_count);
 
     // ---- loads and supports (loads_and_supports.cpp). Node indices are the body's own
     // (internal) numbering, checked by the caller: in range, no repeats.
     // Overwrites velocities (3 per node); the change of kinetic energy is booked as external work.
-    void set_velocities(lfem_body body, const double* v);
-    void set_node_mode(lfem_body body, const uint32_t* nodes, uint32_t count, NodeMode mode,
+    void set_velocities(BodyHandle body, const double* v);
+    void set_node_mode(BodyHandle body, const uint32_t* nodes, uint32_t count, NodeMode mode,
                        const double velocity[3] = nullptr);
-    void set_node_forces(lfem_body body, const uint32_t* nodes, uint32_t count, const double* forces);
-    void clear_node_forces(lfem_body body);
-    void set_kinematic_velocity(lfem_body body, const double linear[3], const double angular[3]);
+    void set_node_forces(BodyHandle body, const uint32_t* nodes, uint32_t count, const double* forces);
+    void clear_node_forces(BodyHandle body);
+    void set_kinematic_velocity(BodyHandle body, const double linear[3], const double angular[3]);
 
     // ---- attachments (attachments.cpp); node indices internal, checked by the caller
-    lfem_attachment create_attachment(lfem_body body, const std::vector<uint32_t>& nodes, lfem_body target,
+    AttachmentHandle create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,
                                       const double frame[7], double break_force);
-    void destroy_attachment(lfem_attachment attachment);
-    bool is_valid(lfem_attachment attachment) const;
-    // Throws Error(LFEM_INVALID_HANDLE) for a bad handle.
-    const Attachment& attachment(lfem_attachment attachment) const;
-    void set_attachment_frame(lfem_attachment attachment, const double frame[7]);
+    void destroy_attachment(AttachmentHandle attachment);
+    bool is_valid(AttachmentHandle attachment) const;
+    // Throws Error(Status::invalid_handle) for a bad handle.
+    const Attachment& attachment(AttachmentHandle attachment) const;
+    void set_attachment_frame(AttachmentHandle attachment, const double frame[7]);
 
     // ---- sleeping (sleep.cpp)
-    void wake_body(lfem_body body) {
+    void wake_body(BodyHandle body) {
         this->body(body);  // the handle first
         wake(body.index);
     }
@@ -148,9 +147,9 @@ public:
     // active() are the contacts.
     const std::vector<ContactRecord>& contacts() const { return state_.contacts; }
     // Time and counts per phase of the step, accumulated (see lfem_profile).
-    const lfem_profile& profile() const { return profile_; }
+    const Profile& profile() const { return profile_; }
     void reset_profile() {
-        profile_ = lfem_profile{};
+        profile_ = Profile{};
         queries_.reset_counts();
     }
     void clear_warnings() { state_.counters.warnings = Warnings{}; }
@@ -243,10 +242,10 @@ private:
     void tally_contact_pairs(double h);  // also marks the bodies that touch, completes kept_offset_
     void finish_call_events();
 
-    lfem_world_def def_;
+    WorldDef def_;
     BodyRegistry bodies_;
     WorldState state_;
-    lfem_profile profile_{};
+    Profile profile_{};
     // Sub-step scratch.
     std::vector<StepScratch> scratch_;
     StageLists stages_;

@@ -69,7 +69,7 @@ struct Forces {
 
 // Elastic forces at positions x; the corotational warm start starts at identity, the paper
 // model's frame is `frame`.
-inline Forces forces_at(const QuadraticBox& box, lfem_model model, const Lame& lame, const std::vector<double>& x,
+inline Forces forces_at(const QuadraticBox& box, Model model, const Lame& lame, const std::vector<double>& x,
                         const double frame[4] = nullptr) {
     static const double identity[4] = {1, 0, 0, 0};
     Forces out;

@@ -24,7 +24,7 @@ void expect_invalid_mesh(const std::vector<uint32_t>& tets, const char* fragment
         extract_boundary_triangles(tets.data(), uint32_t(tets.size() / 4));
         ADD_FAILURE() << "accepted";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_INVALID_MESH);
+        EXPECT_EQ(e.status(), Status::invalid_mesh);
         EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
     }
 }

@@ -83,7 +83,7 @@ void expect_invalid_argument(const std::function<void()>& build) {
         build();
         ADD_FAILURE() << "no error thrown";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_INVALID_ARGUMENT) << e.what();
+        EXPECT_EQ(e.status(), Status::invalid_argument) << e.what();
         EXPECT_GT(std::string(e.what()).size(), 10u);
     }
 }

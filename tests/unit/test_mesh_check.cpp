@@ -1,4 +1,4 @@
-// check_tet_mesh: a valid mesh passes, each class of defect is refused with LFEM_INVALID_MESH
+// check_tet_mesh: a valid mesh passes, each class of defect is refused with Status::invalid_mesh
 // and a message naming the offending tet or node.
 #include <gtest/gtest.h>
 
@@ -28,7 +28,7 @@ void expect_refused(const std::vector<double>& positions, const std::vector<uint
         check(positions, tets);
         ADD_FAILURE() << "accepted; expected: " << fragment;
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_INVALID_MESH);
+        EXPECT_EQ(e.status(), Status::invalid_mesh);
         EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
     }
 }

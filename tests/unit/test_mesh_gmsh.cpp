@@ -1,5 +1,5 @@
 // Gmsh reader: the same hand-written cube in formats 2.2 and 4.1 gives the same mesh, and
-// every malformed file is refused with LFEM_IO_ERROR naming the offending line.
+// every malformed file is refused with Status::io_error naming the offending line.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -99,7 +99,7 @@ TEST(GmshReader, MalformedFilesNameTheLine) {
             ADD_FAILURE() << "no error";
         } catch (const Error& e) {
             const std::string message = e.what();
-            EXPECT_EQ(e.status(), LFEM_IO_ERROR);
+            EXPECT_EQ(e.status(), Status::io_error);
             EXPECT_EQ(message.rfind(path + ":" + std::to_string(c.line) + ": ", 0), 0u) << message;
             EXPECT_NE(message.find(c.says), std::string::npos) << message;
         }
@@ -112,7 +112,7 @@ TEST(GmshReader, MissingFile) {
         read_gmsh(path);
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_IO_ERROR);
+        EXPECT_EQ(e.status(), Status::io_error);
         EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos) << e.what();
     }
@@ -123,7 +123,7 @@ TEST(GmshReader, DirectoryIsNotAFile) {
         read_gmsh(LFEM_TEST_DATA_DIR);
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_IO_ERROR) << e.what();
+        EXPECT_EQ(e.status(), Status::io_error) << e.what();
     }
 }
 

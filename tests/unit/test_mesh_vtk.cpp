@@ -168,7 +168,7 @@ TEST_F(VtkOutput, UnwritablePlacesAreIoErrors) {
         write_vtu(missing, {});
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_IO_ERROR);
+        EXPECT_EQ(e.status(), Status::io_error);
         EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos);
     }
@@ -177,7 +177,7 @@ TEST_F(VtkOutput, UnwritablePlacesAreIoErrors) {
         series.add_frame(0.0);
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_IO_ERROR) << e.what();
+        EXPECT_EQ(e.status(), Status::io_error) << e.what();
         EXPECT_NE(std::string(e.what()).find("run.pvd"), std::string::npos) << e.what();
     }
 }

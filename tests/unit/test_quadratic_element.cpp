@@ -57,12 +57,12 @@ void homogeneous_deformation_is_reproduced(bool composite) {
         const Vec3 d = (F - Mat3::Identity()) * Vec3(X) + Vec3(0.1, -0.2, 0.3);
         for (int k = 0; k < 3; ++k) u[k] = d[k];
     });
-    for (lfem_model model : {LFEM_MODEL_LINEAR, LFEM_MODEL_PAPER, LFEM_MODEL_COROTATIONAL, LFEM_MODEL_NEO_HOOKEAN}) {
+    for (Model model : {Model::linear, Model::paper, Model::corotational, Model::neo_hookean}) {
         const Forces r = forces_at(box, model, lame, x);
         double interior = 0, any = 0;
         largest_forces(box, r.f, interior, any);
         EXPECT_GT(any, 0.0);
-        EXPECT_LT(interior, 1e-12 * any) << "model " << model;
+        EXPECT_LT(interior, 1e-12 * any) << "model " << int(model);
         // Every tet has the same stress: its von Mises value is the field's.
         std::vector<double> vm(box.mesh.tet_count());
         std::vector<float> rotations(16 * std::size_t(box.mesh.tet_count()), 0.0f);
@@ -72,12 +72,12 @@ void homogeneous_deformation_is_reproduced(bool composite) {
         for (double v : vm) EXPECT_NEAR(v, vm[0], 1e-9 * vm[0]);
     }
     // The linear model's energy and stress: Hooke's law of F - I over the whole volume.
-    const Forces r = forces_at(box, LFEM_MODEL_LINEAR, lame, x);
+    const Forces r = forces_at(box, Model::linear, lame, x);
     double psi = 0;
     const Mat3 sigma = hooke_stress(F - Mat3::Identity(), lame, &psi);
     EXPECT_NEAR(r.result.strain_energy, psi * kSize[0] * kSize[1] * kSize[2], 1e-12 * r.result.strain_energy);
     std::vector<double> vm(box.mesh.tet_count());
-    compute_von_mises(box.view(), Material{LFEM_MODEL_LINEAR, lame}, x.data(), nullptr, nullptr, vm.data());
+    compute_von_mises(box.view(), Material{Model::linear, lame}, x.data(), nullptr, nullptr, vm.data());
     EXPECT_NEAR(vm[0], von_mises(sigma), 1e-12 * von_mises(sigma));
 }
 
@@ -92,7 +92,7 @@ TEST(QuadraticElement, QuadraticBendingFieldIsReproducedExactly) {
     const std::vector<double> x = deformed(box, [&](const double* X, double* u) {
         u[0] = kappa * X[0] * X[2], u[1] = 0.0, u[2] = -0.5 * kappa * X[0] * X[0];
     });
-    const Forces r = forces_at(box, LFEM_MODEL_LINEAR, lame, x);
+    const Forces r = forces_at(box, Model::linear, lame, x);
     double interior = 0, any = 0;
     largest_forces(box, r.f, interior, any);
     EXPECT_LT(interior, 1e-10 * any);
@@ -100,7 +100,7 @@ TEST(QuadraticElement, QuadraticBendingFieldIsReproducedExactly) {
     const double energy = 0.5 * E * kappa * kappa * kSize[0] * kSize[1] * z3 / 3.0;
     EXPECT_NEAR(r.result.strain_energy, energy, 1e-10 * energy);
     std::vector<double> vm(box.mesh.tet_count());
-    compute_von_mises(box.view(), Material{LFEM_MODEL_LINEAR, lame}, x.data(), nullptr, nullptr, vm.data());
+    compute_von_mises(box.view(), Material{Model::linear, lame}, x.data(), nullptr, nullptr, vm.data());
     for (uint32_t t = 0; t < box.mesh.tet_count(); ++t) {
         double z = 0;
         for (int a = 0; a < 4; ++a) z += box.X(box.mesh.tets[10 * t + a])[2] / 4;
@@ -119,7 +119,7 @@ TEST(QuadraticElement, QuadraticFieldLoadsItsNodesConsistently) {
     const std::vector<double> x = deformed(box, [&](const double* X, double* u) {
         u[0] = c * X[0] * X[0], u[1] = u[2] = 0.0;
     });
-    const Forces r = forces_at(box, LFEM_MODEL_LINEAR, lame, x);
+    const Forces r = forces_at(box, Model::linear, lame, x);
     std::vector<double> integral(box.nodes(), 0.0);
     for (uint32_t t = 0; t < box.mesh.tet_count(); ++t)
         for (int a = 0; a < 10; ++a) integral[box.mesh.tets[10 * t + a]] += box.volume[t] * (a < 4 ? -1.0 / 20 : 1.0 / 5);
@@ -152,13 +152,13 @@ TEST(QuadraticElement, RigidRotationStrainsNothing) {
         u[0] = 1e-3 * X[0], u[1] = u[2] = 0.0;
     });
     double unused = 0, scale = 0;
-    largest_forces(box, forces_at(box, LFEM_MODEL_LINEAR, lame, strained).f, unused, scale);
-    for (lfem_model model : {LFEM_MODEL_PAPER, LFEM_MODEL_COROTATIONAL, LFEM_MODEL_NEO_HOOKEAN}) {
+    largest_forces(box, forces_at(box, Model::linear, lame, strained).f, unused, scale);
+    for (Model model : {Model::paper, Model::corotational, Model::neo_hookean}) {
         const Forces r = forces_at(box, model, lame, x, frame);
         double interior = 0, any = 0;
         largest_forces(box, r.f, interior, any);
         // The polar rotation is iterated to 1e-8 rad from its float start; round-off elsewhere.
-        EXPECT_LT(any, 1e-6 * scale) << "model " << model;
+        EXPECT_LT(any, 1e-6 * scale) << "model " << int(model);
         EXPECT_LT(std::fabs(r.result.strain_energy), 1e-12 * lame.mu * kSize[0] * kSize[1] * kSize[2]);
     }
 }
@@ -204,7 +204,7 @@ void stiffness_operator_is_symmetric(bool composite) {
     const double s = 1e-3;
     std::vector<double> x(box.mesh.positions);
     for (std::size_t i = 0; i < n; ++i) x[i] += s * u[i];
-    EXPECT_NEAR(s * s * uKu, 2 * forces_at(box, LFEM_MODEL_LINEAR, lame, x).result.strain_energy, 1e-10 * s * s * uKu);
+    EXPECT_NEAR(s * s * uKu, 2 * forces_at(box, Model::linear, lame, x).result.strain_energy, 1e-10 * s * s * uKu);
 }
 
 // The stable step estimate holds: omega_max used is at least the largest eigenvalue of the

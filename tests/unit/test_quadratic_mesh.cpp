@@ -86,7 +86,7 @@ TEST(QuadraticMesh, EveryEdgeGetsOneNodeAtItsMiddle) {
         make_quadratic(q);
         ADD_FAILURE() << "a quadratic mesh was made quadratic again";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_INVALID_ARGUMENT);
+        EXPECT_EQ(e.status(), Status::invalid_argument);
     }
 }
 
@@ -95,7 +95,7 @@ void expect_topology_refused(const TetMesh& q, const char* fragment) {
         check_tet_mesh(q.positions.data(), q.node_count(), q.tets.data(), q.tet_count(), 10);
         ADD_FAILURE() << "accepted";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_INVALID_MESH);
+        EXPECT_EQ(e.status(), Status::invalid_mesh);
         EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
     }
 }
@@ -126,7 +126,7 @@ TEST(QuadraticMesh, NonConformingMidEdgeNodesAreRefused) {
             check_quadratic_topology(m.tets.data(), m.tet_count(), m.node_count());
             ADD_FAILURE() << "accepted";
         } catch (const Error& e) {
-            EXPECT_EQ(e.status(), LFEM_INVALID_MESH);
+            EXPECT_EQ(e.status(), Status::invalid_mesh);
             EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
         }
     };
@@ -171,7 +171,7 @@ TEST(QuadraticMesh, GmshFileMixingTetKindsIsRefused) {
         read_gmsh(path);
         ADD_FAILURE() << "accepted";
     } catch (const Error& e) {
-        EXPECT_EQ(e.status(), LFEM_IO_ERROR);
+        EXPECT_EQ(e.status(), Status::io_error);
         EXPECT_NE(std::string(e.what()).find(":15: the file mixes 4-node and 10-node"), std::string::npos) << e.what();
     }
     std::remove(path.c_str());
