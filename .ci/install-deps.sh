@@ -22,6 +22,9 @@ PACKAGES=(
   libccd-dev
   # test framework
   libgtest-dev
+  # the API reference from the public headers (the docs target; ctest's api_docs fails on any
+  # Doxygen warning, such as an undocumented function or struct field)
+  doxygen
   # language bindings (bindings/): Rust (cargo test --offline, no crate downloaded), C# (mcs,
   # run under mono; these two pull the mono class libraries the bindings use), Python (the
   # system python3 with numpy and pytest; venv, setuptools and wheel for the out-of-tree test's

@@ -1,4 +1,5 @@
-/*
+/**
+ * \file
  * lfem.h - the one public header of lfem: deformable bodies that collide, simulated by an
  * explicit local finite element method (no global matrix anywhere) with contact by forward
  * increment Lagrange multipliers.
@@ -40,33 +41,38 @@ extern "C" {
 /* ---------------------------------------------------------------------------------------- */
 /* Status and errors                                                                          */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup status Status and errors
+ * @{ */
 
-/* A fixed English name and meaning of a status, e.g. "LFEM_INVALID_MESH: invalid mesh".
+/** A fixed English name and meaning of a status, e.g.\ "LFEM_INVALID_MESH: invalid mesh".
  * Never NULL; unknown values give "unknown status". */
 LFEM_API const char* lfem_status_string(lfem_status status);
 
-/* The message of the most recent failed call made on this thread, e.g.
- * "lfem_body_add_mesh: tet 17 is inverted (volume -2.1e-09 m^3)". Never NULL ("" before any
- * failure). Valid until the next lfem call on this thread. */
+/** The message of the most recent failed call made on this thread,
+ * e.g.\ "lfem_body_add_mesh: tet 17 is inverted (volume -2.1e-09 m^3)". Never NULL ("" before
+ * any failure). Valid until the next lfem call on this thread. */
 LFEM_API const char* lfem_last_error(void);
 
-/* (major << 16) | (minor << 8) | patch of the library actually loaded. Compare with
+/** (major << 16) | (minor << 8) | patch of the library actually loaded. Compare with
  * LFEM_VERSION_* to detect a header/library mismatch. */
 LFEM_API uint32_t lfem_version(void);
-/* "major.minor.patch". Never NULL. */
+/** "major.minor.patch". Never NULL. */
 LFEM_API const char* lfem_version_string(void);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* World                                                                                      */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup world World
+ * @{ */
 
-/* Create an empty world. *out receives the world (unchanged on failure). */
+/** Create an empty world. *out receives the world (unchanged on failure). */
 LFEM_API lfem_status lfem_world_create(const lfem_world_def* def, lfem_world** out);
 
-/* Destroy a world and everything in it. Nullable (NULL is a no-op). */
+/** Destroy a world and everything in it. Nullable (NULL is a no-op). */
 LFEM_API void lfem_world_destroy(lfem_world* world);
 
-/* Advance the world by dt seconds (dt > 0, finite). The interval is split into equal sub-steps
+/** Advance the world by dt seconds (dt > 0, finite). The interval is split into equal sub-steps
  * no larger than the allowed step (automatic or fixed). With the automatic step, a call in which
  * a body stiffens beyond its sub-step (neo-Hookean bodies, re-checked after every sub-step) or
  * the state blows up is redone from its start with more sub-steps (at least twice as many, up
@@ -76,52 +82,57 @@ LFEM_API void lfem_world_destroy(lfem_world* world);
  * before the call, and stepping may go on. */
 LFEM_API lfem_status lfem_world_step(lfem_world* world, double dt);
 
-/* Checkpoints. lfem_world_save writes everything a step depends on (definition, bodies,
+/** Checkpoints: lfem_world_save writes everything a step depends on (definition, bodies,
  * counters, the contacts that warm-start the next solve) to a versioned binary file: first to
- * "<path>.tmp", then renamed over path, so an existing checkpoint is only ever replaced by a
+ * `<path>.tmp`, then renamed over path, so an existing checkpoint is only ever replaced by a
  * complete one. lfem_world_load creates a new world from such a file; stepping it gives results
  * bitwise identical to the saved world's. Body handles of the saved world are valid in the
  * loaded one. user_data pointers are not saved (NULL after loading). A missing, truncated,
  * corrupted (checksum) or foreign file (other format version, byte order or build layout) gives
  * LFEM_IO_ERROR and *out unchanged; no partial world is ever returned. */
 LFEM_API lfem_status lfem_world_save(const lfem_world* world, const char* path);
+/** Create a new world from a checkpoint file (see lfem_world_save). */
 LFEM_API lfem_status lfem_world_load(const char* path, lfem_world** out);
 
-/* Change gravity (m/s^2) or the fixed time step (s, 0 = automatic) of an existing world. */
+/** Change gravity (m/s^2) of an existing world. */
 LFEM_API lfem_status lfem_world_set_gravity(lfem_world* world, const double gravity[3]);
+/** Change the fixed time step (s, 0 = automatic) of an existing world. */
 LFEM_API lfem_status lfem_world_set_time_step(lfem_world* world, double time_step);
 
-/* The stable limit of the central difference step, in seconds: 2/omega_max of the stiffest
+/** The stable limit of the central difference step, in seconds: 2/omega_max of the stiffest
  * deformable body (Lanczos iteration on the element-by-element operator, capped by a proven
  * Gershgorin bound). For neo-Hookean bodies it is taken at the current shape (a crushed body is
  * stiffer), so it may change from step to step. Infinity (HUGE_VAL) when the world has no
  * deformable body. */
 LFEM_API lfem_status lfem_world_get_stable_step(const lfem_world* world, double* out);
 
-/* Time, energies, momenta and contact figures of the world after the last step
+/** Time, energies, momenta and contact figures of the world after the last step
  * (lfem_world_stats). */
 LFEM_API lfem_status lfem_world_get_stats(const lfem_world* world, lfem_world_stats* out);
 
-/* Where the step spent its time: the accumulated profile (lfem_profile). */
+/** Where the step spent its time: the accumulated profile (lfem_profile). */
 LFEM_API lfem_status lfem_world_get_profile(const lfem_world* world, lfem_profile* out);
-/* Set every time and count of the profile back to zero. */
+/** Set every time and count of the profile back to zero. */
 LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Bodies                                                                                     */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup bodies Bodies
+ * @{ */
 
-/* Create a body without nodes; give it a mesh with lfem_body_add_mesh. */
+/** Create a body without nodes; give it a mesh with lfem_body_add_mesh. */
 LFEM_API lfem_status lfem_body_create(lfem_world* world, const lfem_body_def* def,
                                       lfem_body* out);
 
-/* Destroy a body; its handle (and copies of it) become stale. */
+/** Destroy a body; its handle (and copies of it) become stale. */
 LFEM_API lfem_status lfem_body_destroy(lfem_world* world, lfem_body body);
 
-/* 1 if the handle names a live body of this world, else 0. world is nullable (gives 0). */
+/** 1 if the handle names a live body of this world, else 0. world is nullable (gives 0). */
 LFEM_API int lfem_body_is_valid(const lfem_world* world, lfem_body body);
 
-/* Add a tetrahedral mesh to a body. positions: 3*node_count doubles (m); tets: 4*tet_count
+/** Add a tetrahedral mesh to a body. positions: 3*node_count doubles (m); tets: 4*tet_count
  * node indices into this mesh (0-based), each tet with positive volume
  * (det[x1-x0, x2-x0, x3-x0] > 0). Every node must belong to a tet, no tet may repeat a node,
  * and no triangle may be shared by more than two tets. The boundary triangles are extracted
@@ -131,7 +142,7 @@ LFEM_API lfem_status lfem_body_add_mesh(lfem_world* world, lfem_body body,
                                         const double* positions, uint32_t node_count,
                                         const uint32_t* tets, uint32_t tet_count);
 
-/* Add a mesh of 10-node (quadratic) tets, as lfem_body_add_mesh otherwise: tets holds 10 node
+/** Add a mesh of 10-node (quadratic) tets, as lfem_body_add_mesh otherwise: tets holds 10 node
  * indices per tet, its corners c0..c3 first (det[c1-c0, c2-c0, c3-c0] > 0), then the mid-edge
  * nodes of the edges (c0,c1), (c1,c2), (c0,c2), (c0,c3), (c1,c3), (c2,c3), VTK's order
  * (lfem_mesh_load_gmsh turns Gmsh's type 11 into it). Tets that share an edge share its
@@ -144,7 +155,7 @@ LFEM_API lfem_status lfem_body_add_quadratic_mesh(lfem_world* world, lfem_body b
                                                   const double* positions, uint32_t node_count,
                                                   const uint32_t* tets, uint32_t tet_count);
 
-/* Give a static or kinematic body a surface of triangles instead of tets (terrain, a wall, a
+/** Give a static or kinematic body a surface of triangles instead of tets (terrain, a wall, a
  * ramp): 3 node indices per triangle, counter-clockwise seen from the side bodies touch (the
  * normal (b-a)x(c-a) points towards them). Only one mesh per such body. Its boundary
  * triangles are the triangles themselves. */
@@ -153,23 +164,26 @@ LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body bo
                                                  const uint32_t* triangles,
                                                  uint32_t triangle_count);
 
+/** The number of nodes of the body. */
 LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body body,
                                               uint32_t* out);
+/** The number of tets of the body. */
 LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body,
                                              uint32_t* out);
-/* Nodes per tet of the body: 4, 10 (quadratic tets), or 0 for a body without tets. */
+/** Nodes per tet of the body: 4, 10 (quadratic tets), or 0 for a body without tets. */
 LFEM_API lfem_status lfem_body_get_nodes_per_tet(const lfem_world* world, lfem_body body,
                                                  uint32_t* out);
+/** The body def's user_data. */
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body,
                                              void** out);
 
-/* Total mass of the body (kg): the sum of its lumped node masses, rho V, plus what mass scaling
+/** Total mass of the body (kg): the sum of its lumped node masses, rho V, plus what mass scaling
  * added (lfem_world_def.mass_scaling_step). */
 LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body, double* out);
-/* The mass (kg) that mass scaling added to the body's nodes (0 without mass scaling). */
+/** The mass (kg) that mass scaling added to the body's nodes (0 without mass scaling). */
 LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body body, double* out);
 
-/* The body's inverted tets after the last sub-step (J = det F <= 0), the smallest volume
+/** The body's inverted tets after the last sub-step (J = det F <= 0), the smallest volume
  * ratio J of its tets, and for how long (s) it has had inverted tets without a break (0 when
  * it has none). 0, 1, 0 for a body that is not deformable. A 10-node tet's J varies inside it:
  * it counts as inverted when J <= 0 at one of its 4 quadrature points, and its J is the
@@ -177,61 +191,63 @@ LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body
 LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body body, uint32_t* inverted_tets,
                                              double* min_jacobian, double* inverted_for);
 
-/* Linear momentum (kg m/s) and angular momentum about the world origin (kg m^2/s) of the
+/** Linear momentum (kg m/s) and angular momentum about the world origin (kg m^2/s) of the
  * body, from its synchronized velocities. Static and kinematic bodies report zero. Either
  * output is nullable. */
 LFEM_API lfem_status lfem_body_get_momentum(const lfem_world* world, lfem_body body,
                                             double linear[3], double angular[3]);
 
-/* How often one kind of warning came, when last and for which body (lfem_warning_kind). */
+/** How often one kind of warning came, when last and for which body (lfem_warning_kind). */
 LFEM_API lfem_status lfem_world_get_warning(const lfem_world* world, lfem_warning_kind kind, lfem_warning* out);
-/* Set every warning's count and last time back to zero. */
+/** Set every warning's count and last time back to zero. */
 LFEM_API lfem_status lfem_world_clear_warnings(lfem_world* world);
 
-/* Copy the current node positions (m) into out[3*node_capacity]. LFEM_BUFFER_TOO_SMALL when
+/** Copy the current node positions (m) into out[3*node_capacity]. LFEM_BUFFER_TOO_SMALL when
  * node_capacity < node count (nothing written). */
 LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body body,
                                              double* out, uint32_t node_capacity);
 
-/* Copy the node velocities (m/s) at the current time into out[3*node_capacity]. These are
+/** Copy the node velocities (m/s) at the current time into out[3*node_capacity]. These are
  * the synchronized central-difference velocities (the mid-step velocity advanced by half a
  * step of the current acceleration). */
 LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body body,
                                               double* out, uint32_t node_capacity);
 
-/* Overwrite the velocities (m/s, 3 per node, node_count must equal the body's). */
+/** Overwrite the velocities (m/s, 3 per node, node_count must equal the body's). */
 LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
                                               const double* velocities, uint32_t node_count);
 
-/* Boundary triangles (3 node indices each, counter-clockwise seen from outside): the flat
+/** Boundary triangles (3 node indices each, counter-clockwise seen from outside): the flat
  * triangles contact uses, which for a body of 10-node tets are the 4 triangles of each 6-node
  * face (corner, mid-edge nodes): (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca). */
 LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* world,
                                                            lfem_body body, uint32_t* out);
+/** Copy the boundary triangles into out[3*triangle_capacity]. */
 LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, lfem_body body,
                                                       uint32_t* out,
                                                       uint32_t triangle_capacity);
 
-/* The boundary as faces: for a body of 10-node tets its 6-node triangles (6 node indices each:
+/** The boundary as faces: for a body of 10-node tets its 6-node triangles (6 node indices each:
  * corners a, b, c counter-clockwise seen from outside, then the mid-edge nodes of ab, bc, ca),
  * for any other body its boundary triangles (3 each). face_capacity counts faces. */
 LFEM_API lfem_status lfem_body_get_boundary_face_count(const lfem_world* world, lfem_body body,
                                                        uint32_t* out);
+/** Copy the boundary faces into out[6*face_capacity] (10-node tets) or out[3*face_capacity]. */
 LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_body body,
                                                   uint32_t* out, uint32_t face_capacity);
 
-/* Von Mises equivalent of the Cauchy stress in each tet (Pa), into out[tet_capacity]; of a
+/** Von Mises equivalent of the Cauchy stress in each tet (Pa), into out[tet_capacity]; of a
  * 10-node tet, of its mean stress over its quadrature points. */
 LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
                                                     double* out, uint32_t tet_capacity);
 
-/* The body's global rotation (row-major 3x3): a rigid body's rotation, the floating frame of
+/** The body's global rotation (row-major 3x3): a rigid body's rotation, the floating frame of
  * the "paper" model (re-fitted to the nodes), or how far a kinematic body has turned since it
  * was created. Identity otherwise. */
 LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body body,
                                             double out[9]);
 
-/* The nodes whose current position lies inside the axis-aligned box [lo, hi] (m). *count is
+/** The nodes whose current position lies inside the axis-aligned box [lo, hi] (m). *count is
  * always the total found; LFEM_BUFFER_TOO_SMALL when it exceeds capacity (out untouched).
  * out is nullable when capacity is 0 (to ask for the count). */
 LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_body body,
@@ -239,94 +255,105 @@ LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_b
                                                  uint32_t* out, uint32_t capacity,
                                                  uint32_t* count);
 
-/* Fix nodes in place (velocity 0 from now on). Indices must be in range and distinct. */
+/** Fix nodes in place (velocity 0 from now on). Indices must be in range and distinct. */
 LFEM_API lfem_status lfem_body_fix_nodes(lfem_world* world, lfem_body body,
                                          const uint32_t* nodes, uint32_t count);
-/* Prescribe a constant velocity (m/s) for nodes: they move at it, whatever the forces. */
+/** Prescribe a constant velocity (m/s) for nodes: they move at it, whatever the forces. */
 LFEM_API lfem_status lfem_body_prescribe_node_velocity(lfem_world* world, lfem_body body,
                                                        const uint32_t* nodes, uint32_t count,
                                                        const double velocity[3]);
-/* Give fixed or prescribed nodes back to the dynamics. */
+/** Give fixed or prescribed nodes back to the dynamics. */
 LFEM_API lfem_status lfem_body_release_nodes(lfem_world* world, lfem_body body,
                                              const uint32_t* nodes, uint32_t count);
 
-/* Set a constant external force (N, 3 per listed node) that acts on every following step
+/** Set a constant external force (N, 3 per listed node) that acts on every following step
  * until changed; it replaces any earlier force on those nodes. Added to gravity. */
 LFEM_API lfem_status lfem_body_set_node_forces(lfem_world* world, lfem_body body,
                                                const uint32_t* nodes, uint32_t count,
                                                const double* forces);
-/* Remove every external node force of the body. */
+/** Remove every external node force of the body. */
 LFEM_API lfem_status lfem_body_clear_node_forces(lfem_world* world, lfem_body body);
 
-/* The velocity of a kinematic body: linear (m/s) of its centre and angular (rad/s) about it. */
+/** The velocity of a kinematic body: linear (m/s) of its centre and angular (rad/s) about it. */
 LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_body body,
                                                       const double linear[3],
                                                       const double angular[3]);
 
-/* Sleeping (lfem_world_def.enable_sleep). A sleeping body wakes when an awake body touches it,
- * when its velocities, node forces, supports or attachments change (or those of a kinematic
+/** Sleeping (lfem_world_def.enable_sleep). A sleeping body wakes when an awake body touches
+ * it, when its velocities, node forces, supports or attachments change (or those of a kinematic
  * body touching it), when gravity changes, or on request. Waking a body does not wake what
  * touches it until that is touched in turn. Both are reported as events (lfem_world_get_events). */
 LFEM_API lfem_status lfem_body_wake(lfem_world* world, lfem_body body);
-/* 1 when the body is awake (static bodies and bodies without a mesh: 1), 0 when asleep, -1 for
+/** 1 when the body is awake (static bodies and bodies without a mesh: 1), 0 when asleep, -1 for
  * an invalid world or handle. */
 LFEM_API int lfem_body_is_awake(const lfem_world* world, lfem_body body);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Attachments                                                                                */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup attachments Attachments
+ * @{ */
 
-/* Hold nodes of a deformable body in the frame of a target (lfem_attachment says how), from a
+/** Hold nodes of a deformable body in the frame of a target (lfem_attachment says how), from a
  * definition started with lfem_attachment_def_default(). */
 LFEM_API lfem_status lfem_attachment_create(lfem_world* world, const lfem_attachment_def* def,
                                             lfem_attachment* out);
+/** Destroy an attachment; its handle becomes stale. */
 LFEM_API lfem_status lfem_attachment_destroy(lfem_world* world, lfem_attachment attachment);
-/* 1 when the handle names a live attachment of this world, else 0. */
+/** 1 when the handle names a live attachment of this world, else 0. */
 LFEM_API int lfem_attachment_is_valid(const lfem_world* world, lfem_attachment attachment);
-/* Null target only: where the frame is to be at the end of the next lfem_world_step (centre and
+/** Null target only: where the frame is to be at the end of the next lfem_world_step (centre and
  * unit quaternion); the step moves it there uniformly over its sub-steps (a lerp of the
  * centre, an nlerp of the rotation), so a frame set once per frame drags the nodes smoothly. */
 LFEM_API lfem_status lfem_attachment_set_frame(lfem_world* world, lfem_attachment attachment,
                                                const double frame[7]);
-/* The total force (N) the attachment put on the body's nodes at the last sub-step (the target
+/** The total force (N) the attachment put on the body's nodes at the last sub-step (the target
  * feels the opposite). */
 LFEM_API lfem_status lfem_attachment_get_force(const lfem_world* world, lfem_attachment attachment,
                                                double force[3]);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Rigid shapes of static and kinematic bodies                                                */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup shapes Rigid shapes of static and kinematic bodies
+ * @{ */
 
-/* Give a static or kinematic body a rigid shape (a body may have several, with or without a
+/** Give a static or kinematic body a rigid shape (a body may have several, with or without a
  * tet mesh). Deformable bodies' boundary nodes collide with it. A kinematic body's shapes move
  * with its velocity (about the body's centre: its mesh's centre of mass, or the first shape's
  * centre for a body without mesh). *index (nullable) receives the shape's index on the body,
  * 0 for its first shape: the `shape` of the contacts that touch it. */
 LFEM_API lfem_status lfem_body_add_shape(lfem_world* world, lfem_body body,
                                          const lfem_shape_def* def, uint32_t* index);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Contacts                                                                                   */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup contacts Contacts
+ * @{ */
 
-/* Copy the active contacts of the last step into out[capacity]. *count is always the total;
+/** Copy the active contacts of the last step into out[capacity]. *count is always the total;
  * LFEM_BUFFER_TOO_SMALL (nothing copied) when it exceeds capacity. out is nullable when
  * capacity is 0 (to ask for the count). Contacts are listed in a fixed order (by body_a, then
  * node, then body_b and shape), so repeated runs give the same list. */
 LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_contact* out,
                                                uint32_t capacity, uint32_t* count);
 
-/* Copy the events of the last step (lfem_event) into out[capacity], in a fixed order (contact
+/** Copy the events of the last step (lfem_event) into out[capacity], in a fixed order (contact
  * events by pair, then sleep and wake events by body, then broken attachments). Same capacity
  * rules as lfem_world_query_contacts. */
 LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* out, uint32_t capacity,
                                            uint32_t* count);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Skins: render meshes embedded in a body's tets                                             */
 /* ---------------------------------------------------------------------------------------- */
-
-/* A game draws a fine triangle mesh, not the simulation's tets. lfem_body_add_skin takes such a
+/** \addtogroup skins Skins: render meshes embedded in a body's tets
+ * A game draws a fine triangle mesh, not the simulation's tets. lfem_body_add_skin takes such a
  * mesh in the body's rest frame (the coordinates of the meshes given to lfem_body_add_mesh) and
  * binds each vertex once, by barycentric weights, to the tet that contains it; a vertex just
  * outside the body (within one mean boundary edge of it) is bound to the nearest tet by the
@@ -347,9 +374,10 @@ LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* 
  * kinematic: they follow its nodes); not a body of a triangle mesh or shapes alone. A mesh
  * added to the body later leaves the skins bound as they were (to the tets they were bound
  * to). Vertices and triangles are the caller's own numbering, kept as given. Like every call on
- * a world, not to be made from two threads at once. */
+ * a world, not to be made from two threads at once.
+ * @{ */
 
-/* Bind a triangle mesh to the body's tets. positions: 3*vertex_count doubles (m, finite, the
+/** Bind a triangle mesh to the body's tets. positions: 3*vertex_count doubles (m, finite, the
  * body's rest frame); triangles: 3*triangle_count vertex indices (< vertex_count, three
  * different ones per triangle; counter-clockwise seen from outside for outward normals).
  * vertex_count and triangle_count >= 1. A triangle index out of range or repeated gives
@@ -359,37 +387,39 @@ LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* 
 LFEM_API lfem_status lfem_body_add_skin(lfem_world* world, lfem_body body, const double* positions,
                                         uint32_t vertex_count, const uint32_t* triangles,
                                         uint32_t triangle_count, uint32_t* skin_index);
-/* The number of skins of the body. */
+/** The number of skins of the body. */
 LFEM_API lfem_status lfem_body_get_skin_count(const lfem_world* world, lfem_body body, uint32_t* out);
-/* The vertex and triangle counts of a skin (skin < lfem_body_get_skin_count, else
+/** The vertex and triangle counts of a skin (skin < lfem_body_get_skin_count, else
  * LFEM_INVALID_ARGUMENT). Either output is nullable. */
 LFEM_API lfem_status lfem_body_get_skin_sizes(const lfem_world* world, lfem_body body, uint32_t skin,
                                               uint32_t* vertex_count, uint32_t* triangle_count);
-/* The skin's triangles as given, into out[3*triangle_capacity]. LFEM_BUFFER_TOO_SMALL when
+/** The skin's triangles as given, into out[3*triangle_capacity]. LFEM_BUFFER_TOO_SMALL when
  * triangle_capacity is below its triangle count (nothing written). */
 LFEM_API lfem_status lfem_body_get_skin_triangles(const lfem_world* world, lfem_body body, uint32_t skin,
                                                   uint32_t* out, uint32_t triangle_capacity);
-/* The deformed skin: positions (m) into positions[3*vertex_capacity] and, when normals is not
+/** The deformed skin: positions (m) into positions[3*vertex_capacity] and, when normals is not
  * NULL, unit smooth normals into normals[3*vertex_capacity]: at each vertex the normalised sum
- * of (b - a) x (c - a) over the skin's triangles (a, b, c) around it, i.e. their unit normals
+ * of (b - a) x (c - a) over the skin's triangles (a, b, c) around it, i.e.\ their unit normals
  * weighted by area; a vertex whose triangles have no area gets (0, 0, 0). LFEM_BUFFER_TOO_SMALL
  * when vertex_capacity is below the vertex count (nothing written). */
 LFEM_API lfem_status lfem_body_get_skin_vertices(const lfem_world* world, lfem_body body, uint32_t skin,
                                                  double* positions, double* normals, uint32_t vertex_capacity);
-/* The same as floats for a vertex buffer: vertex i at positions[i*position_stride + 0..2] and its
- * normal (when normals is not NULL) at normals[i*normal_stride + 0..2]; strides are in floats,
- * >= 3 (normal_stride is checked only with normals), so positions and normals may interleave in
- * one buffer (normals = positions + 3, both strides 6). The floats between are not touched.
+/** The same as floats for a vertex buffer: vertex i at positions[i*position_stride + 0..2]
+ * and its normal (when normals is not NULL) at normals[i*normal_stride + 0..2]; strides are in
+ * floats, >= 3 (normal_stride is checked only with normals), so positions and normals may
+ * interleave in one buffer (normals = positions + 3, both strides 6). The floats between are not
+ * touched.
  * The buffers must hold (vertex_capacity - 1) * stride + 3 floats. */
 LFEM_API lfem_status lfem_body_get_skin_vertices_f32(const lfem_world* world, lfem_body body, uint32_t skin,
                                                      float* positions, uint32_t position_stride, float* normals,
                                                      uint32_t normal_stride, uint32_t vertex_capacity);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Queries: rays and boxes against the current geometry                                       */
 /* ---------------------------------------------------------------------------------------- */
-
-/* The queries read the world as it is after the last call (the bodies' current, deformed
+/** \addtogroup queries Queries: rays and boxes against the current geometry
+ * The queries read the world as it is after the last call (the bodies' current, deformed
  * boundary triangles, for a body of 10-node tets the 4 flat triangles of each 6-node face
  * through its mid-edge nodes, as contact sees them, and their rigid shapes) and change nothing
  * a step reads: stepping gives
@@ -399,9 +429,10 @@ LFEM_API lfem_status lfem_body_get_skin_vertices_f32(const lfem_world* world, lf
  * and a moving body's tree is refitted only when a query reaches it after it moved (the profile
  * counts queries, bodies reached, triangles and shapes tested and refits). The queries keep
  * that cache inside the world: although they take a const world, do not make them from two
- * threads at once, nor beside any other call on the same world. */
+ * threads at once, nor beside any other call on the same world.
+ * @{ */
 
-/* Cast the ray origin + t * direction / |direction| (m), t in [0, max_distance]: the nearest
+/** Cast the ray origin + t * direction / |direction| (m), t in [0, max_distance]: the nearest
  * crossing of the surface of a body the filter sees (a boundary triangle, from either side, at
  * its current position; or a plane, box, sphere, capsule or convex hull shape's surface). A ray
  * starting inside a body or a shape meets its surface on the way out (the normal then points
@@ -414,7 +445,7 @@ LFEM_API lfem_status lfem_world_cast_ray(const lfem_world* world, const double o
                                          const double direction[3], double max_distance,
                                          lfem_query_filter filter, lfem_ray_hit* out, int* hit);
 
-/* Every crossing along the ray, nearest first (ties as above); a ray through a body crosses
+/** Every crossing along the ray, nearest first (ties as above); a ray through a body crosses
  * its surface where it enters and where it leaves, a sphere or box shape twice, a plane once
  * (and a ray through an edge or corner may list each triangle that shares it). *count is always
  * the total; LFEM_BUFFER_TOO_SMALL when it exceeds capacity (out untouched). out is nullable
@@ -424,7 +455,7 @@ LFEM_API lfem_status lfem_world_cast_ray_all(const lfem_world* world, const doub
                                              lfem_query_filter filter, lfem_ray_hit* out,
                                              uint32_t capacity, uint32_t* count);
 
-/* The bodies the filter sees whose current geometry overlaps the box [lo, hi] (m, finite, lo <=
+/** The bodies the filter sees whose current geometry overlaps the box [lo, hi] (m, finite, lo <=
  * hi on every axis; touching counts): a boundary triangle or a shape (solid: a box inside a
  * sphere overlaps it) that meets the box, or a body of tets that holds the box inside it. In
  * body index order. *count is always the total; LFEM_BUFFER_TOO_SMALL when it exceeds capacity
@@ -432,77 +463,91 @@ LFEM_API lfem_status lfem_world_cast_ray_all(const lfem_world* world, const doub
 LFEM_API lfem_status lfem_world_overlap_box(const lfem_world* world, const double lo[3], const double hi[3],
                                             lfem_query_filter filter, lfem_body* out, uint32_t capacity,
                                             uint32_t* count);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Meshes: builders and Gmsh import                                                           */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup meshes Meshes: builders and Gmsh import
+ * @{ */
 
-/* A box [0,size[0]] x [0,size[1]] x [0,size[2]] (m) of cells[0]*cells[1]*cells[2] hexahedra,
+/** A box [0,size[0]] x [0,size[1]] x [0,size[2]] (m) of cells[0]*cells[1]*cells[2] hexahedra,
  * each split into 6 tets (all cells >= 1). */
 LFEM_API lfem_status lfem_mesh_create_box(const double size[3], const uint32_t cells[3],
                                           lfem_mesh** out);
-/* A solid cylinder along +z from z = 0 to height, radius (m); segments around (>= 3),
+/** A solid cylinder along +z from z = 0 to height, radius (m); segments around (>= 3),
  * rings across the radius (>= 1), layers along the height (>= 1). */
 LFEM_API lfem_status lfem_mesh_create_cylinder(double radius, double height, uint32_t segments,
                                                uint32_t rings, uint32_t layers,
                                                lfem_mesh** out);
-/* A hollow cup with a bottom, open at the top: outer radius, height (m, along +z from z = 0),
+/** A hollow cup with a bottom, open at the top: outer radius, height (m, along +z from z = 0),
  * wall thickness and bottom thickness (m); segments around (>= 3), layers along the wall
  * (>= 1). */
 LFEM_API lfem_status lfem_mesh_create_cup(double outer_radius, double height, double wall,
                                           double bottom, uint32_t segments, uint32_t layers,
                                           lfem_mesh** out);
-/* A hammer: a square handle of side handle_width along +z from z = 0 to handle_length, and a
+/** A hammer: a square handle of side handle_width along +z from z = 0 to handle_length, and a
  * head (head_length along x, head_width in y and z) centred on the handle's top end, one
  * conforming mesh of cells of about cell_size (m). */
 LFEM_API lfem_status lfem_mesh_create_hammer(double handle_length, double handle_width,
                                              double head_length, double head_width,
                                              double cell_size, lfem_mesh** out);
 
-/* Read the tetrahedra of a Gmsh .msh file (ASCII format 2.2 or 4.1): 4-node tets (element
+/** Read the tetrahedra of a Gmsh .msh file (ASCII format 2.2 or 4.1): 4-node tets (element
  * type 4) or 10-node tets (type 11, turned into lfem's node order, see
  * lfem_body_add_quadratic_mesh), not both in one file; other cell types are skipped, unused
  * nodes dropped, negatively oriented tets reordered. A missing or malformed file gives
  * LFEM_IO_ERROR with the line number in the message. */
 LFEM_API lfem_status lfem_mesh_load_gmsh(const char* path, lfem_mesh** out);
 
-/* Turn a mesh of 4-node tets into 10-node (quadratic) tets: a node at the middle of every edge
+/** Turn a mesh of 4-node tets into 10-node (quadratic) tets: a node at the middle of every edge
  * (numbered after the corners, which keep their indices), shared by the tets around the edge.
  * Serves every builder and any linear mesh. LFEM_INVALID_ARGUMENT for a mesh that already has
  * 10-node tets (the mesh is then unchanged). */
 LFEM_API lfem_status lfem_mesh_make_quadratic(lfem_mesh* mesh);
 
-/* Nullable. */
+/** Destroy a mesh. Nullable. */
 LFEM_API void lfem_mesh_destroy(lfem_mesh* mesh);
 
-/* Read-only views, valid until the mesh is changed or destroyed. NULL / 0 for a NULL mesh. */
+/** \name Read-only views
+ * Valid until the mesh is changed or destroyed. NULL / 0 for a NULL mesh.
+ * @{ */
+/** The number of nodes. */
 LFEM_API uint32_t lfem_mesh_get_node_count(const lfem_mesh* mesh);
+/** The number of tets. */
 LFEM_API uint32_t lfem_mesh_get_tet_count(const lfem_mesh* mesh);
-/* 4, or 10 for a mesh of quadratic tets (lfem_mesh_make_quadratic, a Gmsh file of type 11). */
+/** 4, or 10 for a mesh of quadratic tets (lfem_mesh_make_quadratic, a Gmsh file of type 11). */
 LFEM_API uint32_t lfem_mesh_get_nodes_per_tet(const lfem_mesh* mesh);
+/** The node positions (m), 3 per node. */
 LFEM_API const double* lfem_mesh_get_positions(const lfem_mesh* mesh);
-/* nodes_per_tet node indices per tet. */
+/** The tets: nodes_per_tet node indices per tet. */
 LFEM_API const uint32_t* lfem_mesh_get_tets(const lfem_mesh* mesh);
+/** @} */
 
-/* Move a mesh by offset (m), or rotate it about the origin by angle (rad) around axis. */
+/** Move a mesh by offset (m). */
 LFEM_API lfem_status lfem_mesh_translate(lfem_mesh* mesh, const double offset[3]);
+/** Rotate a mesh about the origin by angle (rad) around axis. */
 LFEM_API lfem_status lfem_mesh_rotate(lfem_mesh* mesh, const double axis[3], double angle);
+/** @} */
 
 /* ---------------------------------------------------------------------------------------- */
 /* Output: a VTK time series that ParaView opens                                              */
 /* ---------------------------------------------------------------------------------------- */
+/** \addtogroup output Output: a VTK time series that ParaView opens
+ * @{ */
 
-/* Start a series: pvd_path names the .pvd collection file; frames go beside it as
- * <stem>_<frame>.vtu. Nothing is written yet: a folder that does not exist or cannot be written
+/** Start a series: pvd_path names the .pvd collection file; frames go beside it as
+ * `<stem>_<frame>.vtu`. Nothing is written yet: a folder that does not exist or cannot be written
  * is reported (LFEM_IO_ERROR) by the first lfem_vtk_series_write_frame. */
 LFEM_API lfem_status lfem_vtk_series_create(const char* pvd_path, lfem_vtk_series** out);
-/* Write every body of the world (positions, velocities, von Mises stress, body index) as the
+/** Write every body of the world (positions, velocities, von Mises stress, body index) as the
  * next frame at the world's time, and rewrite the .pvd so it is valid after every frame. Tets
  * are VTK_TETRA cells, 10-node tets VTK_QUADRATIC_TETRA (24). */
 LFEM_API lfem_status lfem_vtk_series_write_frame(lfem_vtk_series* series,
                                                  const lfem_world* world);
-/* Nullable. */
+/** Destroy a series. Nullable. */
 LFEM_API void lfem_vtk_series_destroy(lfem_vtk_series* series);
+/** @} */
 
 #ifdef __cplusplus
 } /* extern "C" */
