@@ -10,7 +10,6 @@
 #include "api/definitions.h"
 #include "api/handles.h"
 #include "api/node_lists.h"
-#include "fem/internal_forces.h"
 
 using namespace lfem;
 using namespace lfem::api;
@@ -199,12 +198,10 @@ LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body 
                                              double* min_jacobian, double* inverted_for) {
     return guard(__func__, [&] {
         const World& w = world_of(world);
-        const Body& b = w.body(from_c(body));
-        const bool deformable = b.is_deformable() && b.has_mesh();
-        const BodyState& s = b.state;
-        if (inverted_tets) *inverted_tets = deformable ? s.inverted_tets : 0;
-        if (min_jacobian) *min_jacobian = deformable ? s.min_jacobian : 1.0;
-        if (inverted_for) *inverted_for = deformable && s.inverted_since >= 0.0 ? w.counters().time - s.inverted_since : 0.0;
+        const Inversion inv = w.inversion(w.body(from_c(body)));
+        if (inverted_tets) *inverted_tets = inv.inverted_tets;
+        if (min_jacobian) *min_jacobian = inv.min_jacobian;
+        if (inverted_for) *inverted_for = inv.inverted_for;
     });
 }
 
@@ -295,27 +292,22 @@ LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_
 LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfem_body body,
                                                     double* out, uint32_t tet_capacity) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(from_c(body));
+        const World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
         require_pointer(out, "out");
         require_capacity(tet_capacity, b.ref.tet_count(), "tet");
-        if (b.is_deformable()) {
-            std::vector<double> stress(b.ref.tet_count());  // all or nothing for out
-            compute_von_mises(element_mesh(b.ref), material_of(b), b.state.x.data(), b.state.tet_rotation.data(),
-                              b.state.global.rotation, stress.data());
-            b.ref.numbering.tets_to_api(stress.data(), b.ref.tet_count(), out);
-        } else {
-            std::fill(out, out + b.ref.tet_count(), 0.0);  // rigid: no strain is modelled
-        }
+        std::vector<double> stress(b.ref.tet_count());  // all or nothing for out
+        w.von_mises_stress(b, stress.data());
+        b.ref.numbering.tets_to_api(stress.data(), b.ref.tet_count(), out);
     });
 }
 
 LFEM_API lfem_status lfem_body_get_rotation(const lfem_world* world, lfem_body body, double out[9]) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(from_c(body));
+        const World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
         require_pointer(out, "out");
-        const Mat3 R = load_quaternion(b.state.global.rotation).toRotationMatrix();
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) out[3 * r + c] = (b.is_rigid() || b.is_paper() || b.is_kinematic()) ? R(r, c) : (r == c);
+        w.rotation_matrix(b, out);
     });
 }
 
@@ -323,32 +315,18 @@ LFEM_API lfem_status lfem_body_find_nodes_in_box(const lfem_world* world, lfem_b
                                                  const double hi[3], uint32_t* out, uint32_t capacity,
                                                  uint32_t* count) {
     return guard(__func__, [&] {
-        const Body& b = world_of(world).body(from_c(body));
+        const World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
         require_pointer(lo, "lo");
         require_pointer(hi, "hi");
         require_pointer(count, "count");
         require(capacity == 0 || out != nullptr, "out is NULL with a non-zero capacity");
         require_finite(lo, 3, "lo");
         require_finite(hi, 3, "hi");
-        auto inside = [&](uint32_t api) {  // ascending API indices, as the caller numbers
-            const uint32_t i = b.ref.numbering.node(api);
-            for (int k = 0; k < 3; ++k) {
-                const double x = b.state.x[3 * std::size_t(i) + k];
-                if (x < lo[k] || x > hi[k]) return false;
-            }
-            return true;
-        };
-        uint32_t found = 0;
-        for (uint32_t i = 0; i < b.ref.node_count(); ++i) found += inside(i);
-        if (found > capacity) {
-            *count = found;
-            throw Error(Status::buffer_too_small, "capacity " + std::to_string(capacity) + " is below the " +
-                                                   std::to_string(found) + " nodes found");
-        }
-        uint32_t k = 0;
-        for (uint32_t i = 0; i < b.ref.node_count(); ++i)
-            if (inside(i)) out[k++] = i;
-        *count = found;
+        const std::vector<uint32_t> found = w.nodes_in_box(b, lo, hi);
+        *count = uint32_t(found.size());
+        require_capacity(capacity, *count, "node");
+        std::copy(found.begin(), found.end(), out);
     });
 }
 

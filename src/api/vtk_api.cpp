@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "api/handles.h"
-#include "fem/internal_forces.h"
 #if LFEM_WITH_IO
 #include "mesh/vtk_writer.h"
 #endif
@@ -38,9 +37,7 @@ FrameArrays frame_arrays(const World& w, const Body& b) {
     out.positions.resize(internal.size());
     numbering.nodes_to_api(b.state.x.data(), n, out.positions.data());
     std::vector<double> stress(t, 0.0);
-    if (b.is_deformable())
-        compute_von_mises(element_mesh(b.ref), material_of(b), b.state.x.data(), b.state.tet_rotation.data(),
-                          b.state.global.rotation, stress.data());
+    w.von_mises_stress(b, stress.data());
     out.stresses.resize(t);
     numbering.tets_to_api(stress.data(), t, out.stresses.data());
     out.tets.resize(b.ref.tets.size());

@@ -7,6 +7,7 @@ void ContactBodies::clear(uint32_t slot_count) {
     body_of_slot_.assign(slot_count, UINT32_MAX);
     movable_ = 0;
     self_contact_ = 0;
+    asleep_ = 0;
 }
 
 void ContactBodies::add(const ContactBodyInput& in) {
@@ -15,6 +16,7 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.slot = in.slot;
     cb.identity = in.identity;
     cb.moves = in.type != BodyKind::static_body;
+    cb.asleep = in.asleep;
     cb.surface_nodes = in.surface->nodes.data();
     cb.surface_node_count = uint32_t(in.surface->nodes.size());
     cb.node_triangle_begin = in.surface->node_triangle_begin.data();
@@ -53,6 +55,7 @@ void ContactBodies::add(const ContactBodyInput& in) {
     body_of_slot_[in.slot] = uint32_t(bodies_.size());
     bodies_.push_back(cb);
     movable_ += dynamic;
+    asleep_ += in.asleep;
     self_contact_ += cb.self_contact;
 }
 

@@ -19,7 +19,8 @@ struct ContactBodyInput {
     uint64_t identity = 0;               // changes whenever the body's geometry does
     const TriangleBvh* static_bvh = nullptr;  // static bodies: the tree of their triangles
     const double* face_normals = nullptr;     // static bodies: their unit face normals
-    BodyKind type = BodyKind::static_body;
+    BodyKind type = BodyKind::static_body;  // a sleeping body's: static
+    bool asleep = false;
     const Surface* surface = nullptr;    // its boundary (triangles, slave candidates)
     const uint32_t* elements = nullptr;  // the tets (nodes_per_tet each), nullptr without
     uint32_t nodes_per_tet = 4;
@@ -57,11 +58,12 @@ public:
     // Contact has work to do: two bodies, one of them moved by forces, or a body that meets
     // itself.
     bool may_touch() const { return movable_ > 0 && (bodies_.size() > 1 || self_contact_ > 0); }
+    bool any_asleep() const { return asleep_ > 0; }
 
 private:
     std::vector<ContactBody> bodies_;
     std::vector<uint32_t> body_of_slot_;
-    uint32_t movable_ = 0, self_contact_ = 0;
+    uint32_t movable_ = 0, self_contact_ = 0, asleep_ = 0;
 };
 
 }  // namespace lfem

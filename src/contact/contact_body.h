@@ -28,6 +28,7 @@ struct ContactBody {
     uint64_t identity = 0;             // changes whenever the body's geometry does (cached
                                        // contact candidates are kept only while it holds)
     bool moves = true;                 // false for a static body: x never changes
+    bool asleep = false;               // a sleeping body, taking part as a static one
     const uint32_t* triangles = nullptr; // boundary triangles, 3 node indices each
     uint32_t triangle_count = 0;
     const uint32_t* nodes = nullptr;   // boundary nodes (the candidate slave nodes)

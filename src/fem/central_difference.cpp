@@ -14,10 +14,9 @@ struct SupportSums {
 
 }  // namespace
 
-void predict_positions(const NodeLoads& loads, double h_last, double h, const double* torque_center,
+void predict_positions(const NodeLoads& loads, double h_mid, double h, const double* torque_center,
                        Span<double> x, Span<double> v_half, StepStart& start, ThreadPool* pool) {
     const uint32_t n = loads.node_count();
-    const double h_mid = mid_step(h_last, h);
     const double alpha = loads.damping;
     start.x.resize(x.size());
     start.v.resize(v_half.size());

@@ -24,7 +24,9 @@ namespace lfem {
 enum class NodeMode : uint8_t { free = 0, fixed = 1, prescribed = 2 };
 
 // The time between the mid-points of the last step and this one, h_mid = (h_prev + h)/2; h/2
-// after a reset (no last step: the velocity-Verlet start).
+// after a reset (no last step: the velocity-Verlet start). The interval over which the step's
+// forces change the mid-step velocities (eq. 3), for deformable and rigid bodies alike; the
+// world computes it once per body and sub-step (world/pipeline.h) for everything that needs it.
 inline double mid_step(double h_last, double h) { return h_last > 0.0 ? 0.5 * (h_last + h) : 0.5 * h; }
 
 // What the integration reads of one body's nodes (fixed during the step).
@@ -54,10 +56,10 @@ struct StepStart {
     Vec3 support_torque = Vec3::Zero();  // N m: their torque about torque_center ("paper")
 };
 
-// Predictor: x* = x^n + h v^{n+1/2}, fixed nodes held, prescribed ones moved at their velocity;
-// records the step's start in `start`. With torque_center (the "paper" model's centre of mass
+// Predictor: x* = x^n + h v^{n+1/2} with v^{n+1/2} from eq. (3) over h_mid (mid_step), fixed
+// nodes held, prescribed ones moved at their velocity; records the step's start in `start`. With torque_center (the "paper" model's centre of mass
 // at x^n, nullable) the supports' torque about it as well. x, v_half: 3 per node.
-void predict_positions(const NodeLoads& loads, double h_last, double h, const double* torque_center,
+void predict_positions(const NodeLoads& loads, double h_mid, double h, const double* torque_center,
                        Span<double> x, Span<double> v_half, StepStart& start, ThreadPool* pool);
 
 // What the commit adds up over a body's nodes.

@@ -14,12 +14,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/error.h"
+#include "common/format.h"
 #include "mesh/mesh_check.h"
 #include "mesh/tet_geometry.h"
 
@@ -31,11 +31,7 @@ namespace {
 constexpr double kMaxTets = 50e6;
 constexpr double kPi = 3.14159265358979323846;
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", v);
-    return text;
-}
+std::string number(double v) { return format_number(v, 9); }
 
 [[noreturn]] void invalid(const std::string& what) { throw Error(Status::invalid_argument, what); }
 

@@ -5,11 +5,11 @@
 #include "mesh/mesh_check.h"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "common/error.h"
+#include "common/format.h"
 #include "common/quadratic_tet_nodes.h"
 #include "mesh/quadratic_mesh.h"
 #include "mesh/tet_geometry.h"
@@ -21,11 +21,7 @@ namespace {
     throw Error(Status::invalid_mesh, message);
 }
 
-std::string format_volume(double volume) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", volume);
-    return text;
-}
+std::string format_volume(double volume) { return format_number(volume, 3); }
 
 }  // namespace
 

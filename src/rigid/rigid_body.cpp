@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "fem/central_difference.h"
 
 namespace lfem {
 namespace {
@@ -60,9 +59,8 @@ Vec3 rigid_synchronized_velocity(const RigidBodyView& b, const GlobalMotion& m, 
     return L;
 }
 
-void predict_rigid(const RigidBodyView& b, const double g[3], double h_last, double h, GlobalMotion& m,
+void predict_rigid(const RigidBodyView& b, const double g[3], double h_mid, double h, GlobalMotion& m,
                    Span<double> x) {
-    const double h_mid = mid_step(h_last, h);
     Vec3 force, torque;
     applied_load(b, m, x, g, force, torque);
     // Newton for the centre, eq. (2) for the rotation: L <- L + h Q, omega = I_n^-1 L.

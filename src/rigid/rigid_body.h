@@ -22,8 +22,8 @@ struct RigidBodyView {
 Mat3 rigid_world_inertia(const RigidBodyView& body, const GlobalMotion& motion);
 
 // Predictor: gravity and node forces over the step (eq. 2 for L, Newton for the centre), then
-// the nodes placed rigidly at x* (3 per node). h_last: the last step's size (0 after a reset).
-void predict_rigid(const RigidBodyView& body, const double gravity[3], double h_last, double h,
+// the nodes placed rigidly at x* (3 per node); the forces act over h_mid (mid_step).
+void predict_rigid(const RigidBodyView& body, const double gravity[3], double h_mid, double h,
                    GlobalMotion& motion, Span<double> x);
 
 // Commit: the solve's corrections of the centre (dc, m) and of the rotation (dtheta, a

@@ -4,10 +4,10 @@
 // untouched.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "common/error.h"
+#include "common/format.h"
 #include "common/quadratic_tet_nodes.h"
 #include "fem/lumped_mass.h"
 #include "fem/quadratic_tet.h"
@@ -21,11 +21,7 @@
 namespace lfem {
 namespace {
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", v);
-    return text;
-}
+std::string number(double v) { return format_number(v, 3); }
 
 // A curved 10-node tet must not fold over: det J > 0, and not flat (the linear tets' test,
 // tet_geometry.h, with det J for 6 V), at each quadrature point and corner. The caller's

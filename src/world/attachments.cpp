@@ -124,7 +124,8 @@ void World::drop_attachments_of(uint32_t slot) {
 }
 
 void World::build_links(double fraction) {
-    links_.clear();
+    std::vector<LinkRecord>& links = pipeline_.links;
+    links.clear();
     for (const Attachment& a : state_.attachments.slots) {
         if (a.generation == 0) continue;
         const Pose p = target_pose(bodies_, a, fraction);
@@ -136,7 +137,7 @@ void World::build_links(double fraction) {
             l.body_b = rigid ? a.target : UINT32_MAX;
             const Vec3 target = p.center + R * Vec3(&a.offsets[3 * k]);
             for (int d = 0; d < 3; ++d) l.target[d] = target[d], l.lambda[d] = a.lambda[3 * k + d];
-            links_.push_back(l);
+            links.push_back(l);
         }
     }
 }
@@ -149,7 +150,7 @@ void World::take_link_forces(double h) {
         if (a.generation == 0) continue;
         Vec3 total = Vec3::Zero();
         for (std::size_t k = 0; k < a.nodes.size(); ++k, ++next) {
-            const LinkRecord& l = links_[next];
+            const LinkRecord& l = pipeline_.links[next];
             for (int d = 0; d < 3; ++d) a.lambda[3 * k + d] = l.lambda[d];
             total += Vec3(l.lambda);
         }
@@ -162,7 +163,7 @@ void World::take_link_forces(double h) {
             e.attachment = AttachmentHandle{i, a.generation};
             e.normal_impulse = total.norm() * h;
             e.max_force = total.norm();
-            broken_.push_back(e);
+            events_.add_broken(e);
             all.free_slots.push_back(i);
             a = Attachment{};
         }

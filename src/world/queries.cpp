@@ -37,34 +37,34 @@ private:
 }  // namespace
 
 void World::moved(ThreadPool* pool) {
-    revision_ += 1;
-    if (!pool || !queries_.in_use()) return;
+    queries_.revision += 1;
+    if (!pool || !queries_.scene.in_use()) return;
     try {
-        queries_.prepare(BodiesForQueries(bodies_), revision_, pool);
+        queries_.scene.prepare(BodiesForQueries(bodies_), queries_.revision, pool);
     } catch (...) {
         // Out of memory: the step rolls back, so the boxes made of its positions must not
         // count for any revision: the next query prepares everything again.
-        revision_ += 1;
+        queries_.revision += 1;
         throw;
     }
 }
 
 bool World::cast_ray(const QueryRay& ray, const QueryFilter& filter, RayHit& out) const {
     const BodiesForQueries view(bodies_);
-    queries_.prepare(view, revision_, nullptr);
-    return queries_.cast_ray(view, ray, filter, out);
+    queries_.scene.prepare(view, queries_.revision, nullptr);
+    return queries_.scene.cast_ray(view, ray, filter, out);
 }
 
 void World::cast_ray_all(const QueryRay& ray, const QueryFilter& filter, std::vector<RayHit>& out) const {
     const BodiesForQueries view(bodies_);
-    queries_.prepare(view, revision_, nullptr);
-    queries_.cast_ray_all(view, ray, filter, out);
+    queries_.scene.prepare(view, queries_.revision, nullptr);
+    queries_.scene.cast_ray_all(view, ray, filter, out);
 }
 
 void World::overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<uint32_t>& slots) const {
     const BodiesForQueries view(bodies_);
-    queries_.prepare(view, revision_, nullptr);
-    queries_.overlap_box(view, box, filter, slots);
+    queries_.scene.prepare(view, queries_.revision, nullptr);
+    queries_.scene.overlap_box(view, box, filter, slots);
 }
 
 }  // namespace lfem

@@ -22,10 +22,7 @@ void World::wake(uint32_t slot) {
     BodyState& s = bodies_.slot(slot).state;
     s.sleep_timer = 0.0;
     if (!s.asleep) return;
-    StepEvent e;
-    e.type = EventType::wake;
-    e.a = bodies_.handle_of(slot);
-    (in_call_ ? sleep_events_ : pending_events_).push_back(e);  // first: it may throw
+    events_.add_wake(bodies_.handle_of(slot));  // first: it may throw
     s.asleep = 0;
 }
 
@@ -40,7 +37,7 @@ void World::wake_touching(uint32_t slot) {
 // After a sub-step's solve: a sleeping body that an awake, moving body presses wakes (it takes
 // part from the next sub-step on; in this one it held like a static body).
 void World::wake_touched_sleepers() {
-    if (!stages_.any_asleep) return;  // no body fell asleep during a call: none to wake
+    if (!contact_.bodies().any_asleep()) return;  // no body fell asleep during a call: none to wake
     for (const ContactRecord& r : state_.contacts) {
         if (!r.active()) continue;
         const Body& a = bodies_.slot(r.body_a);
@@ -57,7 +54,7 @@ void World::wake_touched_sleepers() {
 void World::update_sleep(double dt) {
     if (!def_.enable_sleep) return;
     const uint32_t n = bodies_.slot_count();
-    sleep_events_.reserve(sleep_events_.size() + n);  // before any body changes
+    events_.reserve(n);  // before any body changes
     std::vector<uint32_t> parent(n);
     std::vector<uint8_t> keep_awake(n, 0);
     for (uint32_t i = 0; i < n; ++i) parent[i] = i;
@@ -107,10 +104,7 @@ void World::update_sleep(double dt) {
         if (b.is_rigid()) std::fill(std::begin(b.state.global.velocity), std::end(b.state.global.velocity), 0.0),
                           std::fill(std::begin(b.state.global.angular_momentum), std::end(b.state.global.angular_momentum), 0.0);
         b.state.asleep = 1;
-        StepEvent e;
-        e.type = EventType::sleep;
-        e.a = bodies_.handle_of(i);
-        sleep_events_.push_back(e);
+        events_.add_sleep(bodies_.handle_of(i));
     }
 }
 

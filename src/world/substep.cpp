@@ -29,23 +29,23 @@ namespace lfem {
 // to be worth handing out, while sixteen of them keep two threads busy. A lone small body also
 // runs on the pool (there is nothing to put beside it). Either way every loop has the same
 // fixed blocks, so the split changes the speed only, never a bit of the result.
-void World::plan_stages() {
-    StageLists& s = stages_;
+void World::plan_stages(double h) {
+    StageLists& s = pipeline_.stages;
     for (std::vector<uint32_t>* list : {&s.deformable, &s.rigid, &s.kinematic, &s.paper, &s.with_geometry,
                                         &s.on_pool, &s.side_by_side})
         list->clear();
-    scratch_.resize(bodies_.slot_count());
-    s.any_asleep = false;
+    pipeline_.bodies.resize(bodies_.slot_count());
+    pipeline_.h_mid.assign(bodies_.slot_count(), 0.0);
     uint64_t total = 0;
     for (uint32_t i = 0; i < bodies_.slot_count(); ++i) {
-        scratch_[i].tally = SubstepTally{};
-        scratch_[i].touched = false;
+        pipeline_.bodies[i].tally = SubstepTally{};
+        pipeline_.bodies[i].touched = false;
         const Body& b = bodies_.slot(i);
         if (!bodies_.live(i) || !b.has_geometry()) continue;
-        s.any_asleep = s.any_asleep || b.state.asleep;
         s.with_geometry.push_back(i);
         if (b.is_kinematic()) s.kinematic.push_back(i);
         if (!b.has_mesh() || b.state.asleep) continue;  // a sleeping body is not stepped
+        if (b.is_dynamic()) pipeline_.h_mid[i] = mid_step(b.state.h_last, h);
         if (b.is_rigid()) s.rigid.push_back(i);
         if (!b.is_deformable()) continue;
         s.deformable.push_back(i);
@@ -72,21 +72,21 @@ void World::plan_stages() {
 // none. Each call may write only that body's state and scratch.
 template <class Work>
 void World::for_each_deformable(const Work& work) {
-    for (uint32_t i : stages_.on_pool) work(i, stages_.pool);
-    parallel_for(stages_.pool, uint32_t(stages_.side_by_side.size()),
-                 [&](uint32_t k) { work(stages_.side_by_side[k], nullptr); });
+    for (uint32_t i : pipeline_.stages.on_pool) work(i, pipeline_.stages.pool);
+    parallel_for(pipeline_.stages.pool, uint32_t(pipeline_.stages.side_by_side.size()),
+                 [&](uint32_t k) { work(pipeline_.stages.side_by_side[k], nullptr); });
 }
 
 void World::predict(double h) {
-    PhaseTimer timer(profile_.predictor, stages_.deformable.size() + stages_.rigid.size());
-    for (uint32_t i : stages_.rigid) {
+    PhaseTimer timer(profile_.predictor, pipeline_.stages.deformable.size() + pipeline_.stages.rigid.size());
+    for (uint32_t i : pipeline_.stages.rigid) {
         Body& b = bodies_.slot(i);
-        StepScratch& sc = scratch_[i];
+        BodyScratch& sc = pipeline_.bodies[i];
         sc.x_start.assign(b.state.x.begin(), b.state.x.end());
         sc.center_start = Vec3(b.state.global.center);
         const RigidBodyView view = rigid_view(b);
-        const double h_mid = mid_step(b.state.h_last, h);
-        predict_rigid(view, def_.gravity, b.state.h_last, h, b.state.global, b.state.x);
+        const double h_mid = pipeline_.h_mid[i];
+        predict_rigid(view, def_.gravity, h_mid, h, b.state.global, b.state.x);
         sc.rigid = RigidResponse{};
         sc.rigid.center = Vec3(b.state.global.center);
         sc.rigid.inv_mass = h * h_mid / view.mass;
@@ -94,23 +94,23 @@ void World::predict(double h) {
     }
     for_each_deformable([&](uint32_t i, ThreadPool* pool) {
         Body& b = bodies_.slot(i);
-        StepScratch& sc = scratch_[i];
+        BodyScratch& sc = pipeline_.bodies[i];
         // "paper": the centre at the start of the step, about which eq. (2) takes its torque;
         // the commit and the rotation update use it too.
         sc.center_start = b.is_paper() ? center_of_mass(b.ref.mass.data(), b.state.x.data(), b.ref.node_count(), pool)
                                        : Vec3::Zero();
-        predict_positions(node_loads(b, def_.gravity), b.state.h_last, h, b.is_paper() ? sc.center_start.data() : nullptr,
+        predict_positions(node_loads(b, def_.gravity), pipeline_.h_mid[i], h, b.is_paper() ? sc.center_start.data() : nullptr,
                           b.state.x, b.state.v_half, sc.start, pool);
     });
 }
 
 void World::move_kinematic_bodies(double h) {
-    if (stages_.kinematic.empty()) return;
-    PhaseTimer timer(profile_.kinematic_motion, stages_.kinematic.size());
-    for (uint32_t i : stages_.kinematic) {
+    if (pipeline_.stages.kinematic.empty()) return;
+    PhaseTimer timer(profile_.kinematic_motion, pipeline_.stages.kinematic.size());
+    for (uint32_t i : pipeline_.stages.kinematic) {
         Body& b = bodies_.slot(i);
-        scratch_[i].x_start.assign(b.state.x.begin(), b.state.x.end());
-        scratch_[i].shape_pose_start.assign(b.state.shape_pose.begin(), b.state.shape_pose.end());
+        pipeline_.bodies[i].x_start.assign(b.state.x.begin(), b.state.x.end());
+        pipeline_.bodies[i].shape_pose_start.assign(b.state.shape_pose.begin(), b.state.shape_pose.end());
         move_kinematic(Vec3(b.def.linear_velocity), Vec3(b.def.angular_velocity), h, b.state.global.center,
                        b.state.global.rotation, b.state.x,
                        b.state.shape_pose);
@@ -120,15 +120,17 @@ void World::move_kinematic_bodies(double h) {
 // Detection between x^n and x*: every body with geometry takes part (contact decides what it
 // makes of each); pairs found again are warm-started from the last sub-step's list.
 void World::detect() {
-    contact_bodies_.clear(bodies_.slot_count());
-    for (uint32_t i : stages_.with_geometry) {
+    ContactBodies& bodies = contact_.bodies();
+    bodies.clear(bodies_.slot_count());
+    for (uint32_t i : pipeline_.stages.with_geometry) {
         Body& b = bodies_.slot(i);
-        StepScratch& sc = scratch_[i];
+        BodyScratch& sc = pipeline_.bodies[i];
         ContactBodyInput in;
         in.slot = i;
         // A sleeping body takes part as a static one (its slaves and its cached candidates
         // those of a static body: the identity says so).
         in.identity = b.geometry_identity() ^ (b.state.asleep ? uint64_t(1) << 31 : 0);
+        in.asleep = b.state.asleep != 0;
         in.static_bvh = b.is_static() ? &b.ref.bvh : nullptr;
         in.face_normals = b.is_static() && !b.ref.face_normals.empty() ? b.ref.face_normals.data() : nullptr;
         in.type = b.state.asleep ? BodyKind::static_body : b.def.type;
@@ -145,77 +147,45 @@ void World::detect() {
         in.friction = b.def.friction;
         in.category = b.def.category_bits;
         in.mask = b.def.mask_bits;
-        in.self_contact = b.def.self_contact != 0;
+        in.self_contact = b.def.self_contact;
         in.shapes = b.shapes.data();
         in.shape_count = uint32_t(b.shapes.size());
         in.shape_pose = b.state.shape_pose.data();
         in.shape_pose_start = sc.shape_pose_start.data();
-        contact_bodies_.add(in);
-    }
-    fallen_ = FallenIn{};
-    // Pairs among sleeping and static bodies are not detected again: they are kept as they
-    // were (and merged back after the solve), so a sleeping pile keeps its contacts.
-    frozen_.clear();
-    if (stages_.any_asleep) {
-        for (const ContactRecord& r : state_.contacts) {
-            const Body& a = bodies_.slot(r.body_a);
-            const Body& b = bodies_.slot(r.body_b);
-            const bool held_a = a.state.asleep || a.is_static(), held_b = b.state.asleep || b.is_static();
-            if (held_a && held_b && (a.state.asleep || b.state.asleep)) frozen_.push_back(r);
-        }
+        bodies.add(in);
     }
     WorldCounters& c = state_.counters;
-    c.solver_iterations = 0;
-    c.solver_residual = 0.0;
-    c.max_penetration = 0.0;
-    if (!contact_bodies_.may_touch()) {
-        detected_.clear();
-        detected_runs_.clear();
-        return;
-    }
-    // The list's deepest kept offset: taken by the last sub-step's pass over it after the solve
-    // (tally_contact_pairs), else (a call's first sub-step) here.
-    const double max_offset = kept_offset_known_ ? kept_offset_ : deepest_kept_offset(state_.contacts);
-    fallen_ = detect_node_triangle(contact_bodies_.bodies(), state_.contacts, max_offset, c.scan_overlaps, detection_,
-                                   detected_, detected_runs_, profile_, stages_.pool);
-    c.scan_overlaps = false;
+    const bool detects = bodies.may_touch();
+    pipeline_.fallen = contact_.detect(state_.contacts, c.scan_overlaps, profile_, pipeline_.stages.pool);
+    if (detects) c.scan_overlaps = false;
 }
 
-// The multipliers move the predicted positions to x^{n+1}. Every detected pair is kept, also
-// those at zero force: the next step warm-starts from all of them, so redundant pairs (a node of
-// each body pressing the other's face) keep the same split of the load from step to step
-// instead of trading it back and forth. Only pairs that carry force are contacts.
+// The multipliers move the predicted positions to x^{n+1} (the contact stage), with the
+// attachments' links; then what they leave: the links' forces to the attachments, the bodies
+// that touch, the events' tallies, and sleepers pressed by an awake body woken.
 void World::solve(double h) {
-    unconverged_ = false;
-    build_links(frame_fraction_);
-    pair_forces_.clear();
-    kept_offset_ = 0.0;
-    if (!detected_.empty() || !links_.empty()) {
-        const ContactSolveResult res =
-            solve_contact_multipliers(contact_bodies_.bodies(), contact_bodies_.body_of_slot(), detected_,
-                                      detected_runs_, links_,
-                                      def_.contact_iterations, def_.contact_tolerance, h, solve_scratch_, profile_,
-                                      pair_forces_, stages_.pool);
-        state_.counters.solver_iterations = res.iterations;
-        state_.counters.solver_residual = res.residual;
-        state_.counters.max_penetration = res.max_penetration;
-        unconverged_ = !res.converged;
-        kept_offset_ = res.deepest_kept_offset;
-    }
+    build_links(pipeline_.frame_fraction);
+    const ContactSettings settings{def_.contact_iterations, def_.contact_tolerance};
+    const ContactOutcome out =
+        contact_.solve(pipeline_.links, settings, h, state_.contacts, profile_, pipeline_.stages.pool);
+    WorldCounters& c = state_.counters;
+    c.solver_iterations = out.solve.iterations;
+    c.solver_residual = out.solve.residual;
+    c.max_penetration = out.solve.max_penetration;
+    pipeline_.unconverged = !out.solve.converged;
     take_link_forces(h);
-    if (frozen_.empty()) {
-        state_.contacts.swap(detected_);
-    } else {
-        auto order = [](const ContactRecord& x, const ContactRecord& y) {
-            return x.body_a != y.body_a ? x.body_a < y.body_a : x.node != y.node ? x.node < y.node : x.body_b < y.body_b;
-        };
-        state_.contacts.clear();
-        std::merge(detected_.begin(), detected_.end(), frozen_.begin(), frozen_.end(), std::back_inserter(state_.contacts),
-                   order);
-    }
-    tally_contact_pairs(h);  // marks the bodies that touch, completes kept_offset_
-    for (const LinkRecord& l : links_) scratch_[l.body_a].touched = true;  // holds contact forces too
+    mark_touching(out);
+    events_.tally(out.pair_forces, out.frozen, pipeline_.h_mid, h);
     wake_touched_sleepers();
+}
+
+// The bodies that touch this sub-step (for the commit's contact forces and for waking
+// sleepers): those of the pairs that carry force, and the bodies held by attachments.
+void World::mark_touching(const ContactOutcome& out) {
+    for (const BodyPairForce& f : out.pair_forces) pipeline_.bodies[f.slot_a].touched = pipeline_.bodies[f.slot_b].touched = true;
+    for (const ContactRecord& r : out.frozen)
+        if (r.active()) pipeline_.bodies[r.body_a].touched = pipeline_.bodies[r.body_b].touched = true;
+    for (const LinkRecord& l : pipeline_.links) pipeline_.bodies[l.body_a].touched = true;  // holds contact forces too
 }
 
 // The commit, the rotation update and the element forces each concern one body at a time:
@@ -226,7 +196,7 @@ void World::solve(double h) {
 // Each phase's share of that round's wall time is its share of the CPU time measured in it.
 void World::body_commit(uint32_t i, double h, ThreadPool* pool) {
     Body& b = bodies_.slot(i);
-    StepScratch& sc = scratch_[i];
+    BodyScratch& sc = pipeline_.bodies[i];
     if (sc.touched) b.state.contact_force.resize(3 * std::size_t(b.ref.node_count()));
     else std::vector<double>().swap(b.state.contact_force);  // nothing held while not touching
     const CommitSums sums =
@@ -243,7 +213,7 @@ void World::body_commit(uint32_t i, double h, ThreadPool* pool) {
 void World::body_rotation(uint32_t i, double h, ThreadPool* pool) {
     Body& b = bodies_.slot(i);
     if (!b.is_paper()) return;
-    StepScratch& sc = scratch_[i];
+    BodyScratch& sc = pipeline_.bodies[i];
     const double drift = update_global_rotation(b.ref.mass.data(), sc.start.x.data(), b.state.x.data(), b.ref.X.data(),
                                                 b.ref.node_count(), Vec3(b.ref.com), sc.center_start, sc.torque, h,
                                                 b.state.global, pool);
@@ -256,9 +226,9 @@ void World::body_forces(uint32_t i, ThreadPool* pool) {
 }
 
 void World::commit_rigid_bodies(double h) {
-    for (uint32_t i : stages_.rigid) {
+    for (uint32_t i : pipeline_.stages.rigid) {
         Body& b = bodies_.slot(i);
-        StepScratch& sc = scratch_[i];
+        BodyScratch& sc = pipeline_.bodies[i];
         const RigidBodyView view = rigid_view(b);
         sc.tally.contact_work += commit_rigid(view, h, sc.rigid.dc, sc.rigid.dtheta, b.state.global, b.state.x);
         b.state.h_last = h;
@@ -275,24 +245,24 @@ void World::commit_rigid_bodies(double h) {
 
 void World::commit_rotate_and_load(double h) {
     {
-        PhaseTimer timer(profile_.commit, stages_.deformable.size() + stages_.rigid.size());
+        PhaseTimer timer(profile_.commit, pipeline_.stages.deformable.size() + pipeline_.stages.rigid.size());
         commit_rigid_bodies(h);
-        for (uint32_t i : stages_.on_pool) body_commit(i, h, stages_.pool);
+        for (uint32_t i : pipeline_.stages.on_pool) body_commit(i, h, pipeline_.stages.pool);
     }
     {
-        PhaseTimer timer(profile_.global_rotation, stages_.paper.size(), !stages_.paper.empty());
-        for (uint32_t i : stages_.on_pool) body_rotation(i, h, stages_.pool);
+        PhaseTimer timer(profile_.global_rotation, pipeline_.stages.paper.size(), !pipeline_.stages.paper.empty());
+        for (uint32_t i : pipeline_.stages.on_pool) body_rotation(i, h, pipeline_.stages.pool);
     }
     {
-        PhaseTimer timer(profile_.internal_forces, stages_.deformable.size());
-        for (uint32_t i : stages_.on_pool) body_forces(i, stages_.pool);
+        PhaseTimer timer(profile_.internal_forces, pipeline_.stages.deformable.size());
+        for (uint32_t i : pipeline_.stages.on_pool) body_forces(i, pipeline_.stages.pool);
     }
-    const uint32_t n = uint32_t(stages_.side_by_side.size());
+    const uint32_t n = uint32_t(pipeline_.stages.side_by_side.size());
     if (n == 0) return;
     const auto round_start = std::chrono::steady_clock::now();
-    parallel_for(stages_.pool, n, [&](uint32_t k) {
-        const uint32_t i = stages_.side_by_side[k];
-        StepScratch& sc = scratch_[i];
+    parallel_for(pipeline_.stages.pool, n, [&](uint32_t k) {
+        const uint32_t i = pipeline_.stages.side_by_side[k];
+        BodyScratch& sc = pipeline_.bodies[i];
         const uint64_t t0 = ticks();
         body_commit(i, h, nullptr);
         const uint64_t t1 = ticks();
@@ -306,8 +276,8 @@ void World::commit_rotate_and_load(double h) {
         sc.phase_ticks[0] = t1 - t0, sc.phase_ticks[1] = t2 - t1, sc.phase_ticks[2] = t3 - t2;
     });
     double cpu[3] = {0, 0, 0};
-    for (uint32_t i : stages_.side_by_side)
-        for (int p = 0; p < 3; ++p) cpu[p] += double(scratch_[i].phase_ticks[p]);
+    for (uint32_t i : pipeline_.stages.side_by_side)
+        for (int p = 0; p < 3; ++p) cpu[p] += double(pipeline_.bodies[i].phase_ticks[p]);
     PhaseTime* phases[3] = {&profile_.commit, &profile_.global_rotation, &profile_.internal_forces};
     share_wall_time(seconds_since(round_start), cpu, phases, 3);
 }
@@ -317,7 +287,7 @@ void World::commit_rotate_and_load(double h) {
 // run side by side).
 void World::add_up_energy(double h, double& kinetic, double& strain, double& work) {
     SubstepTally tally;
-    for (const StepScratch& sc : scratch_) {
+    for (const BodyScratch& sc : pipeline_.bodies) {
         const SubstepTally& t = sc.tally;
         tally.kinetic += t.kinetic;
         tally.work += t.work;
@@ -325,7 +295,7 @@ void World::add_up_energy(double h, double& kinetic, double& strain, double& wor
         tally.damping += t.damping;
         tally.drift = std::max(tally.drift, t.drift);
     }
-    for (uint32_t i : stages_.deformable) strain += bodies_.slot(i).state.strain_energy;
+    for (uint32_t i : pipeline_.stages.deformable) strain += bodies_.slot(i).state.strain_energy;
     kinetic = tally.kinetic;
     work += tally.work + tally.contact_work;
     WorldCounters& c = state_.counters;
@@ -343,7 +313,7 @@ void World::add_up_energy(double h, double& kinetic, double& strain, double& wor
 void World::count_warnings(double h) {
     WorldCounters& c = state_.counters;
     Warnings& w = c.warnings;
-    for (uint32_t i : stages_.deformable) {
+    for (uint32_t i : pipeline_.stages.deformable) {
         BodyState& s = bodies_.slot(i).state;
         const uint32_t generation = bodies_.handle_of(i).generation;
         if (s.inverted_tets == 0) {
@@ -355,13 +325,14 @@ void World::count_warnings(double h) {
         const double before = c.time - h - s.inverted_since, now = c.time - s.inverted_since;
         if (before < kStaysInverted && now >= kStaysInverted) w.stays_inverted.note(1, c.time, i, generation);
     }
-    if (fallen_.nodes)
-        w.fallen_in.note(fallen_.nodes, c.time, fallen_.last_slot, bodies_.handle_of(fallen_.last_slot).generation);
-    if (unconverged_) w.unconverged.note(1, c.time, 0, 0);
+    const FallenIn& fallen = pipeline_.fallen;
+    if (fallen.nodes)
+        w.fallen_in.note(fallen.nodes, c.time, fallen.last_slot, bodies_.handle_of(fallen.last_slot).generation);
+    if (pipeline_.unconverged) w.unconverged.note(1, c.time, 0, 0);
 }
 
 void World::substep(double h, double& kinetic, double& strain, double& work) {
-    plan_stages();
+    plan_stages(h);
     profile_.substeps += 1;
     predict(h);
     move_kinematic_bodies(h);

@@ -10,7 +10,7 @@
 namespace lfem {
 
 void World::set_gravity(const double g[3]) {
-    pending_events_.reserve(pending_events_.size() + bodies_.slot_count());  // waking cannot fail below
+    events_.reserve(bodies_.slot_count());  // waking cannot fail below
     for (uint32_t i = 0; i < bodies_.slot_count(); ++i) wake(i);
     for (int k = 0; k < 3; ++k) def_.gravity[k] = g[k];
 }

@@ -1,43 +1,38 @@
-// The world: the bodies, the step pipeline and its statistics. This is the C++ object behind
-// the opaque lfem_world; only src/api talks to it from the outside, after validating every
-// argument and translating the caller's node numbering. Its jobs live in files of their own:
-// body_registry.* (slots and handles), add_mesh.cpp (mesh ingestion), loads_and_supports.cpp
-// (what the caller changes between steps), step.cpp (a call: sub-steps, roll-back, blow-up
-// test), substep.cpp (the pipeline of one sub-step), statistics.cpp (energies, momenta,
-// velocities).
+// The world: it keeps the bodies and runs the stages of a step in order. Each stage owns its
+// state: the contact stage (contact/contact_stage.h) what contact keeps between sub-steps, the
+// event log (event_log.h) what the events gather during a call, the pipeline (pipeline.h) the
+// sub-step's scratch; the world keeps what a roll-back restores (the bodies and WorldState).
+// Only src/api talks to it from the outside, after validating every argument and translating
+// the caller's node numbering. Its jobs live in files of their own: body_registry.* (slots and
+// handles), add_mesh.cpp (mesh ingestion), loads_and_supports.cpp (what the caller changes
+// between steps), attachments.cpp, sleep.cpp, step.cpp (a call: sub-steps, roll-back, blow-up
+// test), substep.cpp (the pipeline of one sub-step), statistics.cpp and body_reads.cpp (what
+// can be read), queries.cpp.
 #pragma once
 
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include "common/cpu_dispatch.h"
+#include "common/profile.h"
 #include "common/thread_pool.h"
-#include "contact/contact_bodies.h"
-#include "contact/detect_node_triangle.h"
-#include "contact/solve_contact_multipliers.h"
+#include "contact/contact_stage.h"
 #include "query/query_scene.h"
 #include "world/body.h"
-#include "contact/link_constraint.h"
 #include "world/body_registry.h"
+#include "world/definitions.h"
+#include "world/event_log.h"
+#include "world/pipeline.h"
 #include "world/world_state.h"
 
 namespace lfem {
 
 struct WorldImage;
+struct CallAttempt;  // step.cpp
 
 // The deformable tets below which a sub-step runs on the calling thread alone.
 constexpr uint64_t kPoolWork = 2048;
-
-// One event of a call (lfem_event), with the world's handles.
-struct StepEvent {
-    EventType type = EventType::contact_begin;
-    BodyHandle a{}, b{};
-    AttachmentHandle attachment{};
-    double normal_impulse = 0;  // N s
-    double max_force = 0;       // N
-};
 
 // How far (in boundary edges) two parts of a self-contact body may close in one sub-step of
 // the automatic step. Found by the bar-over-a-rod scene (tests/physics/test_self_contact.cpp):
@@ -56,12 +51,18 @@ struct WorldTotals {
     double min_jacobian = 1;    // their smallest volume ratio J at x
 };
 
+// A body's inversion as lfem_body_get_inversion reports it.
+struct Inversion {
+    uint32_t inverted_tets = 0;
+    double min_jacobian = 1;
+    double inverted_for = 0;  // s
+};
+
 class World {
 public:
     // Starts def.thread_count - 1 worker threads (joined by the destructor). The kernels'
     // instruction-set variant is chosen here, once for the process (common/cpu_dispatch.h).
-    explicit World(const WorldDef& def)
-        : def_(def), pool_(new ThreadPool(def.thread_count)) { cpu_level(); }
+    explicit World(const WorldDef& def) : def_(def), pool_(new ThreadPool(def.thread_count)) { cpu_level(); }
 
     const WorldDef& def() const { return def_; }
     void set_gravity(const double g[3]);
@@ -85,8 +86,8 @@ public:
     // Gives a static or kinematic body a rigid shape at the given placement (7 doubles);
     // returns its index on the body.
     uint32_t add_shape(BodyHandle body, const RigidShape& shape, const double pose[7]);
-    // Binds a render mesh (vertices in the body's rest frame, triangles checked by the caller)
-    // to the body's tets (see lfem_body_add_skin); returns its index on the body.
+    // Binds a render mesh (vertices in the body's rest frame, triangles as check_triangles
+    // wants them) to the body's tets (see lfem_body_add_skin); returns its index on the body.
     uint32_t add_skin(BodyHandle body, const double* positions, uint32_t vertex_count, const uint32_t* triangles,
                       uint32_t triangle_count);
 
@@ -102,7 +103,7 @@ public:
 
     // ---- attachments (attachments.cpp); node indices internal, checked by the caller
     AttachmentHandle create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,
-                                      const double frame[7], double break_force);
+                                       const double frame[7], double break_force);
     void destroy_attachment(AttachmentHandle attachment);
     bool is_valid(AttachmentHandle attachment) const;
     // Throws Error(Status::invalid_handle) for a bad handle.
@@ -116,8 +117,8 @@ public:
     }
     bool is_awake(const Body& b) const { return b.state.asleep == 0; }
 
-    // ---- events of the last call (events.cpp)
-    const std::vector<StepEvent>& events() const { return events_; }
+    // ---- events of the last call (event_log.h)
+    const std::vector<StepEvent>& events() const { return events_.events(); }
 
     // ---- stepping (step.cpp, substep.cpp)
     // Stable limit 2/omega_max over the deformable bodies, neo-Hookean ones at their current
@@ -130,11 +131,11 @@ public:
     double self_contact_step() const;
     // Advance by dt (see lfem_world_step; under the automatic step, retried with more
     // sub-steps when a body outruns its sub-step or blows up). Throws Error:
-    // LFEM_INVALID_ARGUMENT when refused up front, LFEM_UNSTABLE after rolling back to the
-    // state before the call.
+    // Status::invalid_argument when refused up front, Status::unstable after rolling back to
+    // the state before the call.
     void step(double dt);
 
-    // ---- what can be read (statistics.cpp)
+    // ---- what can be read (statistics.cpp, body_reads.cpp)
     WorldTotals totals() const;
     // Adds the kinetic energy of one moving body (synchronized velocities) to sum, node by node.
     void add_kinetic_energy(const Body& body, double& sum) const;
@@ -142,6 +143,15 @@ public:
     void body_momentum(const Body& body, Vec3& linear, Vec3& angular) const;
     // Synchronized velocities of a body at the current time, 3 per node.
     void synchronized_velocities(const Body& body, double* out) const;
+    // Per tet, in the body's internal order: the von Mises stress (Pa; 0 for a body that is not
+    // deformable).
+    void von_mises_stress(const Body& body, double* out) const;
+    // The body's rotation as a row-major matrix: its frame's for rigid, kinematic and "paper"
+    // bodies, the identity for the others.
+    void rotation_matrix(const Body& body, double out[9]) const;
+    Inversion inversion(const Body& body) const;
+    // The caller's indices (ascending) of the nodes inside the box [lo, hi] (bounds included).
+    std::vector<uint32_t> nodes_in_box(const Body& body, const double lo[3], const double hi[3]) const;
     const WorldCounters& counters() const { return state_.counters; }
     // Pairs found by the last sub-step, in a fixed order (body_a, node, body_b); those with
     // active() are the contacts.
@@ -150,7 +160,7 @@ public:
     const Profile& profile() const { return profile_; }
     void reset_profile() {
         profile_ = Profile{};
-        queries_.reset_counts();
+        queries_.scene.reset_counts();
     }
     void clear_warnings() { state_.counters.warnings = Warnings{}; }
 
@@ -160,8 +170,7 @@ public:
     bool cast_ray(const QueryRay& ray, const QueryFilter& filter, RayHit& out) const;
     void cast_ray_all(const QueryRay& ray, const QueryFilter& filter, std::vector<RayHit>& out) const;
     void overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<uint32_t>& slots) const;
-    const QueryCounts& query_counts() const { return queries_.counts(); }
-    void reset_query_counts() { queries_.reset_counts(); }
+    const QueryCounts& query_counts() const { return queries_.scene.counts(); }
 
     // ---- checkpoints (checkpoint.h)
     const WorldState& state() const { return state_; }
@@ -170,51 +179,29 @@ public:
     void restore(WorldImage&& image);
 
 private:
-    // What a sub-step adds to the world's energy bookkeeping (per body, then summed).
-    struct SubstepTally {
-        double kinetic = 0;       // J, of the new mid-step velocities
-        double work = 0;          // J, of gravity, node forces and supports over the step
-        double contact_work = 0;  // J, of the contact forces on moving nodes (<= 0 when passive)
-        double damping = 0;       // J, removed by damping over the step
-        double drift = 0;         // rad, eq. (2) rotation against the re-fitted one
+    class CallGuard;  // step.cpp
+    // The queries' cache and the revision of positions and geometry it was made for.
+    struct QueryCache {
+        uint64_t revision = 1;  // moved by every change of positions or geometry
+        QueryScene scene;
     };
-    // Per-slot arrays a sub-step needs beside the body state (not rolled back: rebuilt every
-    // sub-step).
-    struct StepScratch {
-        StepStart start;                       // deformable: x^n, v^{n-1/2}, 1/mhat, supports
-        std::vector<double> x_start;           // rigid and kinematic: x^n
-        std::vector<double> shape_pose_start;  // kinematic: the shapes' placements at the start
-        Vec3 center_start = Vec3::Zero();      // "paper": centre of mass at x^n; rigid: the centre
-        Vec3 torque = Vec3::Zero();            // "paper": torque of the step about center_start
-        RigidResponse rigid;                   // rigid: the contact solve's response
-        SubstepTally tally;
-        bool touched = false;                  // in contact this sub-step
-        uint64_t phase_ticks[3] = {0, 0, 0};   // side by side: its commit, rotation, forces (ticks())
-    };
-    // The bodies each stage concerns, in slot order, sorted once per sub-step.
-    struct StageLists {
-        std::vector<uint32_t> deformable, rigid, kinematic, paper, with_geometry;
-        // The deformable bodies again, by how their loops run: one after another with the pool
-        // for their own loops, or side by side on the pool, one body per task.
-        std::vector<uint32_t> on_pool, side_by_side;
-        ThreadPool* pool = nullptr;  // the sub-step's pool: none for a world too small to share
-        bool any_asleep = false;     // some body with geometry sleeps
-    };
-    struct Snapshot;
 
     // step.cpp: a call of lfem_world_step.
+    double step_limit() const;
     uint32_t substeps_for(double dt, double limit) const;
     double blow_up_energy_scale(double& start_energy);
+    CallAttempt run_substeps(uint32_t substeps, double h, double limit, double start_energy, double scale);
     void finish_call(double dt);
-    // substep.cpp: the pipeline of src/DESIGN.md section 1.
+    // substep.cpp: the pipeline of src/DESIGN.md section 2.
     void substep(double h, double& kinetic, double& strain, double& work);
-    void plan_stages();
+    void plan_stages(double h);
     template <class Work>
     void for_each_deformable(const Work& work);
     void predict(double h);
     void move_kinematic_bodies(double h);
     void detect();
     void solve(double h);
+    void mark_touching(const ContactOutcome& outcome);
     void commit_rotate_and_load(double h);  // commit, rotation update, element forces
     void commit_rigid_bodies(double h);
     void body_commit(uint32_t slot, double h, ThreadPool* pool);
@@ -237,48 +224,16 @@ private:
     void wake_touching(uint32_t slot);
     void wake_touched_sleepers();
     void update_sleep(double dt);
-    // events.cpp
-    void begin_call_events();
-    void tally_contact_pairs(double h);  // also marks the bodies that touch, completes kept_offset_
-    void finish_call_events();
 
     WorldDef def_;
     BodyRegistry bodies_;
-    WorldState state_;
+    WorldState state_;        // what a step changes beside the bodies (counters, contacts, ...)
     Profile profile_{};
-    // Sub-step scratch.
-    std::vector<StepScratch> scratch_;
-    StageLists stages_;
-    ContactBodies contact_bodies_;
-    std::vector<ContactRecord> detected_, frozen_;  // frozen_: pairs among sleeping bodies
-    std::vector<RecordRun> detected_runs_;          // detected_'s runs of one pair of bodies
-    FallenIn fallen_;           // by the sub-step's detection
-    bool unconverged_ = false;  // the sub-step's contact solve used every sweep
-    std::vector<LinkRecord> links_;  // the attachments' links of the sub-step
-    double frame_fraction_ = 1;      // how far through the call the sub-step ends
-    // Events: of the last call; gathered during the call (contact pairs' tallies, broken
-    // attachments, sleep and wake); wake events of calls between steps, for the next call.
-    struct PairTally {
-        double impulse = 0, max_force = 0;
-        double substep_force = 0;  // N, summed over the sub-step being tallied
-        uint64_t last_substep = 0;
-    };
-    std::vector<StepEvent> events_, broken_, sleep_events_, pending_events_;
-    std::unordered_map<uint64_t, PairTally> pair_tally_;
-    std::vector<PairTally*> substep_pairs_;  // the pairs met in the sub-step being tallied
-    uint64_t substep_serial_ = 0;
-    std::vector<BodyPairForce> pair_forces_;  // the sub-step's solve's, for the tally
-    // The contact list's deepest_kept_offset, from the solve and the frozen pairs after a
-    // sub-step; known only from there to the next sub-step of the same attempt of a call (the
-    // list changes between calls and on a retry).
-    double kept_offset_ = 0;
-    bool kept_offset_known_ = false;
-    bool in_call_ = false;
-    DetectionScratch detection_;
-    ContactSolveScratch solve_scratch_;
+    Pipeline pipeline_;       // the sub-step's scratch
+    ContactStage contact_;
+    EventLog events_;
     std::unique_ptr<ThreadPool> pool_;  // the step's parallel loops
-    uint64_t revision_ = 1;             // moved by every change of positions or geometry
-    mutable QueryScene queries_;        // the queries' cache (never read by a step)
+    mutable QueryCache queries_;        // never read by a step
 };
 
 }  // namespace lfem

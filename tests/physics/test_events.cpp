@@ -100,6 +100,54 @@ TEST(Events, ABouncingCubeBeginsAndEndsOneContactWithTheImpulseItsMomentumShows)
     EXPECT_GE(largest * dt * 2, impulse);  // the peak is at least the mean over the calls
 }
 
+// The same balance right after the caller resets a body's velocities: the cube, touching the
+// floor at rest (no gravity, no friction), is given 1 m/s into the floor by
+// lfem_body_set_velocities and bounces within the call. A reset starts the body's central
+// differences anew (its first interval is half a sub-step: velocity Verlet), so the first
+// sub-step's force, the largest of the impact (it stops the face at once), changes the
+// velocities over half a sub-step only. With gravity off and the internal forces summing to
+// zero, the floor's impulse is exactly the change of the cube's momentum.
+TEST(Events, AnImpactRightAfterSetVelocitiesReportsTheImpulseItsMomentumShows) {
+    lfem_world_def wd = lfem_world_def_default();
+    wd.gravity[2] = 0.0;
+    World w(wd);
+    Mesh floor, cube;
+    make_box_mesh(floor, 0.2, 0.2, 0.05, 2, 2, 1, -0.1, -0.1, -0.05);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    fd.friction = 0;
+    add_body(w, fd, floor);
+    make_box_mesh(cube, 0.02, 0.02, 0.02, 2, 2, 2, -0.01, -0.01, 0.0);
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 1e7;
+    d.friction = 0;
+    const lfem_body c = add_body(w, d, cube);
+    double mass = 0;
+    lfem_body_get_mass(w, c, &mass);
+    // A call at rest first, so that the world has stepped (and the cube has not moved).
+    ASSERT_EQ(lfem_world_step(w, 1e-3), LFEM_OK) << lfem_last_error();
+    std::vector<double> v(3 * cube.nodes(), 0.0);
+    for (uint32_t i = 0; i < cube.nodes(); ++i) v[3 * i + 2] = -1.0;
+    ASSERT_EQ(lfem_body_set_velocities(w, c, v.data(), cube.nodes()), LFEM_OK);
+    const double P_before = momentum_z(w, c);
+    ASSERT_EQ(lfem_world_step(w, 2e-3), LFEM_OK) << lfem_last_error();
+    double impulse = 0;
+    int begins = 0, ends = 0;
+    for (const lfem_event& e : events_of(w)) {
+        begins += e.type == LFEM_EVENT_CONTACT_BEGIN;
+        ends += e.type == LFEM_EVENT_CONTACT_END;
+        if (e.type == LFEM_EVENT_CONTACT_BEGIN) impulse = e.normal_impulse;
+    }
+    ASSERT_EQ(begins, 1);
+    ASSERT_EQ(ends, 1) << "the bounce outlasted the call";
+    const double expected = momentum_z(w, c) - P_before;
+    std::printf("impact after a reset: impulse %.9g N s against dP %.9g N s (m v = %.6g)\n", impulse, expected,
+                mass * 1.0);
+    // Round-off of the velocity sums only (1e-12 of m v); a first sub-step counted over a whole
+    // interval would add that sub-step's force times half a sub-step.
+    EXPECT_NEAR(impulse, expected, 1e-9 * mass);
+}
+
 // A cube resting on the floor: one begin, then no events while it rests, and an end when it is
 // lifted away (destroying a body ends its pairs silently).
 TEST(Events, ARestingContactBeginsOnceAndEndsWhenTheCubeLeaves) {
