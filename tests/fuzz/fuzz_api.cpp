@@ -573,6 +573,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
                 lfem_world* loaded = reinterpret_cast<lfem_world*>(&s);
                 const lfem_status lst = lfem_world_load(path, &loaded);
                 check(lst, "world_load(corrupted)");
+                note(s, "load of the changed file: status ", lst);
                 if (lst != LFEM_OK) {
                     expect(loaded == reinterpret_cast<lfem_world*>(&s), "a failed call wrote its output:", name);
                 } else {
