@@ -22,20 +22,6 @@ void require_vertex_capacity(const Skin& s, uint32_t capacity) {
                                                std::to_string(s.vertex_count()) + " vertices");
 }
 
-// Every triangle: three different vertices below vertex_count.
-void check_skin_triangles(const uint32_t* triangles, uint32_t triangle_count, uint32_t vertex_count) {
-    for (uint32_t t = 0; t < triangle_count; ++t) {
-        const uint32_t* f = &triangles[3 * std::size_t(t)];
-        for (int k = 0; k < 3; ++k)
-            if (f[k] >= vertex_count)
-                throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " has vertex index " +
-                                                   std::to_string(f[k]) + ", beyond the " +
-                                                   std::to_string(vertex_count) + " vertices");
-        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
-            throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " repeats a vertex");
-    }
-}
-
 // The deformed skin at the body's current positions (normals only when asked for).
 void deformed(const Body& b, const Skin& s, std::vector<double>& positions, std::vector<double>* normals) {
     deform_skin(s, b.state.x.data(), positions, normals);
@@ -56,7 +42,6 @@ LFEM_API lfem_status lfem_body_add_skin(lfem_world* world, lfem_body body, const
         require(vertex_count >= 1, "vertex_count must be >= 1");
         require(triangle_count >= 1, "triangle_count must be >= 1");
         require_finite(positions, 3 * std::size_t(vertex_count), "positions");
-        check_skin_triangles(triangles, triangle_count, vertex_count);
         const uint32_t index = w.add_skin(from_c(body), positions, vertex_count, triangles, triangle_count);
         if (skin_index) *skin_index = index;
     });

@@ -11,6 +11,7 @@
 
 #include "common/block_array.h"
 #include "fem/internal_forces.h"
+#include "fem/neo_hookean_tangent.h"
 
 namespace lfem {
 
@@ -46,6 +47,20 @@ inline ElasticResult elastic_result(const BlockResult& total) {
     out.min_jacobian = total.min_J < HUGE_VAL ? total.min_J : 1.0;  // (no tets: nothing crushed)
     out.stiffening = 1.0;
     return out;
+}
+
+// The stiffening rule of every element, for the stable step: how much stiffer the body's
+// stiffest tet (a 10-node tet's stiffest point) is than at rest, from the loop's largest
+// `tangent`. The neo-Hookean model (kTangent): its tangent over its value at rest, at least 1.
+// The others (kBarrier): 1 + the volume barrier's stiffness over Hooke's largest tangent
+// eigenvalue, which is the neo-Hookean's at rest (3 lambda + 2 mu). mu and lambda_mu = lambda +
+// mu are the neo-Hookean's parameters (neo_hookean_tangent.h).
+template <class Model>
+double stiffening(double tangent, double mu, double lambda_mu) {
+    const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, mu, lambda_mu);
+    if constexpr (Model::kTangent) return std::max(1.0, tangent / at_rest);
+    if constexpr (Model::kBarrier) return 1.0 + tangent / at_rest;
+    return 1.0;
 }
 
 }  // namespace lfem

@@ -320,16 +320,9 @@ ElasticResult elastic_forces(const ElementMesh& mesh, const ElasticState& state,
                              const Model& model) {
     const BlockResult r = element_loop<displacement_edges>(mesh, state.x.data(), state.force.data(), pool, model);
     ElasticResult out = elastic_result(r);
-    if constexpr (Model::kTangent) {
-        const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, model.mu, model.lam);
-        out.stiffening = std::max(1.0, r.tangent / at_rest);
-    } else if constexpr (Model::kBarrier) {
-        // The barrier's stiffness on top of Hooke's (whose largest tangent eigenvalue is that
-        // of the neo-Hookean at rest, 3 lambda + 2 mu): the stable step follows a crushed tet.
-        const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, model.lame.mu,
-                                                            model.lame.lambda + model.lame.mu);
-        out.stiffening = 1.0 + r.tangent / at_rest;
-    }
+    if constexpr (Model::kTangent) out.stiffening = stiffening<Model>(r.tangent, model.mu, model.lam);
+    else if constexpr (Model::kBarrier)
+        out.stiffening = stiffening<Model>(r.tangent, model.lame.mu, model.lame.lambda + model.lame.mu);
     return out;
 }
 

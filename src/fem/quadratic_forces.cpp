@@ -251,13 +251,8 @@ ElasticResult quadratic_forces(const ElementMesh& mesh, const ElasticState& stat
                                const Model& model) {
     const BlockResult r = quadratic_loop<displacement>(mesh, state.x.data(), state.force.data(), pool, model);
     ElasticResult out = elastic_result(r);
-    // As for linear tets (internal_forces.cpp): the neo-Hookean's tangent over its value at
-    // rest; the barrier's stiffness on top of Hooke's, whose largest tangent eigenvalue is that
-    // of the neo-Hookean at rest.
     const Lame& l = model.lame;
-    const double at_rest = neo_hookean_tangent_estimate(1, 0, 0, 0, 1, 0, 0, 0, 1, l.mu, l.lambda + l.mu);
-    if constexpr (Model::kTangent) out.stiffening = std::max(1.0, r.tangent / at_rest);
-    if constexpr (Model::kBarrier) out.stiffening = 1.0 + r.tangent / at_rest;
+    out.stiffening = stiffening<Model>(r.tangent, l.mu, l.lambda + l.mu);
     return out;
 }
 

@@ -1,15 +1,17 @@
 // check_tet_mesh: one pass over the tets (indices, repeated nodes, volume sign and size of the
 // corners) and one over the nodes (each used by some tet); for 10-node tets then the topology of
-// their mid-edge nodes. Stops at the first problem so the message can
-// name it exactly.
+// their mid-edge nodes. check_triangles: one pass over the triangles. Both stop at the first
+// problem so the message can name it exactly.
 #include "mesh/mesh_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "common/error.h"
 #include "common/format.h"
+#include "common/math.h"
 #include "common/quadratic_tet_nodes.h"
 #include "mesh/quadratic_mesh.h"
 #include "mesh/tet_geometry.h"
@@ -63,6 +65,24 @@ void check_tet_mesh(const double* positions, uint32_t node_count, const uint32_t
     for (uint32_t n = 0; n < node_count; ++n)
         if (!used[n]) invalid_mesh("node " + std::to_string(n) + " belongs to no tet");
     if (nodes_per_tet == kQuadraticTetNodes) check_quadratic_topology(tets, tet_count, node_count);
+}
+
+void check_triangles(const uint32_t* triangles, uint32_t triangle_count, uint32_t point_count,
+                     const double* positions, const char* point, const char* points) {
+    for (uint32_t t = 0; t < triangle_count; ++t) {
+        const uint32_t* f = &triangles[3 * std::size_t(t)];
+        const auto name = [t] { return "triangle " + std::to_string(t); };
+        for (int v = 0; v < 3; ++v)
+            if (f[v] >= point_count)
+                invalid_mesh(name() + " has " + point + " index " + std::to_string(f[v]) + ", beyond the " +
+                             std::to_string(point_count) + " " + points);
+        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) invalid_mesh(name() + " repeats a " + point);
+        if (!positions) continue;
+        const Vec3 a(&positions[3 * std::size_t(f[0])]), b(&positions[3 * std::size_t(f[1])]),
+            c(&positions[3 * std::size_t(f[2])]);
+        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        if (!((b - a).cross(c - a).norm() > 1e-12 * longest * longest)) invalid_mesh(name() + " has no area");
+    }
 }
 
 }  // namespace lfem

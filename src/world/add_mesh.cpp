@@ -266,20 +266,7 @@ void World::add_triangle_mesh(BodyHandle handle, const double* positions, uint32
     if (body.has_mesh()) throw Error(Status::invalid_argument, "the body already has a mesh");
     // Each triangle: indices in range, three different nodes, an area above 1e-12 of its
     // longest edge squared (the same round-off argument as for tets).
-    for (uint32_t t = 0; t < triangle_count; ++t) {
-        const uint32_t* f = &triangles[3 * t];
-        for (int v = 0; v < 3; ++v)
-            if (f[v] >= node_count)
-                throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " has node index " +
-                                                   std::to_string(f[v]) + ", beyond the " +
-                                                   std::to_string(node_count) + " nodes");
-        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
-            throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " repeats a node");
-        const Vec3 a(&positions[3 * f[0]]), b(&positions[3 * f[1]]), c(&positions[3 * f[2]]);
-        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-        if (!((b - a).cross(c - a).norm() > 1e-12 * longest * longest))
-            throw Error(Status::invalid_mesh, "triangle " + std::to_string(t) + " has no area");
-    }
+    check_triangles(triangles, triangle_count, node_count, positions, "node", "nodes");
     BodyReference ref;
     ref.X.assign(positions, positions + 3 * std::size_t(node_count));
     ref.surface.triangles.assign(triangles, triangles + 3 * std::size_t(triangle_count));

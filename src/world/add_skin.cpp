@@ -2,6 +2,7 @@
 // frame, to the internal node numbering, which later meshes added to the body leave as it is:
 // the binding stays valid. A skin is the body's data (checkpoints keep it) that no step reads.
 #include "common/error.h"
+#include "mesh/mesh_check.h"
 #include "world/world.h"
 
 namespace lfem {
@@ -9,6 +10,7 @@ namespace lfem {
 uint32_t World::add_skin(BodyHandle handle, const double* positions, uint32_t vertex_count,
                          const uint32_t* triangles, uint32_t triangle_count) {
     Body& body = bodies_.get(handle);
+    check_triangles(triangles, triangle_count, vertex_count, nullptr, "vertex", "vertices");  // (render triangles may be slivers)
     if (body.ref.tet_count() == 0)
         throw Error(Status::invalid_argument, "a skin is bound to tets: give the body a tet mesh first "
                                            "(lfem_body_add_mesh)");

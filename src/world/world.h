@@ -86,8 +86,8 @@ public:
     // Gives a static or kinematic body a rigid shape at the given placement (7 doubles);
     // returns its index on the body.
     uint32_t add_shape(BodyHandle body, const RigidShape& shape, const double pose[7]);
-    // Binds a render mesh (vertices in the body's rest frame, triangles as check_triangles
-    // wants them) to the body's tets (see lfem_body_add_skin); returns its index on the body.
+    // Binds a render mesh (vertices in the body's rest frame; its triangles checked as
+    // mesh/mesh_check.h says) to the body's tets (see lfem_body_add_skin); returns its index on the body.
     uint32_t add_skin(BodyHandle body, const double* positions, uint32_t vertex_count, const uint32_t* triangles,
                       uint32_t triangle_count);
 
