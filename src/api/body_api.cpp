@@ -83,12 +83,6 @@ lfem_status add_tet_mesh(const char* function, lfem_world* world, lfem_body body
     });
 }
 
-// The boundary as faces: 6-node triangles of a body of 10-node tets, else the triangles.
-const std::vector<uint32_t>& boundary_faces(const Body& b) {
-    return b.ref.nodes_per_tet == 10 ? b.ref.surface.quadratic_faces : b.ref.surface.triangles;
-}
-std::size_t face_nodes(const Body& b) { return b.ref.nodes_per_tet == 10 ? 6 : 3; }
-
 void require_deformable(const Body& b, const char* what) {
     require(b.is_deformable(), std::string(what) + " needs a deformable body");
 }
@@ -170,28 +164,28 @@ LFEM_API lfem_status lfem_body_add_triangle_mesh(lfem_world* world, lfem_body bo
 }
 
 LFEM_API lfem_status lfem_body_get_node_count(const lfem_world* world, lfem_body body, uint32_t* out) {
-    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.node_count(); });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.node_count(); });
 }
 
 LFEM_API lfem_status lfem_body_get_tet_count(const lfem_world* world, lfem_body body, uint32_t* out) {
-    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.tet_count(); });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.tet_count(); });
 }
 
 LFEM_API lfem_status lfem_body_get_nodes_per_tet(const lfem_world* world, lfem_body body, uint32_t* out) {
     return read_body(__func__, world, body, out,
-                     [](const Body& b) { return b.ref.tet_count() ? b.ref.nodes_per_tet : uint32_t(0); });
+                     [](const Body& b) { return b.tet_count() ? b.nodes_per_tet() : uint32_t(0); });
 }
 
 LFEM_API lfem_status lfem_body_get_user_data(const lfem_world* world, lfem_body body, void** out) {
-    return read_body(__func__, world, body, out, [](const Body& b) { return b.def.user_data; });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.user_data(); });
 }
 
 LFEM_API lfem_status lfem_body_get_mass(const lfem_world* world, lfem_body body, double* out) {
-    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.total_mass; });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.mass(); });
 }
 
 LFEM_API lfem_status lfem_body_get_added_mass(const lfem_world* world, lfem_body body, double* out) {
-    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.added_mass; });
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.added_mass(); });
 }
 
 LFEM_API lfem_status lfem_body_get_inversion(const lfem_world* world, lfem_body body, uint32_t* inverted_tets,
@@ -223,8 +217,8 @@ LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body 
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
-        require_capacity(node_capacity, b.ref.node_count(), "node");
-        b.ref.numbering.nodes_to_api(b.state.x.data(), b.ref.node_count(), out);
+        require_capacity(node_capacity, b.node_count(), "node");
+        b.numbering().nodes_to_api(b.positions(), b.node_count(), out);
     });
 }
 
@@ -234,10 +228,10 @@ LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body
         const World& w = world_of(world);
         const Body& b = w.body(from_c(body));
         require_pointer(out, "out");
-        require_capacity(node_capacity, b.ref.node_count(), "node");
-        std::vector<double> v(b.state.x.size());  // internal order
+        require_capacity(node_capacity, b.node_count(), "node");
+        std::vector<double> v(3 * std::size_t(b.node_count()));  // internal order
         w.synchronized_velocities(b, v.data());
-        b.ref.numbering.nodes_to_api(v.data(), b.ref.node_count(), out);
+        b.numbering().nodes_to_api(v.data(), b.node_count(), out);
     });
 }
 
@@ -248,19 +242,19 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
         const Body& b = w.body(from_c(body));
         require_deformable(b, "setting node velocities");
         require_pointer(velocities, "velocities");
-        require(node_count == b.ref.node_count(),
+        require(node_count == b.node_count(),
                 "node_count " + std::to_string(node_count) + " differs from the body's " +
-                    std::to_string(b.ref.node_count()));
+                    std::to_string(b.node_count()));
         require_finite(velocities, 3 * std::size_t(node_count), "velocities");
-        std::vector<double> v(b.state.x.size());  // internal order
-        b.ref.numbering.nodes_from_api(velocities, node_count, v.data());
+        std::vector<double> v(3 * std::size_t(b.node_count()));  // internal order
+        b.numbering().nodes_from_api(velocities, node_count, v.data());
         w.set_velocities(from_c(body), v.data());
     });
 }
 
 LFEM_API lfem_status lfem_body_get_boundary_triangle_count(const lfem_world* world, lfem_body body,
                                                            uint32_t* out) {
-    return read_body(__func__, world, body, out, [](const Body& b) { return b.ref.surface.triangle_count(); });
+    return read_body(__func__, world, body, out, [](const Body& b) { return uint32_t(b.boundary_triangles().size() / 3); });
 }
 
 LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, lfem_body body,
@@ -268,14 +262,14 @@ LFEM_API lfem_status lfem_body_get_boundary_triangles(const lfem_world* world, l
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
-        const std::vector<uint32_t>& triangles = b.ref.surface.triangles;
-        require_capacity(triangle_capacity, b.ref.surface.triangle_count(), "triangle");
-        for (std::size_t j = 0; j < triangles.size(); ++j) out[j] = b.ref.numbering.api_node(triangles[j]);
+        const std::vector<uint32_t>& triangles = b.boundary_triangles();
+        require_capacity(triangle_capacity, uint32_t(b.boundary_triangles().size() / 3), "triangle");
+        for (std::size_t j = 0; j < triangles.size(); ++j) out[j] = b.numbering().api_node(triangles[j]);
     });
 }
 
 LFEM_API lfem_status lfem_body_get_boundary_face_count(const lfem_world* world, lfem_body body, uint32_t* out) {
-    return read_body(__func__, world, body, out, [](const Body& b) { return uint32_t(boundary_faces(b).size() / face_nodes(b)); });
+    return read_body(__func__, world, body, out, [](const Body& b) { return uint32_t(b.boundary_faces().size() / b.nodes_per_face()); });
 }
 
 LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_body body, uint32_t* out,
@@ -283,9 +277,9 @@ LFEM_API lfem_status lfem_body_get_boundary_faces(const lfem_world* world, lfem_
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(from_c(body));
         require_pointer(out, "out");
-        const std::vector<uint32_t>& faces = boundary_faces(b);
-        require_capacity(face_capacity, uint32_t(faces.size() / face_nodes(b)), "face");
-        for (std::size_t j = 0; j < faces.size(); ++j) out[j] = b.ref.numbering.api_node(faces[j]);
+        const std::vector<uint32_t>& faces = b.boundary_faces();
+        require_capacity(face_capacity, uint32_t(faces.size() / b.nodes_per_face()), "face");
+        for (std::size_t j = 0; j < faces.size(); ++j) out[j] = b.numbering().api_node(faces[j]);
     });
 }
 
@@ -295,10 +289,10 @@ LFEM_API lfem_status lfem_body_get_von_mises_stress(const lfem_world* world, lfe
         const World& w = world_of(world);
         const Body& b = w.body(from_c(body));
         require_pointer(out, "out");
-        require_capacity(tet_capacity, b.ref.tet_count(), "tet");
-        std::vector<double> stress(b.ref.tet_count());  // all or nothing for out
+        require_capacity(tet_capacity, b.tet_count(), "tet");
+        std::vector<double> stress(b.tet_count());  // all or nothing for out
         w.von_mises_stress(b, stress.data());
-        b.ref.numbering.tets_to_api(stress.data(), b.ref.tet_count(), out);
+        b.numbering().tets_to_api(stress.data(), b.tet_count(), out);
     });
 }
 

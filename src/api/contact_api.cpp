@@ -18,17 +18,17 @@ lfem_contact contact_as_c(const World& w, const ContactRecord& c) {
     const Body& b = w.bodies().slot(c.body_b);
     out.body_a = to_c(w.bodies().handle_of(c.body_a));
     out.body_b = to_c(w.bodies().handle_of(c.body_b));
-    out.node = a.ref.numbering.api_node(c.node);
+    out.node = a.numbering().api_node(c.node);
     out.shape = c.shape;
     const double wt[3] = {1.0 - c.t1 - c.t2, c.t2, c.t1};
     for (int k = 0; k < 3; ++k) {
-        out.triangle[k] = c.shape != UINT32_MAX ? c.triangle[k] : b.ref.numbering.api_node(c.triangle[k]);
+        out.triangle[k] = c.shape != UINT32_MAX ? c.triangle[k] : b.numbering().api_node(c.triangle[k]);
         out.normal[k] = c.normal[k];
         out.force[k] = c.lambda_n * c.normal[k] + c.lambda_t[k];
         if (c.shape != UINT32_MAX)
             out.position[k] = c.point_end[k];
         else
-            for (int v = 0; v < 3; ++v) out.position[k] += wt[v] * b.state.x[3 * c.triangle[v] + k];
+            for (int v = 0; v < 3; ++v) out.position[k] += wt[v] * b.positions()[3 * std::size_t(c.triangle[v]) + k];
     }
     out.barycentric[0] = c.t1;
     out.barycentric[1] = c.t2;

@@ -24,7 +24,7 @@ void require_vertex_capacity(const Skin& s, uint32_t capacity) {
 
 // The deformed skin at the body's current positions (normals only when asked for).
 void deformed(const Body& b, const Skin& s, std::vector<double>& positions, std::vector<double>* normals) {
-    deform_skin(s, b.state.x.data(), positions, normals);
+    deform_skin(s, b.positions(), positions, normals);
 }
 
 }  // namespace

@@ -27,21 +27,21 @@ struct FrameArrays {
 };
 
 FrameArrays frame_arrays(const World& w, const Body& b) {
-    const Numbering& numbering = b.ref.numbering;
-    const uint32_t n = b.ref.node_count(), t = b.ref.tet_count();
+    const Numbering& numbering = b.numbering();
+    const uint32_t n = b.node_count(), t = b.tet_count();
     FrameArrays out;
-    std::vector<double> internal(b.state.x.size());
+    std::vector<double> internal(3 * std::size_t(n));
     w.synchronized_velocities(b, internal.data());
     out.velocities.resize(internal.size());
     numbering.nodes_to_api(internal.data(), n, out.velocities.data());
     out.positions.resize(internal.size());
-    numbering.nodes_to_api(b.state.x.data(), n, out.positions.data());
+    numbering.nodes_to_api(b.positions(), n, out.positions.data());
     std::vector<double> stress(t, 0.0);
     w.von_mises_stress(b, stress.data());
     out.stresses.resize(t);
     numbering.tets_to_api(stress.data(), t, out.stresses.data());
-    out.tets.resize(b.ref.tets.size());
-    numbering.tet_nodes_to_api(b.ref.tets.data(), t, b.ref.nodes_per_tet, out.tets.data());
+    out.tets.resize(b.tets().size());
+    numbering.tet_nodes_to_api(b.tets().data(), t, b.nodes_per_tet(), out.tets.data());
     return out;
 }
 
@@ -52,9 +52,9 @@ void write_frame(PvdSeries& series, const World& w) {
         if (!b.has_mesh()) return;
         arrays.push_back(frame_arrays(w, b));
         VtkPiece p;
-        p.node_count = b.ref.node_count();
-        p.tet_count = b.ref.tet_count();
-        p.nodes_per_tet = b.ref.nodes_per_tet;
+        p.node_count = b.node_count();
+        p.tet_count = b.tet_count();
+        p.nodes_per_tet = b.nodes_per_tet();
         p.body_index = index;
         pieces.push_back(p);
     });

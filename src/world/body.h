@@ -113,6 +113,24 @@ struct Body {
     bool has_geometry() const { return has_mesh() || !shapes.empty(); }
     // Changes whenever the geometry does: a new generation, a mesh or a shape added.
     uint64_t geometry_identity() const { return uint64_t(generation) << 32 | geometry_revision; }
+
+    // ---- what the shim reads of a body: plain values, in the body's internal numbering, which
+    // numbering() translates (anything computed is a World read, body_reads.cpp)
+    uint32_t node_count() const { return ref.node_count(); }
+    uint32_t tet_count() const { return ref.tet_count(); }
+    uint32_t nodes_per_tet() const { return ref.nodes_per_tet; }  // 4 or 10 (4 before any tet)
+    const Numbering& numbering() const { return ref.numbering; }
+    const double* positions() const { return state.x.data(); }  // 3 per node
+    const std::vector<uint32_t>& tets() const { return ref.tets; }
+    const std::vector<uint32_t>& boundary_triangles() const { return ref.surface.triangles; }
+    // The boundary as faces: the 6-node triangles of a body of 10-node tets, else the triangles.
+    const std::vector<uint32_t>& boundary_faces() const {
+        return ref.nodes_per_tet == 10 ? ref.surface.quadratic_faces : ref.surface.triangles;
+    }
+    uint32_t nodes_per_face() const { return ref.nodes_per_tet == 10 ? 6 : 3; }
+    double mass() const { return ref.total_mass; }
+    double added_mass() const { return ref.added_mass; }
+    void* user_data() const { return def.user_data; }
 };
 
 // The blocks of the parallel element loop of a body's tets (element_colouring.h): blocks of
