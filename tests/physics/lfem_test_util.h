@@ -136,6 +136,24 @@ inline void contact_force_on(lfem_world* w, lfem_body on, double out[3]) {
     }
 }
 
+// Sum of the contact forces (N) that body `from` puts on body `on`: contacts of a node of `on`
+// on a face or shape of `from` count their force, those of a node of `from` on a face of `on`
+// its opposite; contacts with any other body are left out.
+inline void contact_force_between(lfem_world* w, lfem_body on, lfem_body from, double out[3]) {
+    uint32_t count = 0;
+    lfem_world_query_contacts(w, nullptr, 0, &count);
+    std::vector<lfem_contact> c(count);
+    EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
+    auto same = [](lfem_body a, lfem_body b) { return a.index == b.index && a.generation == b.generation; };
+    out[0] = out[1] = out[2] = 0;
+    for (const lfem_contact& k : c) {
+        const double sign = same(k.body_a, on) && same(k.body_b, from) ? 1.0
+                            : same(k.body_a, from) && same(k.body_b, on) ? -1.0
+                                                                         : 0.0;
+        for (int d = 0; d < 3; ++d) out[d] += sign * k.force[d];
+    }
+}
+
 // Root mean square of a body's node speeds (m/s).
 inline double rms_velocity(lfem_world* w, lfem_body b) {
     const std::vector<double> v = velocities(w, b);
