@@ -211,12 +211,33 @@ bool in_range(E e, E first, E last) {
     return int32_t(e) >= int32_t(first) && int32_t(e) <= int32_t(last);
 }
 
+// A requirement on one body of the file: fails naming the file and the body's slot.
+struct BodyCheck {
+    const std::string& path;
+    std::string where;
+    void operator()(bool ok, const char* what) const {
+        if (!ok) fail(path, where + what);
+    }
+};
+
+// A body's skins against its n nodes and t tets.
+void check_skins(const Body& b, std::size_t n, std::size_t t, const BodyCheck& require) {
+    for (const Skin& sk : b.skins) {
+        const std::size_t per = sk.nodes_per_vertex;  // the tets' nodes: checked before dividing by it
+        require(per == b.ref.nodes_per_tet, "a skin of another kind of tet than its body's");
+        require(sk.weights.size() % per == 0 && sk.nodes.size() == sk.weights.size() && sk.triangles.size() % 3 == 0 &&
+                    sk.weights.size() / per <= UINT32_MAX && sk.triangles.size() / 3 <= UINT32_MAX,
+                "bad skin");
+        for (uint32_t i : sk.nodes) require(i < n, "skin node out of range");
+        for (uint32_t v : sk.triangles) require(v < sk.weights.size() / per, "skin vertex index out of range");
+        for (double w : sk.weights) require(std::isfinite(w), "a non-finite number");
+    }
+    require(b.skins.empty() || t > 0, "skins on a body without tets");
+}
+
 // Consistency of what a Reader produced: every size and index a step relies on.
 void check_body(const Body& b, const std::string& path, std::size_t slot) {
-    const std::string where = "body in slot " + std::to_string(slot) + ": ";
-    auto require = [&](bool ok, const char* what) {
-        if (!ok) fail(path, where + what);
-    };
+    const BodyCheck require{path, "body in slot " + std::to_string(slot) + ": "};
     const BodyReference& r = b.ref;
     const BodyState& s = b.state;
     require(in_range(b.def.type, BodyKind::deformable, BodyKind::rigid), "bad body type");
@@ -255,17 +276,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
         require(in_range(sh.type, ShapeType::plane, ShapeType::convex_hull) &&
                     sh.points.size() % 3 == 0,
                 "bad shape");
-    for (const Skin& sk : b.skins) {
-        const std::size_t per = sk.nodes_per_vertex;  // the tets' nodes: checked before dividing by it
-        require(per == r.nodes_per_tet, "a skin of another kind of tet than its body's");
-        require(sk.weights.size() % per == 0 && sk.nodes.size() == sk.weights.size() && sk.triangles.size() % 3 == 0 &&
-                    sk.weights.size() / per <= UINT32_MAX && sk.triangles.size() / 3 <= UINT32_MAX,
-                "bad skin");
-        for (uint32_t i : sk.nodes) require(i < n, "skin node out of range");
-        for (uint32_t v : sk.triangles) require(v < sk.weights.size() / per, "skin vertex index out of range");
-        for (double w : sk.weights) require(std::isfinite(w), "a non-finite number");
-    }
-    require(b.skins.empty() || t > 0, "skins on a body without tets");
+    check_skins(b, n, t, require);
     bool prescribed = false;
     for (NodeMode m : b.node_mode) prescribed = prescribed || m == NodeMode::prescribed;
     require(!prescribed || b.prescribed_velocity.size() == 3 * n, "prescribed nodes without velocities");
