@@ -405,7 +405,7 @@ LFEM_API lfem_shape_def lfem_shape_def_default(void);
 /** \addtogroup contacts Contacts
  * @{ */
 
-/** One active node-to-triangle contact of the last step (src/DESIGN.md section 3). The contact
+/** One active node-to-triangle contact of the last step (src/DESIGN.md section 5, eqs. 4 to 7). The contact
  * point on body_b's triangle (a, b, c) is (1 - t1 - t2) a + t2 b + t1 c with (t1, t2) =
  * barycentric. */
 typedef struct lfem_contact {

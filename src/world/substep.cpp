@@ -1,4 +1,4 @@
-// One sub-step, as the pipeline of src/DESIGN.md section 1:
+// One sub-step, as the pipeline of src/DESIGN.md section 2:
 //   predict          central difference (eqs. 1, 3) for the deformable bodies, Newton and
 //                    eq. (2) for the rigid ones: x* from the forces at x^n
 //   move kinematic   kinematic bodies to where their velocity takes them

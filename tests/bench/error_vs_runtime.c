@@ -1,4 +1,4 @@
-/* Error against run time (issue 4): runs the validation problems of src/DESIGN.md section 4 over
+/* Error against run time (issue 4): runs the validation problems of src/DESIGN.md section 11 over
  * mesh resolutions, step safety factors, material models and element kinds (4-node and 10-node
  * tets, issue 20), plus a Hertz impact of a Gmsh sphere on a rigid plane (hertz_scene.h), and
  * records for each run the errors against the closed forms and the wall time; then the same

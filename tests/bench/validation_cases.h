@@ -1,4 +1,4 @@
-/* The other validation problems of src/DESIGN.md section 4 as timed benchmark runs, each set up as
+/* The other validation problems of src/DESIGN.md section 11 as timed benchmark runs, each set up as
  * its test in tests/physics does it: a free spinning body (test_spinning_body.cpp), a
  * cantilever under gravity (test_cantilever.cpp) and a block sliding down an incline
  * (test_friction.cpp). Each returns its errors against the closed form and its wall time. */

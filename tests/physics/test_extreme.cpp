@@ -390,7 +390,7 @@ TEST(Extreme, MassRatio1e4BetweenCollidingBodies) {
 TEST(Extreme, GradedMeshWithElementSizesDifferingBy100) {
     // A 10 cm cube whose cells grow geometrically by 100^(1/5) = 2.51 from one corner: from
     // 0.6 mm to 6 cm along each axis. The stable limit follows the smallest cells (l / c_d within
-    // the 0.3 to 0.75 band of src/DESIGN.md section 6); the cube, small cells first, hits the block
+    // the 0.31 to 0.75 band of src/DESIGN.md section 9); the cube, small cells first, hits the block
     // at 2 m/s.
     std::vector<double> grid(7);
     double sum = 0;

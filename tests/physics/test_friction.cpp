@@ -72,7 +72,7 @@ TEST(Friction, BlockSlidesDownAThirtyDegreeInclineAtTheCoulombRate) {
 TEST(Friction, BlockSticksOnAThirtyDegreeInclineWhenMuExceedsTheTangent) {
     const double mu = 0.7;
     Incline s(mu, 30.0, 0.0);
-    // Load gently (src/DESIGN.md section 6): gravity ramps up over 0.3 s with damping on, so the
+    // Load gently (src/DESIGN.md section 9): gravity ramps up over 0.3 s with damping on, so the
     // normal force never rings; then it settles for 0.3 s.
     for (int i = 1; i <= 300; ++i) {
         s.set_gravity_scale(i / 300.0);

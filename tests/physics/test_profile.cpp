@@ -1,4 +1,4 @@
-// "Leave out what a scene does not need" (src/DESIGN.md section 2), shown by counts: the per-phase
+// "Leave out what a scene does not need" (src/DESIGN.md section 7), shown by counts: the per-phase
 // profile (lfem_world_get_profile) says which phases ran how often, and the bytes the library
 // holds are counted by replacing the global operator new in this program (its own executable,
 // like tests/robustness). Never wall-clock: only counts and byte totals are asserted.

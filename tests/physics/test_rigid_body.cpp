@@ -99,6 +99,6 @@ TEST(RigidBody, BoxDroppedOnASoftSlabExchangesMomentumWithoutPenetration) {
     }
     EXPECT_GT(Pb[2], Pb0[2] + 0.5 * scale);  // it was stopped, not passed through
     // The solve stops when a sweep corrects less than contact_tolerance (1e-3) times the
-    // step's relative motion (src/DESIGN.md section 6): at 2 m/s that is 2e-3 h.
+    // step's relative motion (src/DESIGN.md section 9): at 2 m/s that is 2e-3 h.
     EXPECT_LT(penetration, 1e-3 * 2.0 * h);
 }

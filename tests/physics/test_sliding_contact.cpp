@@ -95,7 +95,7 @@ Slide cube_over_ridge(lfem_model model, double young, double friction) {
 
 }  // namespace
 
-// Before the narrow phase kept such nodes held (src/DESIGN.md, "Which face holds a node"), 9 of
+// Before the narrow phase kept such nodes held (src/DESIGN.md section 6), 9 of
 // the 12 cases ended some call with nodes inside the other body: 1 to 5 of the ridge's in the
 // cube, or 2 or 3 of the cube's in the ridge. None was left inside at the end of the run.
 TEST(SlidingContact, ASoftCubeSlidingOverADeformableRidgeNeverEndsInsideIt) {

@@ -1,6 +1,6 @@
 // Two-bar impact, the paper's Fig. 3: steel bars of 0.254 m, sections 0.0254 x 0.0254 and
 // 0.0254 x 0.0224 m, approaching at 5.1359 m/s each across a gap of 2.54e-4 m. With nu = 0 the
-// 1-D wave solution is the limit of the 3-D model (src/DESIGN.md section 4):
+// 1-D wave solution is the limit of the 3-D model (src/DESIGN.md section 11):
 //   c = sqrt(E/rho) = 5134.85 m/s; contact from 24.73 us for 2L/c = 98.93 us;
 //   plateau F = Z1 Z2/(Z1 + Z2) * 2v = 125.08 kN (Z = rho c A); impulse 12.375 N s;
 //   final velocities -4.491 and +5.781 m/s.
@@ -131,7 +131,7 @@ TEST(TwoBarImpact, ImpulseErrorShrinksWithRefinement) {
 
 TEST(TwoBarImpact, PoissonRatioPointThreeStaysWithinTwoAndAHalfPercent) {
     // With nu = 0.3 lateral inertia makes the 3-D bar converge about 1.9 % below the 1-D
-    // impulse (src/DESIGN.md section 4); the bound is 2.5 %.
+    // impulse (src/DESIGN.md section 11); the bound is 2.5 %.
     const Impact r = run(40, 4, 0.3);
     EXPECT_NEAR(r.impulse_forces, 12.375, 0.025 * 12.375);
     EXPECT_LT(r.max_penetration, 1e-7);

@@ -31,7 +31,7 @@ int bench_scene_build_mesh(bench_scene* s) {
     memcpy(s->positions, lfem_mesh_get_positions(mesh), 3 * sizeof(double) * s->node_count);
     memcpy(s->tets, lfem_mesh_get_tets(mesh), 4 * sizeof(uint32_t) * s->tet_count);
     lfem_mesh_destroy(mesh);
-    /* Lumped masses as lfem computes them (src/DESIGN.md section 1): rho V_e / 4 to each corner,
+    /* Lumped masses as lfem computes them (src/DESIGN.md section 5): rho V_e / 4 to each corner,
      * so Bullet's nodes carry exactly the same mass. */
     for (e = 0; e < s->tet_count; ++e) {
         const uint32_t* t = s->tets + 4 * e;
