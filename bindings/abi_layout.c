@@ -41,7 +41,7 @@ CHECK_SIZE(lfem_phase_time, 16);
 CHECK_OFFSET(lfem_phase_time, seconds, 0);
 CHECK_OFFSET(lfem_phase_time, calls, 8);
 
-CHECK_SIZE(lfem_profile, 224);
+CHECK_SIZE(lfem_profile, 240);
 CHECK_OFFSET(lfem_profile, substeps, 0);
 CHECK_OFFSET(lfem_profile, internal_forces, 8);
 CHECK_OFFSET(lfem_profile, predictor, 24);
@@ -60,6 +60,8 @@ CHECK_OFFSET(lfem_profile, queries, 192);
 CHECK_OFFSET(lfem_profile, query_bodies, 200);
 CHECK_OFFSET(lfem_profile, query_primitives, 208);
 CHECK_OFFSET(lfem_profile, query_refits, 216);
+CHECK_OFFSET(lfem_profile, contact_sweeps, 224);
+CHECK_OFFSET(lfem_profile, constraint_updates, 232);
 
 CHECK_SIZE(lfem_world_stats, 184);
 CHECK_OFFSET(lfem_world_stats, time, 0);

@@ -31,7 +31,7 @@ extern "C" {
 #endif
 
 #define LFEM_VERSION_MAJOR 0 /**< this header's version; lfem_version() gives the library's */
-#define LFEM_VERSION_MINOR 1 /**< this header's minor version */
+#define LFEM_VERSION_MINOR 2 /**< this header's minor version */
 #define LFEM_VERSION_PATCH 0 /**< this header's patch version */
 
 /* ---------------------------------------------------------------------------------------- */
@@ -213,6 +213,13 @@ typedef struct lfem_profile {
                                              refitted for the queries: at most once per body
                                              between two steps, and only for bodies a query
                                              reaches */
+    uint64_t contact_sweeps;            /**< sweeps of the contact solve, its slowest group's
+                                             per sub-step, summed: over `substeps`, the mean
+                                             sweeps a sub-step needed (version 0.2) */
+    uint64_t constraint_updates;        /**< updates of one constraint in a sweep (a contact
+                                             pair's normal and friction, a held node), summed
+                                             over every group and sweep: the solve's time over
+                                             this is its cost per update (version 0.2) */
     /** @} */
 } lfem_profile;
 /** @} */

@@ -248,6 +248,8 @@ namespace Lfem
         public ulong QueryBodies;       // bodies a query reached (box met, filter passed)
         public ulong QueryPrimitives;   // triangles and shapes a query tested exactly
         public ulong QueryRefits;       // moving bodies' trees built or refitted for the queries
+        public ulong ContactSweeps;     // contact solve sweeps (slowest group per sub-step), summed
+        public ulong ConstraintUpdates; // updates of one constraint in a sweep, summed
     }
 
     /// <summary>A query's collision filter (lfem_query_filter), as the bodies' own: a body is
@@ -420,7 +422,7 @@ namespace Lfem
     /// <summary>Version and status names of the loaded library.</summary>
     public static class Library
     {
-        public const int VersionMajor = 0, VersionMinor = 1, VersionPatch = 0;
+        public const int VersionMajor = 0, VersionMinor = 2, VersionPatch = 0;
 
         /// <summary>(major &lt;&lt; 16) | (minor &lt;&lt; 8) | patch of the library loaded.</summary>
         public static uint Version { get { return Native.lfem_version(); } }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest bindings_outside_rust: rust/ (a program depending on lfem = "0.1") built and run with
+# ctest bindings_outside_rust: rust/ (a program depending on lfem = "0.2") built and run with
 # cargo outside the repository, against the installed lfem. The crates come as a registry would
 # give them: cargo package makes lfem-sys and lfem, and a local directory source stands in for
 # crates.io (nothing is downloaded). The build script finds the library through PKG_CONFIG_PATH;
@@ -26,8 +26,9 @@ for crate in lfem-sys lfem; do  # lfem-sys first: packaging lfem resolves it fro
   (cd "$tmp/crates" && "$cargo" package --offline --no-verify --allow-dirty -p "$crate" \
      --target-dir "$tmp/package-target") > "$tmp/package.log" 2>&1 ||
     { cat "$tmp/package.log"; die "cargo package -p $crate failed"; }
-  tar -xzf "$tmp/package-target/package/$crate-0.1.0.crate" -C "$tmp/registry"
-  mv "$tmp/registry/$crate-0.1.0" "$tmp/registry/$crate"
+  version=$(sed -n 's/^version = "\(.*\)"/\1/p' "$tmp/crates/$crate/Cargo.toml" | head -n 1)
+  tar -xzf "$tmp/package-target/package/$crate-$version.crate" -C "$tmp/registry"
+  mv "$tmp/registry/$crate-$version" "$tmp/registry/$crate"
   echo '{"files":{},"package":null}' > "$tmp/registry/$crate/.cargo-checksum.json"
 done
 

@@ -94,6 +94,8 @@ lfem_profile to_c(const Profile& p) {
     c.global_rotation = to_c(p.global_rotation);
     c.commit = to_c(p.commit);
     c.candidate_searches = p.candidate_searches;
+    c.contact_sweeps = p.contact_sweeps;
+    c.constraint_updates = p.constraint_updates;
     return c;
 }
 

@@ -24,6 +24,8 @@ struct Profile {
     uint64_t shape_tests = 0, ccd_queries = 0;  // point queries of shapes; of those, by libccd
     PhaseTime normal_solve, friction, global_rotation, commit;
     uint64_t candidate_searches = 0;  // contact's searches for candidate faces
+    uint64_t contact_sweeps = 0;      // the slowest group's sweeps per sub-step, summed
+    uint64_t constraint_updates = 0;  // one constraint updated in one sweep, summed
 };
 
 // Adds the time from construction to destruction to `phase`, and `calls` to its count.

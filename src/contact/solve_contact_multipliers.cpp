@@ -120,6 +120,7 @@ struct GroupResult {
     double tolerance = 0;   // its stopping tolerance (stopping_tolerance)
     double deepest_kept_offset = 0;  // of its records
     uint32_t pair_forces = 0;  // how many BodyPairForces it left in its range of the scratch
+    uint64_t updates = 0;      // constraint updates: its pairs and links times its sweeps
 };
 
 // A group's links: links[order[0 .. count)] with their pairs.
@@ -202,6 +203,7 @@ void solve_group(std::vector<ContactRecord>& records, Pair* pairs, const uint32_
         }
         result.iterations = sweep + 1;
         result.residual = largest;
+        out.updates += count + held.count;
         if (largest <= tolerance) break;
     }
     for (uint32_t k = 0; k < count; ++k) {
@@ -472,6 +474,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         result.max_penetration = std::max(result.max_penetration, g.solve.max_penetration);
         result.deepest_kept_offset = std::max(result.deepest_kept_offset, g.deepest_kept_offset);
         all_ticks += g.ticks;
+        profile.constraint_updates += g.updates;
         friction_ticks += g.friction_ticks;
         any_friction = any_friction || g.friction;
     }
@@ -480,6 +483,7 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     share_wall_time(seconds_since(solve_start), cpu, phases, 2);
     profile.friction.calls += any_friction;
     profile.normal_solve.calls += 1;
+    profile.contact_sweeps += result.iterations;
     return result;
 }
 

@@ -2,7 +2,9 @@
  * per frame. Each scene settles for `settle` seconds, then `frames` frames are timed (wall
  * clock around the step calls only): ms per frame (mean and worst), sub-steps per frame,
  * tet-steps per second, and where the time goes (lfem_world_get_profile over the timed frames,
- * as shares of the stepping time). Every scene runs on 1 and on 2 threads, each in a child
+ * as shares of the stepping time); the contact solve's mean sweeps per sub-step (its slowest
+ * group's), constraint updates per sub-step and their cost (ns per update: the solve's time over
+ * them), and after the timed frames the RMS speed of every node and the active contacts. Every scene runs on 1 and on 2 threads, each in a child
  * process of its own (fork), so no run inherits another's caches; with `repeats` > 1 the
  * fastest run of each is kept (other load only ever slows a run down).
  *
@@ -34,6 +36,16 @@
  *                   box-mesh floor, settled, sleeping off
  *   pile50_asleep   the same with sleeping on: settled, the pile is asleep (issue 17's target:
  *                   under 5 % of its awake cost; the ratio is printed)
+ * Soft bodies resting on each other (issue 34), cubes of 10 cm, 3^3 cells, E 1e5 Pa, nu 0.45,
+ * rho 1100, damping 5, friction 0.5 on the 4 x 4 box-mesh floor, sleeping off:
+ *   pile48_landing  48 cubes dropped in three layers of 4 x 4 (1 cm apart), each layer 12 cm
+ *                   above the last and shifted by (2.5, 1.5) cm: timed from 0.25 to 1.25 s
+ *   pile48_rest     the same, timed from 3 to 4 s (at rest, about 800 contacts)
+ *   pyramid15       a pyramid of 5 layers, 5 cubes to 1, each cube on two below, 1 mm apart
+ *   column10        10 cubes stacked 1 mm apart (the longest chain for the solve)
+ *   wall40          a wall of 40 bricks of 20 x 10 x 10 cm (6 x 3 x 3 cells) in 5 courses of 8,
+ *                   each course shifted by half a brick
+ * Their settling and timed frames are the scene's own unless --settle or --frames are given.
  * Timings are only meaningful as ratios within one run on an otherwise quiet machine. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -47,6 +59,8 @@
 #include "lfem.h"
 
 enum floor_kind { FLOOR_BOX4, FLOOR_BOX64, FLOOR_PLANE, FLOOR_TRI2, FLOOR_TERRAIN, FLOOR_NONE };
+/* How the bodies are placed: on a grid (stacked `layers` high, 1 mm apart), or one of the piles. */
+enum layout { GRID, PILE48, PYRAMID, COLUMN, WALL };
 
 typedef struct scene {
     const char* name;
@@ -59,28 +73,38 @@ typedef struct scene {
     int sleep;        /* lfem_world_def.enable_sleep */
     double damping;   /* 0 = 5 */
     double edge;      /* m, 0 = 0.1 */
+    enum layout layout;
+    double settle;    /* s before the timed frames, 0 = --settle's (default 1) */
+    int frames;       /* timed frames, 0 = --frames' (default 60) */
 } scene;
 
 static const scene kScenes[] = {
-    {"cubes32_box4", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 0, 0},
-    {"cubes32_box64", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX64, 0, 0, 0, 0},
-    {"cubes32_plane", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0, 0},
-    {"cubes8_tri2", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0, 0},
-    {"cubes8_terrain", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TERRAIN, 0, 0, 0, 0},
-    {"cubes8_stiff", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0, 0},
-    {"cubes8_plane", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0, 0},
-    {"cubes16_bullet", 16, 4, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0, 0},
-    {"cube1_bullet", 1, 1, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0, 0},
-    {"cubes100_apart", 100, 10, 3, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_NONE, 0, 0, 0, 0},
-    {"cube_one_big", 1, 1, 15, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_NONE, 0, 0, 0, 0.5},
-    {"pile50_awake", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 0, 20, 0},
-    {"pile50_asleep", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 1, 20, 0},
+    {"cubes32_box4", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes32_box64", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_BOX64, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes32_plane", 32, 8, 3, 1e5, 0.45, 0.4, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes8_tri2", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes8_terrain", 8, 4, 6, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TERRAIN, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes8_stiff", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_TRI2, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes8_plane", 8, 4, 6, 1e6, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_PLANE, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes16_bullet", 16, 4, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0, 0, GRID, 0, 0},
+    {"cube1_bullet", 1, 1, 3, 1e5, 0.3, 0.5, LFEM_MODEL_NEO_HOOKEAN, FLOOR_PLANE, 0, 0, 0, 0, GRID, 0, 0},
+    {"cubes100_apart", 100, 10, 3, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_NONE, 0, 0, 0, 0, GRID, 0, 0},
+    {"cube_one_big", 1, 1, 15, 1e5, 0.45, 0.5, LFEM_MODEL_PAPER, FLOOR_NONE, 0, 0, 0, 0.5, GRID, 0, 0},
+    {"pile50_awake", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 0, 20, 0, GRID, 0, 0},
+    {"pile50_asleep", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 1, 20, 0, GRID, 0, 0},
+    {"pile48_landing", 48, 4, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, PILE48, 0.25, 60},
+    {"pile48_rest", 48, 4, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, PILE48, 3.0, 60},
+    {"pyramid15", 15, 5, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, PYRAMID, 2.0, 60},
+    {"column10", 10, 1, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, COLUMN, 2.0, 60},
+    {"wall40", 40, 8, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, WALL, 2.0, 60},
 };
 
 typedef struct result {
     int ok;
     double seconds, worst_frame;  /* wall time of the timed frames, of the slowest one */
     double substeps, tets;
+    double rms_speed;             /* m/s, of every node of the scene after the timed frames */
+    uint32_t contacts;            /* active contacts after the timed frames */
     lfem_profile profile;
 } result;
 
@@ -136,14 +160,50 @@ fail:
     return -1;
 }
 
-/* The scene's floor and its cubes of 10 cm edge on a grid `spacing` apart, 1 mm above the
- * floor (3 mm above the terrain, whose waves reach 2 mm). */
-static int build(lfem_world* w, const scene* sc, double* tets) {
+/* Where body c of the scene goes: the corner of its box (offset, m), its size and cells. On a
+ * grid, bodies `spacing` apart, 1 mm above the floor (3 mm above the terrain, whose waves reach
+ * 2 mm); the piles as the list at the top says. */
+static void place(const scene* sc, int c, double offset[3], double size[3], uint32_t cells[3]) {
+    const double edge = sc->edge > 0 ? sc->edge : 0.1;
+    for (int k = 0; k < 3; ++k) size[k] = edge, cells[k] = sc->cells;
+    const int per_row = sc->per_row;
+    if (sc->layout == GRID) {
+        const int layers = sc->layers > 0 ? sc->layers : 1, places = sc->cubes / layers;
+        const int spot = c % places, layer = c / places;
+        offset[0] = sc->spacing * (spot % per_row - 0.5 * (per_row - 1)) - 0.5 * edge;
+        offset[1] = sc->spacing * (spot / per_row - 0.5 * ((places - 1) / per_row)) - 0.5 * edge;
+        offset[2] = (sc->floor == FLOOR_TERRAIN ? 0.003 : 0.001) + layer * (edge + 0.001);
+    } else if (sc->layout == PILE48) {  /* layers of per_row x per_row, 1 cm apart */
+        const int per_layer = per_row * per_row, layer = c / per_layer, spot = c % per_layer;
+        const double pitch = edge + 0.01;
+        offset[0] = pitch * (spot % per_row - 0.5 * (per_row - 1)) - 0.5 * edge + 0.025 * layer;
+        offset[1] = pitch * (spot / per_row - 0.5 * (per_row - 1)) - 0.5 * edge + 0.015 * layer;
+        offset[2] = 0.001 + 0.12 * layer;
+    } else if (sc->layout == PYRAMID) {  /* per_row at the bottom, one fewer each layer up */
+        int layer = 0, first = 0;
+        while (c >= first + per_row - layer) first += per_row - layer, ++layer;
+        const int n = per_row - layer, i = c - first;
+        const double pitch = edge + 0.005;
+        offset[0] = pitch * (i - 0.5 * (n - 1)) - 0.5 * edge;
+        offset[1] = -0.5 * edge;
+        offset[2] = 0.001 + layer * (edge + 0.001);
+    } else if (sc->layout == COLUMN) {
+        offset[0] = offset[1] = -0.5 * edge;
+        offset[2] = 0.001 + c * (edge + 0.001);
+    } else {  /* WALL: courses of per_row bricks twice as long as high, shifted by half a brick */
+        const int course = c / per_row, i = c % per_row;
+        size[0] = 2 * edge;
+        cells[0] = 2 * sc->cells;
+        offset[0] = (2 * edge + 0.001) * (i - 0.5 * per_row) + (course % 2 ? 0.5 * edge : 0.0);
+        offset[1] = -0.5 * edge;
+        offset[2] = 0.001 + course * (edge + 0.001);
+    }
+}
+
+/* The scene's floor and its bodies (their handles into bodies[sc->cubes]). */
+static int build(lfem_world* w, const scene* sc, double* tets, lfem_body* bodies) {
     lfem_mesh* m = NULL;
     if (add_floor(w, sc->floor) != 0) return -1;
-    const double edge = sc->edge > 0 ? sc->edge : 0.1, size[3] = {edge, edge, edge};
-    const uint32_t cells[3] = {sc->cells, sc->cells, sc->cells};
-    const int per_row = sc->per_row, layers = sc->layers > 0 ? sc->layers : 1, places = sc->cubes / layers;
     *tets = 0;
     for (int c = 0; c < sc->cubes; ++c) {
         lfem_body_def d = lfem_body_def_default();
@@ -152,10 +212,10 @@ static int build(lfem_world* w, const scene* sc, double* tets) {
         d.poisson_ratio = sc->poisson;
         d.damping = sc->damping > 0 ? sc->damping : 5.0;
         d.friction = 0.5;
-        const int place = c % places, layer = c / places;
-        const double ground = (sc->floor == FLOOR_TERRAIN ? 0.003 : 0.001) + layer * (edge + 0.001);
-        const double offset[3] = {sc->spacing * (place % per_row - 0.5 * (per_row - 1)) - 0.5 * edge,
-                                  sc->spacing * (place / per_row - 0.5 * ((places - 1) / per_row)) - 0.5 * edge, ground};
+        if (sc->layout != GRID) d.density = 1100;
+        double offset[3], size[3];
+        uint32_t cells[3];
+        place(sc, c, offset, size, cells);
         lfem_body b;
         BENCH_TRY(lfem_mesh_create_box(size, cells, &m));
         BENCH_TRY(lfem_mesh_translate(m, offset));
@@ -163,6 +223,7 @@ static int build(lfem_world* w, const scene* sc, double* tets) {
         BENCH_TRY(lfem_body_add_mesh(w, b, lfem_mesh_get_positions(m), lfem_mesh_get_node_count(m),
                                      lfem_mesh_get_tets(m), lfem_mesh_get_tet_count(m)));
         *tets += lfem_mesh_get_tet_count(m);
+        bodies[c] = b;
         lfem_mesh_destroy(m);
         m = NULL;
     }
@@ -172,14 +233,40 @@ fail:
     return -1;
 }
 
+/* The RMS speed of every node of the scene's bodies (m/s) and the active contacts. */
+static int rms_speed(lfem_world* w, const lfem_body* bodies, int count, double* rms, uint32_t* contacts) {
+    lfem_world_stats st;
+    BENCH_TRY(lfem_world_get_stats(w, &st));
+    *contacts = st.contact_count;
+    double sum = 0;
+    uint64_t nodes = 0;
+    for (int i = 0; i < count; ++i) {
+        uint32_t n = 0;
+        BENCH_TRY(lfem_body_get_node_count(w, bodies[i], &n));
+        double* v = malloc(sizeof(double) * 3 * (n + 1));
+        if (!v || lfem_body_get_velocities(w, bodies[i], v, n) != LFEM_OK) {
+            free(v);
+            return -1;
+        }
+        for (uint32_t k = 0; k < 3 * n; ++k) sum += v[k] * v[k];
+        nodes += n;
+        free(v);
+    }
+    *rms = nodes ? sqrt(sum / nodes) : 0.0;
+    return 0;
+fail:
+    return -1;
+}
+
 static void run_scene(const scene* sc, uint32_t threads, int frames, double settle, result* out) {
     lfem_world_def wd = lfem_world_def_default();
     wd.thread_count = threads;
     wd.enable_sleep = (uint8_t)sc->sleep;
     if (sc->floor == FLOOR_NONE) wd.gravity[2] = 0.0;
     lfem_world* w = NULL;
+    lfem_body* bodies = malloc(sizeof(lfem_body) * (size_t)sc->cubes);
     memset(out, 0, sizeof *out);
-    if (lfem_world_create(&wd, &w) != LFEM_OK || build(w, sc, &out->tets) != 0) goto fail;
+    if (!bodies || lfem_world_create(&wd, &w) != LFEM_OK || build(w, sc, &out->tets, bodies) != 0) goto fail;
     const double frame = 1.0 / 60.0;
     for (int f = 0; f * frame < settle; ++f) BENCH_TRY(lfem_world_step(w, frame));
     BENCH_TRY(lfem_world_reset_profile(w));
@@ -194,10 +281,12 @@ static void run_scene(const scene* sc, uint32_t threads, int frames, double sett
     }
     BENCH_TRY(lfem_world_get_stats(w, &after));
     BENCH_TRY(lfem_world_get_profile(w, &out->profile));
+    if (rms_speed(w, bodies, sc->cubes, &out->rms_speed, &out->contacts) != 0) goto fail;
     out->substeps = (double)(after.steps - before.steps);
     out->ok = 1;
 fail:
     lfem_world_destroy(w);
+    free(bodies);
 }
 
 /* The contact-free reference: tet-steps per second of a floating, spinning cube. */
@@ -262,11 +351,17 @@ static result fastest_in_child(int repeats, void (*work)(const void*, uint32_t, 
     return best;
 }
 
-static int g_frames = 60;
+static int g_frames = 60, g_frames_given = 0;
 static double g_settle = 1.0;
+static int g_settle_given = 0;
+
+/* The scene's own settling and timed frames, unless the command line gave them. */
+static int frames_of(const scene* sc) { return sc->frames > 0 && !g_frames_given ? sc->frames : g_frames; }
+static double settle_of(const scene* sc) { return sc->settle > 0 && !g_settle_given ? sc->settle : g_settle; }
 
 static void scene_work(const void* arg, uint32_t threads, result* out) {
-    run_scene((const scene*)arg, threads, g_frames, g_settle, out);
+    const scene* sc = (const scene*)arg;
+    run_scene(sc, threads, frames_of(sc), settle_of(sc), out);
 }
 
 static void reference_work(const void* arg, uint32_t threads, result* out) {
@@ -280,8 +375,8 @@ int main(int argc, char** argv) {
     const char* only = NULL;
     uint32_t reference_cells = 0, only_threads = 0;
     for (int i = 1; i < argc; ++i) {
-        if (!strcmp(argv[i], "--frames") && i + 1 < argc) g_frames = atoi(argv[++i]);
-        else if (!strcmp(argv[i], "--settle") && i + 1 < argc) g_settle = atof(argv[++i]);
+        if (!strcmp(argv[i], "--frames") && i + 1 < argc) g_frames = atoi(argv[++i]), g_frames_given = 1;
+        else if (!strcmp(argv[i], "--settle") && i + 1 < argc) g_settle = atof(argv[++i]), g_settle_given = 1;
         else if (!strcmp(argv[i], "--repeats") && i + 1 < argc) repeats = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!strcmp(argv[i], "--reference") && i + 1 < argc) reference_cells = (uint32_t)atoi(argv[++i]);
@@ -292,8 +387,8 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    printf("lfem %s, 60 Hz frames: %d timed after %.2f s of settling, fastest of %d run(s)\n", lfem_version_string(),
-           g_frames, g_settle, repeats);
+    printf("lfem %s, 60 Hz frames: %d timed after %.2f s of settling (the piles: their own), fastest of %d run(s)\n",
+           lfem_version_string(), g_frames, g_settle, repeats);
     double reference[3] = {0, 0, 0};
     if (reference_cells) {
         for (uint32_t threads = 1; threads <= 2; ++threads) {
@@ -304,8 +399,9 @@ int main(int argc, char** argv) {
                    1e-6 * reference[threads]);
         }
     }
-    printf("%-15s %3s %6s %8s %8s %9s %8s %8s | %6s %6s %6s %6s %6s %6s %6s | %s\n", "scene", "thr", "tets", "ms/frame",
-           "worst", "sub/frame", "searches", "Mtet-s/s", "forces", "pred", "broad", "narrow", "shapes", "solve", "commit",
+    printf("%-15s %3s %6s %8s %8s %9s %8s %8s | %6s %6s %6s %6s %6s %6s %6s | %6s %7s %6s %8s %5s | %s\n", "scene",
+           "thr", "tets", "ms/frame", "worst", "sub/frame", "searches", "Mtet-s/s", "forces", "pred", "broad", "narrow",
+           "shapes", "solve", "commit", "sweeps", "upd/sub", "ns/upd", "rms m/s", "cont",
            "detect/forces, x reference");
     int failed = 0;
     double awake_ms[3] = {0, 0, 0}, small_rate[3] = {0, 0, 0};
@@ -325,14 +421,20 @@ int main(int argc, char** argv) {
             const double total = r.seconds;
             const double detect = p->broad_phase.seconds + p->narrow_phase.seconds + p->shape_queries.seconds;
             const double rate = r.tets * r.substeps / r.seconds;
-            ms_by_threads[threads] = 1e3 * r.seconds / g_frames;
+            const int frames = frames_of(sc);
+            const double solve_s = p->normal_solve.seconds + p->friction.seconds;
+            ms_by_threads[threads] = 1e3 * r.seconds / frames;
             rate_by_threads[threads] = rate;
-            printf("%-15s %3u %6.0f %8.2f %8.2f %9.1f %8llu %8.2f | %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f | %.2f",
-                   sc->name, threads, r.tets, ms_by_threads[threads], 1e3 * r.worst_frame, r.substeps / g_frames,
+            printf("%-15s %3u %6.0f %8.2f %8.2f %9.1f %8llu %8.2f | %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f | %6.1f %7.0f "
+                   "%6.0f %8.1e %5u | %.2f",
+                   sc->name, threads, r.tets, ms_by_threads[threads], 1e3 * r.worst_frame, r.substeps / frames,
                    (unsigned long long)p->candidate_searches, 1e-6 * rate,
                    share(&p->internal_forces, total), share(&p->predictor, total), share(&p->broad_phase, total),
                    share(&p->narrow_phase, total), share(&p->shape_queries, total),
                    share(&p->normal_solve, total) + share(&p->friction, total), share(&p->commit, total),
+                   r.substeps > 0 ? (double)p->contact_sweeps / r.substeps : 0.0,
+                   r.substeps > 0 ? (double)p->constraint_updates / r.substeps : 0.0,
+                   p->constraint_updates ? 1e9 * solve_s / (double)p->constraint_updates : 0.0, r.rms_speed, r.contacts,
                    p->internal_forces.seconds > 0 ? detect / p->internal_forces.seconds : 0.0);
             if (reference[threads] > 0) printf(", %.2f", rate / reference[threads]);
             printf("\n");

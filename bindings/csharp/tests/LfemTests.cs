@@ -98,11 +98,11 @@ public static class LfemTests
                            "RotationDrift", 152, "AddedMass", 160, "InvertedTets", 168, "MinJacobian", 176);
         Layout<Warning>(24, "Count", 0, "LastTime", 8, "LastBody", 16);
         Layout<PhaseTime>(16, "Seconds", 0, "Calls", 8);
-        Layout<Profile>(224, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
+        Layout<Profile>(240, "Substeps", 0, "InternalForces", 8, "Predictor", 24, "KinematicMotion", 40,
                         "BroadPhase", 56, "NarrowPhase", 72, "ShapeQueries", 88, "ShapeTests", 104, "CcdQueries", 112,
                         "NormalSolve", 120, "Friction", 136, "GlobalRotation", 152, "Commit", 168,
                         "CandidateSearches", 184, "Queries", 192, "QueryBodies", 200, "QueryPrimitives", 208,
-                        "QueryRefits", 216);
+                        "QueryRefits", 216, "ContactSweeps", 224, "ConstraintUpdates", 232);
         Layout<QueryFilter>(8, "CategoryBits", 0, "MaskBits", 4);
         Layout<RayHit>(88, "Body", 0, "Triangle", 8, "Shape", 12, "Barycentric1", 16, "Barycentric2", 24, "Point", 32,
                        "Normal", 56, "Distance", 80);

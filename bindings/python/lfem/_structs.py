@@ -273,6 +273,8 @@ class Profile(ctypes.Structure):
         ("query_bodies", ctypes.c_uint64),      # bodies a query reached (box met, filter passed)
         ("query_primitives", ctypes.c_uint64),  # triangles and shapes a query tested exactly
         ("query_refits", ctypes.c_uint64),      # moving bodies' trees built or refitted for queries
+        ("contact_sweeps", ctypes.c_uint64),    # contact solve sweeps (slowest group per sub-step)
+        ("constraint_updates", ctypes.c_uint64),  # updates of one constraint in a sweep, summed
     ]
 
 

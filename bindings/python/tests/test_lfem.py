@@ -62,12 +62,13 @@ class Layout(unittest.TestCase):
             "solver_residual": 136, "max_penetration": 144, "rotation_drift": 152,
             "added_mass": 160, "inverted_tets": 168, "min_jacobian": 176})
         self.check(lfem.PhaseTime, 16, {"seconds": 0, "calls": 8})
-        self.check(lfem.Profile, 224, {
+        self.check(lfem.Profile, 240, {
             "substeps": 0, "internal_forces": 8, "predictor": 24, "kinematic_motion": 40,
             "broad_phase": 56, "narrow_phase": 72, "shape_queries": 88, "shape_tests": 104,
             "ccd_queries": 112, "normal_solve": 120, "friction": 136, "global_rotation": 152,
             "commit": 168, "candidate_searches": 184, "queries": 192, "query_bodies": 200,
-            "query_primitives": 208, "query_refits": 216})
+            "query_primitives": 208, "query_refits": 216, "contact_sweeps": 224,
+            "constraint_updates": 232})
         self.check(lfem.QueryFilter, 8, {"category_bits": 0, "mask_bits": 4})
         self.check(lfem.RayHit, 88, {
             "body": 0, "triangle": 8, "shape": 12, "barycentric": 16, "point": 32, "normal": 56,

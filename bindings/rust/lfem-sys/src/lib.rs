@@ -11,7 +11,7 @@ use std::mem::size_of;
 use std::os::raw::{c_char, c_double, c_int, c_void};
 
 pub const LFEM_VERSION_MAJOR: u32 = 0;
-pub const LFEM_VERSION_MINOR: u32 = 1;
+pub const LFEM_VERSION_MINOR: u32 = 2;
 pub const LFEM_VERSION_PATCH: u32 = 0;
 
 // ---- enums: 32-bit integers in C; kept as integers here (an unknown value is not UB) ---------
@@ -255,6 +255,10 @@ pub struct lfem_profile {
     pub query_primitives: u64,
     /// Trees of moving bodies' triangles built or refitted for the queries.
     pub query_refits: u64,
+    /// Sweeps of the contact solve (its slowest group's per sub-step), summed.
+    pub contact_sweeps: u64,
+    /// Updates of one constraint in a sweep, summed over every group and sweep.
+    pub constraint_updates: u64,
 }
 
 /// A body handle: a value, `{0, 0}` is the null handle.
@@ -360,7 +364,7 @@ const _: () = assert!(size_of::<lfem_warning_kind>() == 4);
 const _: () = assert!(size_of::<lfem_warning>() == 24);
 const _: () = assert!(size_of::<lfem_contact>() == 128);
 const _: () = assert!(size_of::<lfem_phase_time>() == 16);
-const _: () = assert!(size_of::<lfem_profile>() == 224);
+const _: () = assert!(size_of::<lfem_profile>() == 240);
 const _: () = assert!(size_of::<lfem_query_filter>() == 8);
 const _: () = assert!(size_of::<lfem_ray_hit>() == 88);
 #[cfg(target_pointer_width = "64")]

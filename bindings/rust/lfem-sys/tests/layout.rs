@@ -24,7 +24,7 @@ fn sizes_match_c() {
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
     assert_eq!(size_of::<lfem_phase_time>(), 16);
-    assert_eq!(size_of::<lfem_profile>(), 224);
+    assert_eq!(size_of::<lfem_profile>(), 240);
     assert_eq!(size_of::<lfem_query_filter>(), 8);
     assert_eq!(size_of::<lfem_ray_hit>(), 88);
     assert_eq!(align_of::<lfem_world_def>(), 8);
@@ -81,6 +81,8 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_profile, query_bodies), 200);
     assert_eq!(offset!(lfem_profile, query_primitives), 208);
     assert_eq!(offset!(lfem_profile, query_refits), 216);
+    assert_eq!(offset!(lfem_profile, contact_sweeps), 224);
+    assert_eq!(offset!(lfem_profile, constraint_updates), 232);
 
     assert_eq!(offset!(lfem_query_filter, mask_bits), 4);
     assert_eq!(offset!(lfem_ray_hit, triangle), 8);
