@@ -48,6 +48,7 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.mask = in.mask;
     cb.self_contact = in.self_contact && in.type == BodyKind::deformable && cb.triangle_count > 0;
     cb.edge_length = in.surface->edge_length;
+    cb.load_motion = in.load_motion;
     cb.shapes = in.shapes;
     cb.shape_count = in.shape_count;
     cb.shape_pose = in.shape_pose;

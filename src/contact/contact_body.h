@@ -57,6 +57,8 @@ struct ContactBody {
     uint32_t category = 1, mask = ~0u; // collision filter
     bool self_contact = false;         // its boundary nodes meet its own triangles too
     double edge_length = 0;            // mean boundary edge length (m): sets the tolerances
+    double load_motion = 0;            // m: how far gravity and the node forces move a free node of
+                                       // the body in one sub-step (h h_mid a); 0 if it is not stepped
     const RigidShape* shapes = nullptr; // rigid shapes (static and kinematic bodies)
     uint32_t shape_count = 0;
     const double* shape_pose = nullptr;       // 7 per shape, end of the step

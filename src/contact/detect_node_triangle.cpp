@@ -116,7 +116,7 @@ const ContactRecord* same_face(const NarrowInput& in, const ContactBody& b, cons
     const ContactRecord* end = in.previous.data() + in.previous.size();
     for (const ContactRecord* r = last;
          r < end && r->body_a == last->body_a && r->node == last->node && r->body_b == last->body_b; ++r)
-        if (r->triangle[0] == tri[0] && r->triangle[1] == tri[1] && r->triangle[2] == tri[2]) return r;
+        if (same_triangle(r->triangle, tri)) return r;
     return last;
 }
 

@@ -257,9 +257,17 @@ Outside test_node_triangle(const ContactBody& a, uint32_t p, const NodeNormal& n
     }
     NodeCandidate& best = slots.best;
     const bool is_inside = slot == slots.inside;
+    // The held face counts kHeldFaceMargin better than it is against a face in its plane (within
+    // a degree): another face must beat it by more to take the node (detection_tolerances.h).
+    double favour = 0.0;
+    if (held && slot == &best && best.found && n.dot(best.normal) > kHeldFaceCos) {
+        if (same_triangle(tri, held)) favour = kHeldFaceMargin * l;
+        else if (best.shape == UINT32_MAX && same_triangle(&b.triangles[3 * std::size_t(best.triangle)], held))
+            favour = -kHeldFaceMargin * l;
+    }
     // A face no better than the best so far matters only as the second face of a valley
     // (keep_records): one turned from the best's by more than the valley angle.
-    const bool second_only = slot == &best && best.found && gap <= best.gap;
+    const bool second_only = slot == &best && best.found && gap + favour <= best.gap;
     // A face no better than what its slot holds is not taken. Where its point lies outside the
     // triangle, that is noted all the same, so that the narrow phase skips the face until the
     // point could reach it (still_outside in detect_node_triangle.cpp): otherwise the faces
@@ -372,6 +380,14 @@ ContactRecord make_record(const ContactBody& a, uint32_t p, const ContactBody& b
     // eq. (6): weights (1 - t1 - t2, t2, t1) on (a, b, c); a shape point: none
     r.t2 = c.shape == UINT32_MAX ? c.w[1] : 0.0;
     r.t1 = c.shape == UINT32_MAX ? c.w[2] : 0.0;
+    // A node that stuck to this face at the last step stays at the same point of it (the
+    // material point it stuck to: its weights), not at its new projection. The projection
+    // follows the node where the predictor moved it; taken anew every step, the point a node
+    // 'sticks' to crept by the predictor's relative tangential motion each step (h^2 times the
+    // tangential acceleration friction holds back), and stacked soft cubes rang at 1e-3 m/s.
+    if (c.shape == UINT32_MAX && last && same_triangle(last->triangle, r.triangle) && last->active() &&
+        !last->sliding && last->offset <= 0.0)
+        r.t1 = last->t1, r.t2 = last->t2;
     // A node that starts the step inside is let out gradually (target gap < 0): by 20 % of
     // the overlap per step, but never faster than 1e-3 of an edge per step while the overlap is
     // one of bodies as they were added (`gentle`: they separate slowly instead of jumping

@@ -23,6 +23,9 @@ inline bool shares_node(const uint32_t* u, const uint32_t* v) {
     return false;
 }
 
+// Are u and v the same triangle (the same three nodes, in the same order)?
+inline bool same_triangle(const uint32_t* u, const uint32_t* v) { return u[0] == v[0] && u[1] == v[1] && u[2] == v[2]; }
+
 // The best face (or rigid shape) of another body found so far for one slave node.
 struct NodeCandidate {
     bool found = false;

@@ -41,7 +41,7 @@ struct BodyPairForce {
 
 struct ContactSolveResult {
     uint32_t iterations = 0;
-    double residual = 0;         // m, largest correction made by the last sweep
+    double residual = 0;         // m, the largest change of a pair's gap or slip in the last sweep
     double max_penetration = 0;  // m, deepest remaining penetration (beyond kept offsets)
     bool converged = true;       // every group ended within its tolerance
     double deepest_kept_offset = 0;  // m, of the records as the solve left them (ContactRecord::kept_offset)
@@ -51,11 +51,12 @@ struct ContactSolveResult {
 // records' runs of one pair of bodies (detect_node_triangle gives them). Records carry warm
 // start multipliers on entry and the converged ones (newtons) on exit; `x` of the bodies is
 // moved from x* to x^{n+1}. Pairs linked through no movable body form groups that converge on
-// their own, side by side on the pool (results independent of the thread count). A sweep that
-// corrects no node of a group by more than the group's stopping tolerance ends its solve, or
-// max_iterations sweeps: the tolerance is relative_tolerance times the largest relative motion
-// of a pair of the group over a step of h (the relative velocity at the start of the step,
-// times h), or 1e-9 of its finest boundary edge when nothing moves (resting contact). The result gives the
+// their own, side by side on the pool (results independent of the thread count). A sweep after
+// which no gap or slip of a group changed by more than the group's stopping tolerance ends its
+// solve, or max_iterations sweeps: the tolerance is relative_tolerance times the larger of the
+// largest relative motion of a pair of the group over a step of h (the relative velocity at
+// the start of the step, times h) and the motion the loads give a free node of its bodies in the
+// sub-step (ContactBody::load_motion), at least 1e-9 of its finest boundary edge. The result gives the
 // iterations and residual of the slowest group. The attachments' links (link_constraint.h)
 // are solved in the same sweeps, each in the group of its bodies; they carry their multipliers
 // in and out like the records. pair_forces gets the force between every two bodies that touch

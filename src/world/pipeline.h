@@ -34,6 +34,8 @@ struct BodyScratch {
     RigidResponse rigid;                   // rigid: the contact solve's response
     SubstepTally tally;
     bool touched = false;                  // in contact this sub-step
+    double load_motion = 0;                // m: how far gravity and node forces move a free node
+                                           // in the sub-step (the contact solve's scale at rest)
     uint64_t phase_ticks[3] = {0, 0, 0};   // side by side: its commit, rotation, forces (ticks())
 };
 

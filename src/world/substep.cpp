@@ -21,6 +21,26 @@
 #include "world/world.h"
 
 namespace lfem {
+namespace {
+
+// How far gravity and the node forces move a free node of a moving body in one sub-step of h
+// (whose forces act over h_mid): h h_mid times the largest acceleration they give a node (the
+// body's total node force over its mass for a rigid body). What a resting contact undoes every
+// sub-step, and so the scale of the contact solve's precision at rest.
+double load_motion(const Body& b, const double g[3], double h, double h_mid) {
+    double accel = 0.0;
+    if (b.is_rigid()) {
+        Vec3 total = Vec3::Zero();
+        for (std::size_t k = 0; k < b.node_force.size(); k += 3) total += Vec3(&b.node_force[k]);
+        accel = total.norm() / b.ref.total_mass;
+    } else {
+        for (std::size_t i = 0; 3 * i < b.node_force.size(); ++i)
+            accel = std::max(accel, Vec3(&b.node_force[3 * i]).norm() / b.ref.mass[i]);
+    }
+    return h * h_mid * (Vec3(g).norm() + accel);
+}
+
+}  // namespace
 
 // A body that is big, or that holds more than one thread's share of the tets of all the
 // deformable bodies, runs its node and element loops on the pool, one such body after another.
@@ -40,12 +60,16 @@ void World::plan_stages(double h) {
     for (uint32_t i = 0; i < bodies_.slot_count(); ++i) {
         pipeline_.bodies[i].tally = SubstepTally{};
         pipeline_.bodies[i].touched = false;
+        pipeline_.bodies[i].load_motion = 0.0;
         const Body& b = bodies_.slot(i);
         if (!bodies_.live(i) || !b.has_geometry()) continue;
         s.with_geometry.push_back(i);
         if (b.is_kinematic()) s.kinematic.push_back(i);
         if (!b.has_mesh() || b.state.asleep) continue;  // a sleeping body is not stepped
-        if (b.is_dynamic()) pipeline_.h_mid[i] = mid_step(b.state.h_last, h);
+        if (b.is_dynamic()) {
+            pipeline_.h_mid[i] = mid_step(b.state.h_last, h);
+            pipeline_.bodies[i].load_motion = load_motion(b, def_.gravity, h, pipeline_.h_mid[i]);
+        }
         if (b.is_rigid()) s.rigid.push_back(i);
         if (!b.is_deformable()) continue;
         s.deformable.push_back(i);
@@ -148,6 +172,7 @@ void World::detect() {
         in.category = b.def.category_bits;
         in.mask = b.def.mask_bits;
         in.self_contact = b.def.self_contact;
+        in.load_motion = sc.load_motion;
         in.shapes = b.shapes.data();
         in.shape_count = uint32_t(b.shapes.size());
         in.shape_pose = b.state.shape_pose.data();

@@ -152,10 +152,13 @@ void stack_of_three_comes_to_rest(bool quadratic) {
                 quadratic ? "10-node" : "4-node", floor_force / weights, kinetic / potential, worst_penetration);
     EXPECT_NEAR(floor_force, weights, 0.005 * weights);
     EXPECT_LT(kinetic, 1e-6 * potential);
-    // The solve stops at 1e-9 of the 3.3 cm edges (2.5 cm sub-triangle edges of the 10-node
-    // cubes) when nothing moves; 1e-8 m allows for the redundant two-pass constraints, which
-    // converge more slowly.
-    EXPECT_LT(worst_penetration, 1e-8);
+    // At rest the solve stops once a sweep changes no pair's gap by more than 1e-3 of the motion
+    // gravity gives a node in a sub-step, g h^2 (6e-9 m at the 10-node cubes' 0.77 ms, 1.6e-8 m
+    // at the 4-node cubes' 1.26 ms). A pair still converging then has what the remaining sweeps
+    // would have changed: below the last change over (1 - rate), ten of them at a rate of 0.9 a
+    // sweep (the redundant two-pass constraints converge that slowly).
+    const double h = stats(w).step_size;
+    EXPECT_LT(worst_penetration, 10 * 1e-3 * 9.81 * h * h);
     // The order of the stack is kept: each cube's centre is above the one below by about a
     // cube height (squashed), never inside it.
     double z[3];
