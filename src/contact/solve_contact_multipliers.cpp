@@ -8,6 +8,8 @@
 #include "common/thread_pool.h"
 #include "contact/constraint_pair.h"
 #include "contact/contact_groups.h"
+#include "contact/group_partition.h"
+#include "contact/sweeps.h"
 #include "contact/link_constraint.h"
 
 namespace lfem {
@@ -79,66 +81,6 @@ struct GroupLinks {
     uint32_t count;
 };
 
-// The warm start: the multipliers the pairs carry in (the records' last step's, for the same
-// node and body) are applied first, so a resting contact starts converged. Returns whether some
-// pair of the group has friction.
-bool warm_start_group(ConstraintPair* pairs, uint32_t count, const GroupLinks& held) {
-    for (uint32_t k = 0; k < held.count; ++k) warm_start_link(held.links[held.order[k]], held.pairs[held.order[k]]);
-    bool any_friction = false;
-    for (uint32_t k = 0; k < count; ++k) {
-        ConstraintPair& q = pairs[k];
-        if (!(q.H > 0.0)) {
-            q.lambda_n = 0.0, q.lambda_t.setZero();
-            continue;
-        }
-        q.lambda_t -= q.n * q.n.dot(q.lambda_t);  // the normal may have turned since: the tangential part
-        if (q.mu == 0.0) q.lambda_t.setZero();
-        apply(q, q.lambda_n * q.n + q.lambda_t);
-        any_friction = any_friction || q.mu > 0.0;
-    }
-    return any_friction;
-}
-
-// One sweep's normal updates: lambda_n <- max(0, lambda_n - (g - g_target)/H), the clamp the
-// paper's tension release. Returns the sweep's measure of change (solve_group).
-double normal_pass(ConstraintPair* pairs, uint32_t count, bool first) {
-    double largest = 0.0;
-    for (uint32_t k = 0; k < count; ++k) {
-        ConstraintPair& q = pairs[k];
-        if (!(q.H > 0.0)) continue;  // both sides immovable: nothing to solve
-        const double g = q.n.dot(relative_position(q)) + q.offset;
-        const double lambda_n = std::max(0.0, q.lambda_n - g / q.H);
-        const double moved = apply(q, (lambda_n - q.lambda_n) * q.n);
-        largest = std::max(largest, first ? moved : lambda_n > 0.0 || g < 0.0 ? std::fabs(g - q.seen_gap) : 0.0);
-        q.seen_gap = g;
-        q.lambda_n = lambda_n;
-    }
-    return largest;
-}
-
-// One sweep's friction updates: the tangential slip of the node relative to the triangle over
-// the step, cancelled by the stick trial, then returned onto the Coulomb cone (eq. 7).
-double friction_pass(ConstraintPair* pairs, uint32_t count, bool first) {
-    double largest = 0.0;
-    for (uint32_t k = 0; k < count; ++k) {
-        ConstraintPair& q = pairs[k];
-        if (!(q.H > 0.0) || q.mu == 0.0) continue;  // frictionless: no tangential work
-        Vec3 slip = relative_motion(q);
-        slip -= q.n * q.n.dot(slip);
-        const Vec3 lt_old = q.lambda_t;
-        Vec3 lt = lt_old - slip / q.H;
-        // Squared: the square root only for a pair beyond the cone (its latency held up the sweep).
-        const double cap = q.mu * q.lambda_n, norm2 = lt.squaredNorm();
-        q.sliding = norm2 > cap * cap;
-        if (q.sliding) lt *= cap / std::sqrt(norm2);  // norm2 > 0: above cap^2 >= 0
-        const double moved = apply(q, lt - lt_old);
-        largest = std::max(largest, first ? moved : q.lambda_n > 0.0 ? (slip - q.seen_slip).cwiseAbs().maxCoeff() : 0.0);
-        q.seen_slip = slip;
-        q.lambda_t = lt;
-    }
-    return largest;
-}
-
 // Projected Gauss-Seidel over one group's records (records[order[k]], k < count, in list
 // order; pairs[k] is the pair of records[order[k]]): the warm start, then sweeps until the
 // positions have settled: until no pair's gap (an active or penetrating pair's) and no tangential
@@ -152,7 +94,8 @@ void solve_group(std::vector<ContactRecord>& records, ConstraintPair* pairs, con
                  const GroupLinks& held, uint32_t max_iterations, double tolerance, GroupResult& out) {
     const uint64_t group_start = ticks();
     ContactSolveResult& result = out.solve;
-    const bool any_friction = warm_start_group(pairs, count, held);
+    for (uint32_t k = 0; k < held.count; ++k) warm_start_link(held.links[held.order[k]], held.pairs[held.order[k]]);
+    const bool any_friction = warm_start_pairs(pairs, count);
     // Each sweep: the normal updates of every pair, the links, then the friction updates of the
     // pairs that have friction (in the same sweep, as the paper's forward increment asks; in two
     // passes so that each part's time can be measured on its own).
@@ -171,18 +114,7 @@ void solve_group(std::vector<ContactRecord>& records, ConstraintPair* pairs, con
         out.updates += count + held.count;
         if (largest <= tolerance) break;
     }
-    // The multipliers back into the records, with what the next step's detection reads.
-    for (uint32_t k = 0; k < count; ++k) {
-        ContactRecord& r = records[order[k]];
-        const ConstraintPair& q = pairs[k];
-        r.lambda_n = q.lambda_n;
-        for (int d = 0; d < 3; ++d) r.lambda_t[d] = q.lambda_t[d];
-        r.sliding = q.sliding;
-        r.gap_after = q.n.dot(relative_position(q));
-        r.plane_gap = plane_gap(q, r.gap_after);
-        // The true depth, kept overlaps included (they are let out over several steps).
-        result.max_penetration = std::max(result.max_penetration, -r.gap_after);
-    }
+    result.max_penetration = write_back(pairs, count, order, records);
     out.ticks = ticks() - group_start;
 }
 
@@ -220,6 +152,14 @@ void tally_group(const std::vector<ContactRecord>& records, const uint32_t* orde
     out.pair_forces = pairs;
 }
 
+// What one task of a split group reports per sweep (solve_split).
+struct TaskResult {
+    double largest = 0;
+    uint64_t ticks = 0, friction_ticks = 0;
+    double deepest = 0;
+    bool friction = false;
+};
+
 }  // namespace
 
 // The solve's arrays, kept from sub-step to sub-step for their capacity.
@@ -230,10 +170,67 @@ struct ContactSolveScratch::Arrays {
     ContactGroups groups;
     std::vector<ForceEntry> forces;  // per record: the groups' tallies (tally_group)
     std::vector<GroupResult> results;
+    std::vector<GroupPartition> partitions;  // per group: its split, for the groups split (split[g])
+    std::vector<uint8_t> split;
+    std::vector<TaskResult> tasks;           // per task of the split group being solved
 };
 
 ContactSolveScratch::ContactSolveScratch() : arrays_(new Arrays) {}
 ContactSolveScratch::~ContactSolveScratch() = default;
+
+namespace {
+
+// The sweeps of a group split for the threads (group_partition.h): the warm start, the sweeps
+// and the write-back, each phase by phase, the tasks of a phase side by side on the pool. The
+// same measure of change and stopping rule as solve_group; each task runs its pairs' normal
+// updates, then their friction updates.
+void solve_split(std::vector<ContactRecord>& records, ConstraintPair* pairs, const uint32_t* order,
+                 const GroupPartition& part, uint32_t max_iterations, double tolerance, std::vector<TaskResult>& tasks,
+                 GroupResult& out, ThreadPool* pool) {
+    const std::vector<uint32_t>& tb = part.task_begin;
+    const uint32_t count = tb.back();
+    tasks.assign(tb.size() - 1, TaskResult{});
+    const auto each_phase = [&](const auto& work) {
+        for (uint32_t ph = 0; ph < part.phases(); ++ph) {
+            const uint32_t first = part.phase_begin[ph];
+            parallel_for(pool, part.phase_begin[ph + 1] - first, [&](uint32_t i) {
+                const uint32_t t = first + i;
+                const uint64_t start = ticks();
+                work(t, pairs + tb[t], tb[t + 1] - tb[t]);
+                tasks[t].ticks += ticks() - start;
+            });
+        }
+    };
+    each_phase([&](uint32_t t, ConstraintPair* p, uint32_t n) { tasks[t].friction = warm_start_pairs(p, n); });
+    bool any_friction = false;
+    for (const TaskResult& t : tasks) any_friction = any_friction || t.friction;
+    out.friction = any_friction && max_iterations > 0;
+    for (uint32_t sweep = 0; sweep < max_iterations; ++sweep) {
+        each_phase([&](uint32_t t, ConstraintPair* p, uint32_t n) {
+            double largest = normal_pass(p, n, sweep == 0);
+            if (any_friction) {
+                const uint64_t start = ticks();
+                largest = std::max(largest, friction_pass(p, n, sweep == 0));
+                tasks[t].friction_ticks += ticks() - start;
+            }
+            tasks[t].largest = largest;
+        });
+        double largest = 0.0;
+        for (const TaskResult& t : tasks) largest = std::max(largest, t.largest);
+        out.solve.iterations = sweep + 1;
+        out.solve.residual = largest;
+        out.updates += count;
+        if (largest <= tolerance) break;
+    }
+    each_phase([&](uint32_t t, ConstraintPair* p, uint32_t n) { tasks[t].deepest = write_back(p, n, order + tb[t], records); });
+    for (const TaskResult& t : tasks) {
+        out.solve.max_penetration = std::max(out.solve.max_penetration, t.deepest);
+        out.ticks += t.ticks;
+        out.friction_ticks += t.friction_ticks;
+    }
+}
+
+}  // namespace
 
 ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bodies,
                                              const std::vector<uint32_t>& body_of_slot,
@@ -262,7 +259,14 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
     pairs.resize(records.size());
     s.fixed_points.resize(6 * records.size());
     s.forces.resize(records.size());
+    s.partitions.resize(groups);
+    s.split.assign(groups, 0);
     parallel_for(pool, groups, [&](uint32_t g) {
+        // A big group without links is split for the threads (solved after this round).
+        const bool split = s.groups.link_begin[g + 1] == s.groups.link_begin[g] &&
+                           partition_group(bodies, body_of_slot, records, s.groups.order.data() + begin[g],
+                                           begin[g + 1] - begin[g], s.partitions[g]);
+        s.split[g] = split;
         double motion = 0.0, load = 0.0, length = HUGE_VAL;
         for (uint32_t k = begin[g]; k < begin[g + 1]; ++k) {
             ContactRecord& r = records[order[k]];
@@ -277,10 +281,17 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
                               s.groups.link_begin[g + 1] - s.groups.link_begin[g]};
         results[g].tolerance = stopping_tolerance(bodies, body_of_slot, links, held.order, held.count, motion, load,
                                                   length, relative_tolerance, h);
+        if (split) return;
         solve_group(records, pairs.data() + begin[g], order.data() + begin[g], begin[g + 1] - begin[g], held,
                     max_iterations, results[g].tolerance, results[g]);
         tally_group(records, order.data() + begin[g], begin[g + 1] - begin[g], s.forces.data() + begin[g], results[g]);
     });
+    for (uint32_t g = 0; g < groups; ++g) {
+        if (!s.split[g]) continue;
+        solve_split(records, pairs.data() + begin[g], order.data() + begin[g], s.partitions[g], max_iterations,
+                    results[g].tolerance, s.tasks, results[g], pool);
+        tally_group(records, order.data() + begin[g], begin[g + 1] - begin[g], s.forces.data() + begin[g], results[g]);
+    }
     pair_forces.clear();
     for (uint32_t g = 0; g < groups; ++g)
         for (uint32_t k = begin[g]; k < begin[g] + results[g].pair_forces; ++k) {

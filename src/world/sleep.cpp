@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "rigid/rigid_body.h"
 #include "world/world.h"
 
@@ -13,6 +15,50 @@ namespace {
 uint32_t root_of(std::vector<uint32_t>& parent, uint32_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
+}
+
+// How a body moves, split in two: as a whole (the rigid motion that carries its momentum about
+// its centre of mass: V = P / M, omega = I^-1 L), measured by the speed of its farthest node under
+// that motion, |V| + |omega| r_max; and its vibration, the mass-weighted RMS speed of what is
+// left. A soft body at rest on others keeps ringing faintly at its own frequencies (tens to
+// hundreds of hertz: a vibration of 1 cm/s is an amplitude of 10 to 100 um, and it goes
+// nowhere), while a rigid drift of 1 cm/s is a centimetre a second: each gets its own measure,
+// both held to sleep_velocity.
+struct Restlessness {
+    double whole = 0, vibration = 0;  // m/s
+};
+
+Restlessness restlessness(const std::vector<double>& mass, const std::vector<double>& x, const std::vector<double>& v) {
+    const std::size_t n = mass.size();
+    double M = 0.0;
+    Vec3 c = Vec3::Zero(), V = Vec3::Zero();
+    for (std::size_t i = 0; i < n; ++i) {
+        M += mass[i];
+        c += mass[i] * Vec3(&x[3 * i]);
+        V += mass[i] * Vec3(&v[3 * i]);
+    }
+    Restlessness out;
+    if (!(M > 0.0)) return out;
+    c /= M, V /= M;
+    Vec3 L = Vec3::Zero();
+    Mat3 I = Mat3::Zero();
+    double r_max = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 r = Vec3(&x[3 * i]) - c;
+        L += mass[i] * r.cross(Vec3(&v[3 * i]) - V);
+        I += mass[i] * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+        r_max = std::max(r_max, r.norm());
+    }
+    // A tet mesh's inertia is positive definite (its nodes are not all on a line).
+    const Vec3 omega = I.ldlt().solve(L);
+    double left = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 r = Vec3(&x[3 * i]) - c;
+        left += mass[i] * (Vec3(&v[3 * i]) - V - omega.cross(r)).squaredNorm();
+    }
+    out.whole = V.norm() + omega.norm() * r_max;
+    out.vibration = std::sqrt(left / M);
+    return out;
 }
 
 }  // namespace
@@ -34,17 +80,35 @@ void World::wake_touching(uint32_t slot) {
     }
 }
 
-// After a sub-step's solve: a sleeping body that an awake, moving body presses wakes (it takes
-// part from the next sub-step on; in this one it held like a static body).
+// After a sub-step's solve: a sleeping body that an awake, moving body presses wakes, and with
+// it its whole island (the sleeping bodies joined to it by contacts and attachments), as it fell
+// asleep: a pile touched on top wakes at once, not one layer a sub-step. The woken take part from
+// the next sub-step on; in this one they held like static bodies.
 void World::wake_touched_sleepers() {
     if (!contact_.bodies().any_asleep()) return;  // no body fell asleep during a call: none to wake
+    const auto asleep = [&](uint32_t i) { return bodies_.slot(i).state.asleep != 0; };
+    const auto pressing = [&](uint32_t i) { return !asleep(i) && !bodies_.slot(i).is_static(); };
+    std::vector<uint32_t> touched;
     for (const ContactRecord& r : state_.contacts) {
         if (!r.active()) continue;
-        const Body& a = bodies_.slot(r.body_a);
-        const Body& b = bodies_.slot(r.body_b);
-        if (a.state.asleep && !b.state.asleep && !b.is_static()) wake(r.body_a);
-        if (b.state.asleep && !a.state.asleep && !a.is_static()) wake(r.body_b);
+        if (asleep(r.body_a) && pressing(r.body_b)) touched.push_back(r.body_a);
+        if (asleep(r.body_b) && pressing(r.body_a)) touched.push_back(r.body_b);
     }
+    if (touched.empty()) return;
+    const uint32_t n = bodies_.slot_count();
+    std::vector<uint32_t> parent(n);
+    for (uint32_t i = 0; i < n; ++i) parent[i] = i;
+    const auto join = [&](uint32_t a, uint32_t b) {
+        if (asleep(a) && asleep(b)) parent[root_of(parent, a)] = root_of(parent, b);
+    };
+    for (const ContactRecord& r : state_.contacts)
+        if (r.active()) join(r.body_a, r.body_b);
+    for (const Attachment& a : state_.attachments.slots)
+        if (a.generation != 0 && a.target != kFrameTarget) join(a.body, a.target);
+    std::vector<uint8_t> woken(n, 0);
+    for (uint32_t i : touched) woken[root_of(parent, i)] = 1;
+    for (uint32_t i = 0; i < n; ++i)  // in slot order: the wake events too
+        if (bodies_.live(i) && asleep(i) && woken[root_of(parent, i)]) wake(i);
 }
 
 // After a call: each awake body's timer runs while its fastest node is slower than
@@ -74,15 +138,17 @@ void World::update_sleep(double dt) {
         if (a.target == kFrameTarget) keep_awake[a.body] = 1;  // the caller may move it any frame
         else join(a.body, a.target);
     }
+    std::vector<double> v;
     for (uint32_t i = 0; i < n; ++i) {
         if (!dynamic(i)) continue;
         Body& b = bodies_.slot(i);
         if (b.state.asleep) continue;
-        double fastest = 0.0;
-        for (std::size_t k = 0; k < b.state.v_half.size(); k += 3)
-            fastest = std::max(fastest, Vec3(&b.state.v_half[k]).norm());
+        v.resize(b.state.x.size());
+        synchronized_velocities(b, v.data());
+        const Restlessness r = restlessness(b.ref.mass, b.state.x, v);
         const bool prescribed = std::find(b.node_mode.begin(), b.node_mode.end(), NodeMode::prescribed) != b.node_mode.end();
-        const bool still = fastest < def_.sleep_velocity && !prescribed && !keep_awake[i] && b.def.enable_sleep;
+        const bool still = r.whole < def_.sleep_velocity && r.vibration < def_.sleep_velocity && !prescribed &&
+                           !keep_awake[i] && b.def.enable_sleep;
         b.state.sleep_timer = still ? b.state.sleep_timer + dt : 0.0;
     }
     // An island sleeps when none of its bodies is awake and restless (a sleeping member, woken

@@ -189,3 +189,143 @@ TEST(Sleep, OffByDefaultAndPerBody) {
     lfem_body b{};
     EXPECT_EQ(lfem_body_create(w, &bd, &b), LFEM_INVALID_ARGUMENT);
 }
+
+namespace {
+
+// The soft cube of the piles (issue 34): 10 cm, 3^3 cells, E 1e5, nu 0.45, rho 1100, damping 5,
+// friction 0.5.
+lfem_body_def pile_cube() {
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 1e5;
+    d.poisson_ratio = 0.45;
+    d.density = 1100;
+    d.damping = 5;
+    d.friction = 0.5;
+    return d;
+}
+
+// Steps 1/60 s calls until every body of `bodies` sleeps (at most `calls`); returns the calls
+// taken and the most sleep events seen in one call.
+int step_until_asleep(lfem_world* w, const std::vector<lfem_body>& bodies, int calls, int& most_in_one_call) {
+    most_in_one_call = 0;
+    for (int i = 1; i <= calls; ++i) {
+        EXPECT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK) << lfem_last_error();
+        most_in_one_call = std::max(most_in_one_call, count_events(w, LFEM_EVENT_SLEEP));
+        bool all = true;
+        for (lfem_body b : bodies) all = all && lfem_body_is_awake(w, b) == 0;
+        if (all) return i;
+    }
+    return calls + 1;
+}
+
+double lowest_z(lfem_world* w, lfem_body b) {
+    const std::vector<double> x = positions(w, b);
+    double z = HUGE_VAL;
+    for (size_t k = 2; k < x.size(); k += 3) z = std::min(z, x[k]);
+    return z;
+}
+
+}  // namespace
+
+// 32 soft cubes side by side, put down 1 mm above the floor (they land at 14 ms), each its own
+// island. The rule asks each body's motion as a whole (the rigid motion of its momentum) and its
+// vibration (the RMS of the rest) to stay under sleep_velocity for sleep_time (0.5 s): once the
+// landing's bounce has been damped below 1 cm/s (about 0.3 s at damping 5 from the 0.14 m/s of
+// a 1 mm fall: speeds decay as exp(-alpha t / 2) only for the slowest mode; the stiff ones are
+// bled faster by the contact) each sleeps within 1.25 s. The rule before it (every node under
+// 1 cm/s) put none of them to sleep within 1.25 s: a resting soft body's nodes ring faintly
+// above that, at amplitudes of microns.
+TEST(Sleep, ThirtyTwoSoftCubesSideBySideFallAsleepWithinASecondOfLanding) {
+    World w(sleepy());
+    Mesh floor;
+    make_box_mesh(floor, 2, 2, 0.1, 2, 2, 1, -1, -1, -0.1);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    fd.friction = 0.5;
+    add_body(w, fd, floor);
+    std::vector<Mesh> meshes(32);
+    std::vector<lfem_body> cubes;
+    const lfem_body_def d = pile_cube();
+    for (int i = 0; i < 32; ++i) {
+        make_box_mesh(meshes[size_t(i)], 0.1, 0.1, 0.1, 3, 3, 3, -0.5 + 0.12 * (i % 8), -0.25 + 0.12 * (i / 8), 0.001);
+        cubes.push_back(add_body(w, d, meshes[size_t(i)]));
+    }
+    int most = 0;
+    const int calls = step_until_asleep(w, cubes, 75, most);
+    std::printf("32 cubes side by side: all asleep after %d calls (%.2f s)\n", calls, calls / 60.0);
+    EXPECT_LE(calls, 75);  // 1.25 s
+    // Asleep where they rest: on the floor, not in it (the solve leaves at most nanometres), and
+    // sagged under their own weight. A column under its own weight sags on average by
+    // rho g a^2 / (3 E') (u(z) = rho g (a z - z^2 / 2) / E', averaged over the height): 3.6e-4 m
+    // with E' = E when it may spread sideways freely, 9.5e-5 m with the confined modulus
+    // E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 3.79 E when it may not. The floor's friction holds
+    // only the base: the mean height of the nodes lies between the two.
+    const double a = 0.1, g = 9.81;
+    const double free_sag = d.density * g * a * a / (3 * d.young_modulus);
+    const double nu = d.poisson_ratio;
+    const double confined_sag = free_sag * (1 + nu) * (1 - 2 * nu) / (1 - nu);
+    for (lfem_body c : cubes) {
+        EXPECT_GT(lowest_z(w, c), -1e-6);
+        const std::vector<double> x = positions(w, c);
+        double z = 0;
+        for (size_t k = 2; k < x.size(); k += 3) z += x[k] / double(x.size() / 3);
+        EXPECT_LT(a / 2 - z, free_sag);
+        EXPECT_GT(a / 2 - z, confined_sag);
+    }
+}
+
+// A pyramid of the issue's cubes, put down in place: layers of 3 x 3, 2 x 2 and 1, each 1 mm
+// above the last, each cube on the four below it (1 cm apart). It is one island (every cube
+// touches the next): it falls asleep in one call, within 2 s, and a cube dropped on top wakes
+// all of it in one call, not one layer a sub-step.
+TEST(Sleep, APyramidFallsAsleepAsOneIslandAndWakesAsOne) {
+    World w(sleepy());
+    Mesh floor;
+    make_box_mesh(floor, 2, 2, 0.1, 2, 2, 1, -1, -1, -0.1);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    fd.friction = 0.5;
+    add_body(w, fd, floor);
+    std::vector<Mesh> meshes(15);
+    std::vector<lfem_body> cubes;
+    const lfem_body_def d = pile_cube();
+    for (int layer = 0; layer < 3; ++layer)
+        for (int i = 0; i < (3 - layer) * (3 - layer); ++i) {
+            const double corner = -0.16 + 0.055 * layer;
+            make_box_mesh(meshes[cubes.size()], 0.1, 0.1, 0.1, 3, 3, 3, corner + 0.11 * (i % (3 - layer)),
+                          corner + 0.11 * (i / (3 - layer)), 0.001 + 0.101 * layer);
+            cubes.push_back(add_body(w, d, meshes[cubes.size()]));
+        }
+    int most = 0;
+    const int calls = step_until_asleep(w, cubes, 120, most);  // 2 s
+    std::printf("pyramid of 14: all asleep after %d calls (%.2f s), %d in one call\n", calls, calls / 60.0, most);
+    EXPECT_LE(calls, 120);
+    EXPECT_EQ(most, 14);
+    // Asleep as built: each layer's lowest node above the one below's by nearly a cube height.
+    double low[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+    for (size_t k = 0; k < cubes.size(); ++k) {
+        const size_t layer = k < 9 ? 0 : k < 13 ? 1 : 2;
+        low[layer] = std::min(low[layer], lowest_z(w, cubes[k]));
+    }
+    EXPECT_GT(low[0], -1e-6);
+    EXPECT_GT(low[1] - low[0], 0.09);
+    EXPECT_GT(low[2] - low[1], 0.09);
+    // A cube dropped 2 cm onto the top: the whole pyramid wakes in one call.
+    Mesh m;
+    const std::vector<double> top = positions(w, cubes[13]);  // the top
+    double cx = 0, cy = 0, zmax = -HUGE_VAL;
+    for (size_t k = 0; k < top.size(); k += 3) cx += top[k], cy += top[k + 1], zmax = std::max(zmax, top[k + 2]);
+    cx /= double(top.size() / 3), cy /= double(top.size() / 3);
+    make_box_mesh(m, 0.05, 0.05, 0.05, 2, 2, 2, cx - 0.025, cy - 0.025, zmax + 0.02);
+    add_body(w, d, m);
+    int woke_calls = 0, woke = 0;
+    for (int i = 0; i < 30 && woke < 14; ++i) {
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+        const int now = count_events(w, LFEM_EVENT_WAKE);
+        woke += now;
+        woke_calls += now > 0;
+    }
+    EXPECT_EQ(woke, 14);
+    EXPECT_EQ(woke_calls, 1);
+    for (lfem_body c : cubes) EXPECT_EQ(lfem_body_is_awake(w, c), 1);
+}

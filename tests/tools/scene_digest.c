@@ -5,7 +5,8 @@
  * and after and compare (`diff`). The scenes cover every body type and material model, the
  * rigid shapes, fixed and prescribed nodes, node forces, a triangle-mesh floor, the
  * side-by-side and on-pool loops on 1 to 3 threads, the retry of a call whose body stiffened,
- * initial overlaps, a checkpoint round trip and bodies of 10-node tets.
+ * initial overlaps, a checkpoint round trip, bodies of 10-node tets and a pile whose contact
+ * group is split for the threads.
  *
  *   scene_digest [scene-name]      (all scenes when no name is given)
  * Each line: the physics digest, the profile's counts, and the events of every call.
@@ -560,6 +561,29 @@ static void scene_game(uint32_t threads) {
     lfem_world_destroy(w);
 }
 
+/* A pile: two layers of 4 x 4 soft cubes with friction, one contact group big enough to be
+ * split for the threads (src/contact/group_partition.h: its parts' pairs and the pairs between
+ * parts in coloured phases), landing and coming to rest. */
+static void scene_pile(uint32_t threads) {
+    lfem_world* w = make_world(threads);
+    lfem_body b[33];
+    b[0] = static_floor(w);
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 1e5;
+    d.poisson_ratio = 0.45;
+    d.density = 1100;
+    d.damping = 5.0;
+    d.friction = 0.5;
+    for (int i = 0; i < 32; ++i) {
+        const int layer = i / 16, k = i % 16;
+        b[i + 1] = add_box(w, &d, 0.1, 0.1, 0.1, 3, 3, 3, 0.11 * (k % 4) - 0.22 + 0.02 * layer,
+                           0.11 * (k / 4) - 0.22 + 0.015 * layer, 0.001 + 0.102 * layer);
+    }
+    step(w, 24, 1.0 / 60.0);
+    digest_world(w, b, 33);
+    lfem_world_destroy(w);
+}
+
 struct scene {
     const char* name;
     void (*run)(uint32_t);
@@ -578,6 +602,7 @@ static const struct scene scenes[] = {
     {"supports", scene_supports},    {"crush", scene_crush},
     {"overlap_checkpoint", scene_overlap_checkpoint},
     {"quadratic", scene_quadratic},  {"game", scene_game},
+    {"pile", scene_pile},
 };
 
 /* One run of a scene; the digests in *physics, *profile, *events and *queries. */
