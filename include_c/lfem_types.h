@@ -105,8 +105,10 @@ typedef struct lfem_world_def {
                                      report shows what it costs). Neo-Hookean bodies crushed
                                      beyond the reference still stiffen below it */
     double sleep_velocity;      /**< m/s, default 0.01. With enable_sleep, a deformable or rigid
-                                     body whose every node has moved slower than this for
-                                     sleep_time, and everything touching or attached to it too (a
+                                     body that has moved slower than this for sleep_time, both as
+                                     a whole (the rigid motion of its momentum, at its farthest
+                                     node) and in its vibration (the mass-weighted RMS speed of
+                                     the rest), and everything touching or attached to it too (a
                                      pile sleeps as a whole), falls asleep: its velocities are
                                      set to zero (booked as dissipated energy) and it is not
                                      stepped (no element forces, no predictor, no detection among

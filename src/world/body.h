@@ -74,7 +74,7 @@ struct BodyState {
     double inverted_since = -1;    // s: when the body's tets last began to be inverted (-1: none are)
     double stiffening = 1;         // neo-Hookean: how much stiffer the stiffest tet is at x than
                                    // at rest (>= 1; neo_hookean_tangent.h); 1 for the others
-    double sleep_timer = 0;        // s: how long every node has moved slower than sleep_velocity
+    double sleep_timer = 0;        // s: how long the body has moved slower than sleep_velocity (sleep.cpp)
     uint32_t asleep = 0;           // 1: not stepped until it wakes (lfem_world_def.enable_sleep)
     GlobalMotion global;           // paper model: frame rotation and L of eq. (2); rigid: the
                                    // whole motion; kinematic: the pivot (center)

@@ -41,10 +41,17 @@
  *   pile48_landing  48 cubes dropped in three layers of 4 x 4 (1 cm apart), each layer 12 cm
  *                   above the last and shifted by (2.5, 1.5) cm: timed from 0.25 to 1.25 s
  *   pile48_rest     the same, timed from 3 to 4 s (at rest, about 800 contacts)
- *   pyramid15       a pyramid of 5 layers, 5 cubes to 1, each cube on two below, 1 mm apart
- *   column10        10 cubes stacked 1 mm apart (the longest chain for the solve)
- *   wall40          a wall of 40 bricks of 20 x 10 x 10 cm (6 x 3 x 3 cells) in 5 courses of 8,
- *                   each course shifted by half a brick
+ *   pyramid55       a square pyramid of 5 layers (5 x 5 cubes to 1), each cube on the four
+ *                   below, 5 mm apart: one cube deep, a wall or a pyramid of these cubes 0.5 m
+ *                   high buckles under its own weight (Greenhill, below), 5 cubes deep it stands
+ *   column10        10 cubes stacked 1 mm apart (the longest chain for the solve), of E 5e6 Pa:
+ *                   a column of the others' E 1e5 buckles under its own weight (Greenhill:
+ *                   it stands up to L_c = 1.986 (E a^2 / (12 rho g))^(1/3) = 0.39 m; a 1 m
+ *                   column needs E >= 1.7e6), and does, at about 2.2 s; with E 5e6, L_c = 1.44 m
+ *   wall40          a wall of 40 blocks of 20 x 20 x 10 cm (6 x 6 x 3 cells) in 5 courses of 8,
+ *                   every other course shifted by a quarter block: a wall of 10 cm bricks would
+ *                   buckle sideways (its plate's L_c 0.42 m < 0.5 m), 20 cm thick it stands
+ *                   up to 0.67 m
  * Their settling and timed frames are the scene's own unless --settle or --frames are given.
  * Timings are only meaningful as ratios within one run on an otherwise quiet machine. */
 #define _POSIX_C_SOURCE 200809L
@@ -94,8 +101,8 @@ static const scene kScenes[] = {
     {"pile50_asleep", 50, 5, 3, 1e5, 0.45, 0.3, LFEM_MODEL_PAPER, FLOOR_BOX4, 2, 1, 20, 0, GRID, 0, 0},
     {"pile48_landing", 48, 4, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, PILE48, 0.25, 60},
     {"pile48_rest", 48, 4, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, PILE48, 3.0, 60},
-    {"pyramid15", 15, 5, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, PYRAMID, 2.0, 60},
-    {"column10", 10, 1, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, COLUMN, 2.0, 60},
+    {"pyramid55", 55, 5, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, PYRAMID, 2.0, 60},
+    {"column10", 10, 1, 3, 5e6, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, COLUMN, 2.0, 60},
     {"wall40", 40, 8, 3, 1e5, 0.45, 0, LFEM_MODEL_PAPER, FLOOR_BOX4, 0, 0, 5, 0, WALL, 2.0, 60},
 };
 
@@ -179,23 +186,24 @@ static void place(const scene* sc, int c, double offset[3], double size[3], uint
         offset[0] = pitch * (spot % per_row - 0.5 * (per_row - 1)) - 0.5 * edge + 0.025 * layer;
         offset[1] = pitch * (spot / per_row - 0.5 * (per_row - 1)) - 0.5 * edge + 0.015 * layer;
         offset[2] = 0.001 + 0.12 * layer;
-    } else if (sc->layout == PYRAMID) {  /* per_row at the bottom, one fewer each layer up */
+    } else if (sc->layout == PYRAMID) {  /* per_row^2 at the bottom, (per_row - 1)^2 next... */
         int layer = 0, first = 0;
-        while (c >= first + per_row - layer) first += per_row - layer, ++layer;
-        const int n = per_row - layer, i = c - first;
+        while (c >= first + (per_row - layer) * (per_row - layer)) first += (per_row - layer) * (per_row - layer), ++layer;
+        const int n = per_row - layer, i = (c - first) % n, j = (c - first) / n;
         const double pitch = edge + 0.005;
         offset[0] = pitch * (i - 0.5 * (n - 1)) - 0.5 * edge;
-        offset[1] = -0.5 * edge;
+        offset[1] = pitch * (j - 0.5 * (n - 1)) - 0.5 * edge;
         offset[2] = 0.001 + layer * (edge + 0.001);
     } else if (sc->layout == COLUMN) {
         offset[0] = offset[1] = -0.5 * edge;
         offset[2] = 0.001 + c * (edge + 0.001);
-    } else {  /* WALL: courses of per_row bricks twice as long as high, shifted by half a brick */
+    } else {  /* WALL: courses of per_row blocks twice as long and deep as high, every other one
+               * shifted by a quarter block */
         const int course = c / per_row, i = c % per_row;
-        size[0] = 2 * edge;
-        cells[0] = 2 * sc->cells;
+        size[0] = size[1] = 2 * edge;
+        cells[0] = cells[1] = 2 * sc->cells;
         offset[0] = (2 * edge + 0.001) * (i - 0.5 * per_row) + (course % 2 ? 0.5 * edge : 0.0);
-        offset[1] = -0.5 * edge;
+        offset[1] = -edge;
         offset[2] = 0.001 + course * (edge + 0.001);
     }
 }
