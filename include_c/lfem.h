@@ -126,7 +126,9 @@ LFEM_API lfem_status lfem_world_reset_profile(lfem_world* world);
 LFEM_API lfem_status lfem_body_create(lfem_world* world, const lfem_body_def* def,
                                       lfem_body* out);
 
-/** Destroy a body; its handle (and copies of it) become stale. */
+/** Destroy a body; its handle (and copies of it) become stale. Each pair of bodies it touched
+ * ends: an LFEM_EVENT_CONTACT_END for it comes with the next step's events (naming the
+ * destroyed body by its now stale handle), and sleeping bodies it touched wake. */
 LFEM_API lfem_status lfem_body_destroy(lfem_world* world, lfem_body body);
 
 /** 1 if the handle names a live body of this world, else 0. world is nullable (gives 0). */

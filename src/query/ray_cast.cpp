@@ -66,7 +66,9 @@ double QueryScene::body_crossings(uint32_t slot, const QueryBody& b, const Query
             continue;
         for (int end = 0; end < 2; ++end) {
             const double t = end == 0 ? line.t_in : line.t_out;
-            if (!(t >= 0.0 && t <= t_max)) continue;  // behind the origin, too far, or infinite
+            // Behind the origin, too far, or infinite (a plane's solid has no far side): the
+            // finiteness apart, since t_max is infinite for a ray without a limit.
+            if (!(t >= 0.0 && t <= t_max) || !std::isfinite(t)) continue;
             RayHit hit;
             hit.slot = slot, hit.shape = j;
             hit.distance = t;

@@ -22,6 +22,13 @@ void EventLog::add_body_event(EventType type, BodyHandle body) {
     (in_call_ ? sleep_events_ : pending_events_).push_back(e);
 }
 
+void EventLog::add_contact_end(BodyHandle a, BodyHandle b) {
+    StepEvent e;
+    e.type = EventType::contact_end;
+    e.a = a, e.b = b;
+    pending_events_.push_back(e);
+}
+
 // The pair's tally, met for the first time in this sub-step or again (references into the map
 // stay valid as it grows).
 EventLog::PairTally* EventLog::tally_of(uint64_t key, double interval) {

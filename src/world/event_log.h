@@ -42,6 +42,8 @@ public:
     void add_sleep(BodyHandle body) { add_body_event(EventType::sleep, body); }
     void add_wake(BodyHandle body) { add_body_event(EventType::wake, body); }
     void add_broken(const StepEvent& e) { broken_.push_back(e); }
+    // A pair ended between calls (a body destroyed): reported with the next call's events.
+    void add_contact_end(BodyHandle a, BodyHandle b);
 
     // The sub-step's normal forces between bodies: `solved`, the solve's sums per pair of bodies,
     // and `frozen`, the pairs held among sleeping bodies (each active record's force). A pair's

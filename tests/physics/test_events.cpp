@@ -171,6 +171,49 @@ TEST(Events, ARestingContactBeginsOnceAndEndsWhenTheCubeLeaves) {
     EXPECT_EQ(last[0].type, LFEM_EVENT_CONTACT_END);
 }
 
+// Destroying a body ends its pairs: an engine that tracks touching pairs from the events would
+// otherwise keep them for ever. A cube resting on a second one on the floor, the lower cube
+// destroyed: the next call reports exactly the ends of the two pairs the lower cube was in
+// (with the floor, with the upper cube), naming it by its stale handle, and nothing else ends;
+// the upper cube then falls. With sleeping on, the upper cube
+// asleep on the lower one wakes and falls instead of hanging in the air.
+TEST(Events, DestroyingABodyEndsItsPairsAndWakesWhatItHeld) {
+    for (int sleeping = 0; sleeping < 2; ++sleeping) {
+        lfem_world_def wd = lfem_world_def_default();
+        wd.enable_sleep = uint8_t(sleeping);
+        World w(wd);
+        Mesh floor, lower, upper;
+        const lfem_body low = cube_above_block(w, floor, lower, 20);
+        make_box_mesh(upper, 0.1, 0.1, 0.1, 2, 2, 2, -0.05, -0.05, 0.1015);
+        lfem_body_def d = lfem_body_def_default();
+        d.damping = 20;
+        const lfem_body up = add_body(w, d, upper);
+        for (int call = 0; call < 150 && (!sleeping || lfem_body_is_awake(w, up)); ++call)
+            ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+        if (sleeping) {
+            ASSERT_EQ(lfem_body_is_awake(w, up), 0);
+        }
+        ASSERT_EQ(lfem_body_destroy(w, low), LFEM_OK);
+        EXPECT_EQ(lfem_body_is_awake(w, up), 1);  // held up by nothing now
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+        int ends_with_low = 0, other_ends = 0;
+        for (const lfem_event& e : events_of(w)) {
+            if (e.type != LFEM_EVENT_CONTACT_END) continue;
+            const bool with_low = (e.body_a.index == low.index && e.body_a.generation == low.generation) ||
+                                  (e.body_b.index == low.index && e.body_b.generation == low.generation);
+            ends_with_low += with_low;
+            other_ends += !with_low;
+        }
+        EXPECT_EQ(ends_with_low, 2) << (sleeping ? "asleep" : "awake");
+        EXPECT_EQ(other_ends, 0);
+        // The upper cube falls (g t^2 / 2 = 5 cm in 0.1 s) and lands on the floor.
+        const std::vector<double> before = positions(w, up);
+        for (int call = 0; call < 6; ++call) ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+        const std::vector<double> after = positions(w, up);
+        EXPECT_LT(after[2] - before[2], -0.03) << (sleeping ? "asleep" : "awake");
+    }
+}
+
 TEST(Events, TooSmallBuffersAndNullsAreRefused) {
     World w;
     Mesh floor, cube;

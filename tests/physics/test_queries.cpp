@@ -353,6 +353,37 @@ TEST(Queries, AllHitsComeNearestFirst) {
     EXPECT_EQ(few[0].distance, -1);
 }
 
+// "No limit" (max_distance HUGE_VAL) means the same as a limit beyond every surface: a plane's
+// solid has no far side, so a ray from above meets it once, at the distance to the plane, and a
+// ray that starts inside it and goes deeper meets nothing (an engine integration saw a second
+// hit at distance inf, point (nan, nan, -inf), and a hit at inf for the ray from inside).
+TEST(Queries, NoLimitMeetsAPlaneOnceAndNeverAtInfinity) {
+    World world(no_gravity());
+    const lfem_body s = static_body(world);
+    add_shape(world, s, lfem_shape_def_default());  // the plane z = 0, solid below
+    const double above[3] = {0.3, -0.2, 2.0}, down[3] = {0, 0, -1};
+    for (double limit : {HUGE_VAL, 10.0}) {
+        const std::vector<lfem_ray_hit> hits = cast_all(world, above, down, limit);
+        ASSERT_EQ(hits.size(), 1u) << "limit " << limit;
+        EXPECT_EQ(hits[0].distance, 2.0);
+        expect_near3(hits[0].point, 0.3, -0.2, 0.0, 0.0, "the point on the plane");
+        expect_near3(hits[0].normal, 0, 0, 1, kExact, "the plane's normal");
+        const Hit h = cast(world, above, down, limit);
+        ASSERT_TRUE(h.found);
+        EXPECT_EQ(h.h.distance, 2.0);
+        // From inside the solid, deeper: nothing to meet. Upwards: the surface, on the way out.
+        const double inside[3] = {0, 0, -1}, up[3] = {0, 0, 1};
+        EXPECT_TRUE(cast_all(world, inside, down, limit).empty()) << "limit " << limit;
+        EXPECT_FALSE(cast(world, inside, down, limit).found);
+        const std::vector<lfem_ray_hit> out = cast_all(world, inside, up, limit);
+        ASSERT_EQ(out.size(), 1u);
+        EXPECT_EQ(out[0].distance, 1.0);
+        // A ray along the plane, above it, never meets it.
+        const double along[3] = {1, 0, 0};
+        EXPECT_TRUE(cast_all(world, above, along, limit).empty());
+    }
+}
+
 TEST(Queries, BoxesFindExactlyTheBodiesTheyOverlap) {
     World world(no_gravity());
     Mesh mesh;
