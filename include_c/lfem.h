@@ -211,7 +211,9 @@ LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body 
 
 /** Copy the node velocities (m/s) at the current time into out[3*node_capacity]. These are
  * the synchronized central-difference velocities (the mid-step velocity advanced by half a
- * step of the current acceleration). */
+ * step of the current acceleration); a node pressed by a contact, and a rigid body pressed by
+ * one or held by an attachment, report the last step's velocity instead (the extrapolation
+ * would know gravity but not the support: a body at rest would report -g h/2). */
 LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body body,
                                               double* out, uint32_t node_capacity);
 

@@ -250,6 +250,26 @@ void World::body_forces(uint32_t i, ThreadPool* pool) {
     update_elastic_forces(b, b.state, pool);
 }
 
+// The contact (and attachment) forces that moved a rigid body this sub-step, node by node as
+// the deformable commit reports them, m dx / (h h_mid) for the correction's displacement dx of
+// each node (dc + dtheta x r): their resultant and moment are the correction's force and torque.
+// A body that holds them reports its last step's velocity (synchronized_velocities).
+static void record_rigid_contact_force(Body& b, const BodyScratch& sc, double h, double h_mid) {
+    std::vector<double>& f = b.state.contact_force;
+    const uint32_t n = b.ref.node_count();
+    if (!sc.touched || n == 0 || h_mid <= 0.0) {
+        std::vector<double>().swap(f);
+        return;
+    }
+    f.resize(3 * std::size_t(n));
+    const Vec3 c(b.state.global.center);
+    for (uint32_t i = 0; i < n; ++i) {
+        const Vec3 dx = sc.rigid.dc + sc.rigid.dtheta.cross(Vec3(&b.state.x[3 * i]) - c);
+        const Vec3 fi = b.ref.mass[i] / (h * h_mid) * dx;
+        for (int k = 0; k < 3; ++k) f[3 * i + k] = fi[k];
+    }
+}
+
 void World::commit_rigid_bodies(double h) {
     for (uint32_t i : pipeline_.stages.rigid) {
         Body& b = bodies_.slot(i);
@@ -257,6 +277,7 @@ void World::commit_rigid_bodies(double h) {
         const RigidBodyView view = rigid_view(b);
         sc.tally.contact_work += commit_rigid(view, h, sc.rigid.dc, sc.rigid.dtheta, b.state.global, b.state.x);
         b.state.h_last = h;
+        record_rigid_contact_force(b, sc, h, pipeline_.h_mid[i]);
         // Work of gravity and node forces on the moving centre (node forces' torques act
         // through eq. 2; their work is booked with the translation only).
         const Vec3 dc = Vec3(b.state.global.center) - sc.center_start;

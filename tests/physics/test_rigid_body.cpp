@@ -102,3 +102,40 @@ TEST(RigidBody, BoxDroppedOnASoftSlabExchangesMomentumWithoutPenetration) {
     // step's relative motion (src/DESIGN.md section 9): at 2 m/s that is 2e-3 h.
     EXPECT_LT(penetration, 1e-3 * 2.0 * h);
 }
+
+// A rigid box lying still on a floor reports that it is still (issue 36): the half-step
+// extrapolation of the velocity to the end of the step knows gravity but not the floor, and
+// reported -g h/2 (-0.08 m/s in a rigid-only world at 60 Hz, one sub-step per call). Pressed,
+// the box reports its last step's velocity, as a deformable body's pressed nodes do. Alone on
+// a plane (h = 1/60 s) and beside a soft cube (the sub-step of the cube's stable limit). The
+// bound: the solve stops when no gap changes by more than 1e-3 of the motion gravity gives in
+// the sub-step (g h^2), so the box's step-to-step velocity is known to 1e-3 g h; twice that.
+// (Free flight keeps the extrapolation: FallsAndSpinsAsARigidBody.)
+TEST(RigidBody, ABoxRestingOnAFloorReportsItIsStill) {
+    for (int with_soft = 0; with_soft < 2; ++with_soft) {
+        World w;
+        add_plane_floor(w);
+        Mesh box_mesh, soft_mesh;
+        make_box_mesh(box_mesh, 0.2, 0.2, 0.1, 2, 2, 1, -0.1, -0.1, 0.0);
+        lfem_body_def r = lfem_body_def_default();
+        r.type = LFEM_BODY_RIGID;
+        const lfem_body box = add_body(w, r, box_mesh);
+        if (with_soft) {
+            make_box_mesh(soft_mesh, 0.1, 0.1, 0.1, 2, 2, 2, 0.5, 0.5, 0.0);
+            add_body(w, lfem_body_def_default(), soft_mesh);
+        }
+        double mass = 0;
+        lfem_body_get_mass(w, box, &mass);
+        for (int call = 0; call < 60; ++call) ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK) << lfem_last_error();
+        const lfem_world_stats s = stats(w);
+        const double h = s.step_size, g = 9.81;
+        ASSERT_GT(h, 0.0);
+        const double bound = 2e-3 * g * h;
+        double worst = 0;
+        for (double v : velocities(w, box)) worst = std::max(worst, std::fabs(v));
+        EXPECT_LT(worst, bound) << (with_soft ? "beside a soft cube" : "alone") << ", h " << h;
+        double P[3], L[3];
+        ASSERT_EQ(lfem_body_get_momentum(w, box, P, L), LFEM_OK);
+        EXPECT_LT(std::hypot(P[0], P[1], P[2]), mass * bound);
+    }
+}
