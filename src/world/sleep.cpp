@@ -113,8 +113,8 @@ void World::wake_touched_sleepers() {
 
 // After a call: each awake body's timer runs while its fastest node is slower than
 // sleep_velocity; an island (bodies linked by active contacts and attachments) whose every
-// body has run sleep_time falls asleep together. Touching a moving kinematic body, or being
-// held by the caller's frame, keeps a body awake.
+// body has run sleep_time falls asleep together. Touching a moving kinematic body keeps a
+// body awake.
 void World::update_sleep(double dt) {
     if (!def_.enable_sleep) return;
     const uint32_t n = bodies_.slot_count();
@@ -133,11 +133,10 @@ void World::update_sleep(double dt) {
     };
     for (const ContactRecord& r : state_.contacts)
         if (r.active()) join(r.body_a, r.body_b);
-    for (const Attachment& a : state_.attachments.slots) {
-        if (a.generation == 0) continue;
-        if (a.target == kFrameTarget) keep_awake[a.body] = 1;  // the caller may move it any frame
-        else join(a.body, a.target);
-    }
+    // A body held by the caller's frame sleeps as one held by a static body: moving the frame
+    // (lfem_attachment_set_frame) wakes it.
+    for (const Attachment& a : state_.attachments.slots)
+        if (a.generation != 0 && a.target != kFrameTarget) join(a.body, a.target);
     std::vector<double> v;
     for (uint32_t i = 0; i < n; ++i) {
         if (!dynamic(i)) continue;

@@ -231,6 +231,45 @@ TEST(Attachments, HeldNodesFollowAKinematicBodyAndTheCallersFrame) {
     EXPECT_LT(worst_b, 1e-12);
 }
 
+// A body hanging from the caller's frame falls asleep as one hanging from a static body does
+// (issue 36: it never slept), keeps reporting the weight its attachment carries, and wakes when
+// the frame moves, its held nodes following the frame.
+TEST(Attachments, ABodyHangingFromTheCallersFrameSleepsAndWakesWhenTheFrameMoves) {
+    lfem_world_def wd = lfem_world_def_default();
+    wd.enable_sleep = 1;
+    World w(wd);
+    Mesh m;
+    const lfem_body bar = hanging_bar(w, m);
+    const std::vector<uint32_t> top = nodes_near_z(w, bar, 0.0);
+    const lfem_attachment att = attach(w, bar, top, lfem_body{});
+    int calls = 0;
+    while (calls < 600 && lfem_body_is_awake(w, bar)) {  // damping 10: the swing is gone in 3 s
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK) << lfem_last_error();
+        ++calls;
+    }
+    std::printf("bar held by a frame: asleep after %d calls\n", calls);
+    ASSERT_EQ(lfem_body_is_awake(w, bar), 0);
+    // Asleep, it carries its weight (the last solve's multipliers) and stays where it is,
+    // bitwise. It fell asleep still ringing below sleep_velocity v_s along its axis: the
+    // stretch's swing about the static one is then at most v_s / omega_1, and the force's
+    // at most M omega_1 v_s, for the first axial mode omega_1 = (pi / 2) c / L, c = sqrt(E / rho).
+    double mass = 0;
+    lfem_body_get_mass(w, bar, &mass);
+    const double omega_1 = 0.5 * M_PI * std::sqrt(2e5 / 1000.0) / 0.3;
+    EXPECT_NEAR(force_of(w, att)[2], mass * kG, mass * omega_1 * wd.sleep_velocity);
+    const std::vector<double> x_asleep = positions(w, bar);
+    ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    EXPECT_EQ(positions(w, bar), x_asleep);
+    // The frame moves 5 cm along x: the bar wakes at once and its held nodes are there at the
+    // end of the next call (a held node meets an immovable target in one update: round-off).
+    const double f[7] = {0.05, 0, 0, 1, 0, 0, 0};
+    ASSERT_EQ(lfem_attachment_set_frame(w, att, f), LFEM_OK);
+    EXPECT_EQ(lfem_body_is_awake(w, bar), 1);
+    ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    const std::vector<double> x = positions(w, bar);
+    for (uint32_t n : top) EXPECT_NEAR(x[3 * n], x_asleep[3 * n] + 0.05, 1e-12);
+}
+
 // A weight that pulls harder than the attachment holds breaks it: the handle goes stale, an
 // event says so with the force, and the bar falls freely from then on.
 TEST(Attachments, BreaksAboveItsForceWithAnEvent) {
