@@ -110,13 +110,16 @@ CHECK_SIZE(lfem_event_type, 4);
 CHECK_SIZE(lfem_attachment, 8);
 CHECK_OFFSET(lfem_attachment, index, 0);
 CHECK_OFFSET(lfem_attachment, generation, 4);
-CHECK_SIZE(lfem_event, 48);
+CHECK_SIZE(lfem_event, 104);
 CHECK_OFFSET(lfem_event, type, 0);
 CHECK_OFFSET(lfem_event, body_a, 8);
 CHECK_OFFSET(lfem_event, body_b, 16);
 CHECK_OFFSET(lfem_event, attachment, 24);
 CHECK_OFFSET(lfem_event, normal_impulse, 32);
 CHECK_OFFSET(lfem_event, max_force, 40);
+CHECK_OFFSET(lfem_event, approach_speed, 48);
+CHECK_OFFSET(lfem_event, point, 56);
+CHECK_OFFSET(lfem_event, normal, 80);
 
 /* 64-bit targets (8-byte pointers), which every binding test runs on */
 CHECK_SIZE(void*, 8);

@@ -31,7 +31,7 @@ extern "C" {
 #endif
 
 #define LFEM_VERSION_MAJOR 0 /**< this header's version; lfem_version() gives the library's */
-#define LFEM_VERSION_MINOR 2 /**< this header's minor version */
+#define LFEM_VERSION_MINOR 3 /**< this header's minor version */
 #define LFEM_VERSION_PATCH 0 /**< this header's patch version */
 
 /* ---------------------------------------------------------------------------------------- */
@@ -465,6 +465,17 @@ typedef struct lfem_event {
     double max_force;              /**< N: contact events, the largest summed normal force of the
                                         pair at a sub-step of the call; broken: the force that
                                         broke it */
+    double approach_speed;         /**< m/s: contact events, the fastest a touching node of one
+                                        body closed on the other along the normal in the first
+                                        sub-step of the call in which they touched, before the
+                                        contact stopped it: for a begin, the impact's speed (size
+                                        a sound or damage by it); about g h for a pair at rest.
+                                        0 for the other events and for the ends a destroyed
+                                        body's pairs give */
+    double point[3];               /**< m: contact events, where that node was at the end of
+                                        that sub-step; else 0 */
+    double normal[3];              /**< contact events, the unit contact normal there, pointing
+                                        from body_a toward body_b; else 0 */
 } lfem_event;
 /** @} */
 

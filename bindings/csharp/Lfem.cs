@@ -199,6 +199,9 @@ namespace Lfem
         public Attachment Attachment;
         public double NormalImpulse;  // N s, a pair's over the step
         public double MaxForce;       // N
+        public double ApproachSpeed;  // m/s, contact events: the pair's fastest approach in the step
+        public Vec3 Point;            // m, contact events: where it was
+        public Vec3 Normal;           // contact events: unit, from BodyA toward BodyB
     }
 
     /// <summary>lfem_warning: how often, when last, for which body.</summary>
@@ -422,7 +425,7 @@ namespace Lfem
     /// <summary>Version and status names of the loaded library.</summary>
     public static class Library
     {
-        public const int VersionMajor = 0, VersionMinor = 2, VersionPatch = 0;
+        public const int VersionMajor = 0, VersionMinor = 3, VersionPatch = 0;
 
         /// <summary>(major &lt;&lt; 16) | (minor &lt;&lt; 8) | patch of the library loaded.</summary>
         public static uint Version { get { return Native.lfem_version(); } }

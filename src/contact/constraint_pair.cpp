@@ -53,7 +53,12 @@ ConstraintPair make_constraint_pair(const ContactBody& a, const ContactBody& b, 
     }
     q.rigid = a.rigid != nullptr || (q.points == 4 && b.rigid != nullptr);
     q.start = Vec3(q.point[0].x0);
-    for (int v = 1; v < q.points; ++v) q.start -= q.N[v - 1] * Vec3(q.point[v].x0);
+    Vec3 predicted(q.point[0].x);  // x*: a rigid point's x is its prediction
+    for (int v = 1; v < q.points; ++v) {
+        q.start -= q.N[v - 1] * Vec3(q.point[v].x0);
+        predicted -= q.N[v - 1] * Vec3(q.point[v].x);
+    }
+    q.approach = q.n.dot(q.start - predicted);
     q.move[0] = q.point[0].rigid ? 0.0 : q.point[0].w;
     for (int v = 1; v < q.points; ++v) q.move[v] = q.point[v].rigid ? 0.0 : q.N[v - 1] * q.point[v].w;
     q.mu = pair_friction(a.friction, b.friction);

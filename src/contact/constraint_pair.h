@@ -31,6 +31,9 @@ struct ConstraintPair {
     // sweeps stop when these no longer change, solve_contact_multipliers.cpp).
     double seen_gap = 0;
     Vec3 seen_slip = Vec3::Zero();
+    // m: how far the node closed on the face along n from the start of the step to the
+    // prediction x*, before the solve (an impact's speed times h; the events report it).
+    double approach = 0;
     uint8_t points = 4;             // 2: the other side is one immovable point (a shape's, a
                                     // static triangle's)
     bool rigid = false;             // some point is a rigid body's: the general path

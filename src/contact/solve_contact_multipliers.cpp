@@ -121,35 +121,55 @@ void solve_group(std::vector<ContactRecord>& records, ConstraintPair* pairs, con
 // One active record of a group, for its tally: its pair of bodies and its place in the group.
 struct ForceEntry {
     uint64_t key;  // body_pair_key
-    uint32_t k;    // in the group's list order
+    uint32_t k;    // in the group's list order; after the sum, that of the fastest approach
     double force;
+    double approach;  // m/s
 };
 
-// What a group leaves for the events' tally (records[order[k]], k < count, in list order):
-// the sum of the active pairs' normal multipliers per pair of bodies, each added in list order
-// (a sort by pair, then by place), written as BodyPairForces over the front of `entries`
-// (`count` of scratch); and the deepest kept offset of its records.
-void tally_group(const std::vector<ContactRecord>& records, const uint32_t* order, uint32_t count,
-                 ForceEntry* entries, GroupResult& out) {
+// What a group leaves for the events' tally (records[order[k]], k < count, in list order, with
+// their pairs[k]): the sum of the active pairs' normal multipliers per pair of bodies, each added
+// in list order (a sort by pair, then by place), with the fastest approach of each (the first in
+// list order among equals), written as ForceEntries over the front of `entries` (`count` of
+// scratch); and the deepest kept offset of its records.
+void tally_group(const std::vector<ContactRecord>& records, const ConstraintPair* pairs, const uint32_t* order,
+                 uint32_t count, double h, ForceEntry* entries, GroupResult& out) {
     uint32_t n = 0;
     double deepest = 0.0;
     for (uint32_t k = 0; k < count; ++k) {
         const ContactRecord& r = records[order[k]];
         deepest = std::max(deepest, r.kept_offset());
         if (!r.active()) continue;
-        entries[n++] = ForceEntry{body_pair_key(r.body_a, r.body_b), k, r.lambda_n};
+        entries[n++] = ForceEntry{body_pair_key(r.body_a, r.body_b), k, r.lambda_n, pairs[k].approach / h};
     }
     std::sort(entries, entries + n,
               [](const ForceEntry& x, const ForceEntry& y) { return x.key != y.key ? x.key < y.key : x.k < y.k; });
-    uint32_t pairs = 0;
+    uint32_t sums = 0;
     for (uint32_t j = 0; j < n;) {
-        const uint64_t key = entries[j].key;
-        double force = 0.0;
-        for (; j < n && entries[j].key == key; ++j) force += entries[j].force;
-        entries[pairs++] = ForceEntry{key, 0, force};  // pairs <= j: never over an entry still to read
+        ForceEntry sum{entries[j].key, entries[j].k, 0.0, entries[j].approach};
+        for (; j < n && entries[j].key == sum.key; ++j) {
+            sum.force += entries[j].force;
+            if (entries[j].approach > sum.approach) sum.approach = entries[j].approach, sum.k = entries[j].k;
+        }
+        entries[sums++] = sum;  // sums <= j: never over an entry still to read
     }
     out.deepest_kept_offset = deepest;
-    out.pair_forces = pairs;
+    out.pair_forces = sums;
+}
+
+// A pair of bodies' tally as the events take it: the fastest record's node and normal (the
+// record's points out of its body_b, toward the node's body: turned to point from the pair's
+// lower slot toward the higher).
+BodyPairForce pair_force_of(const ForceEntry& e, const std::vector<ContactRecord>& records, const ConstraintPair* pairs,
+                            const uint32_t* order) {
+    BodyPairForce f;
+    f.slot_a = uint32_t(e.key >> 32), f.slot_b = uint32_t(e.key);
+    f.force = e.force;
+    f.approach_speed = e.approach;
+    const ContactRecord& r = records[order[e.k]];
+    const Vec3 at = pairs[e.k].point[0].position();
+    const double sign = r.body_b == f.slot_a ? 1.0 : -1.0;
+    for (int d = 0; d < 3; ++d) f.point[d] = at[d], f.normal[d] = sign * r.normal[d];
+    return f;
 }
 
 // What one task of a split group reports per sweep (solve_split).
@@ -284,20 +304,20 @@ ContactSolveResult solve_contact_multipliers(const std::vector<ContactBody>& bod
         if (split) return;
         solve_group(records, pairs.data() + begin[g], order.data() + begin[g], begin[g + 1] - begin[g], held,
                     max_iterations, results[g].tolerance, results[g]);
-        tally_group(records, order.data() + begin[g], begin[g + 1] - begin[g], s.forces.data() + begin[g], results[g]);
+        tally_group(records, pairs.data() + begin[g], order.data() + begin[g], begin[g + 1] - begin[g], h,
+                    s.forces.data() + begin[g], results[g]);
     });
     for (uint32_t g = 0; g < groups; ++g) {
         if (!s.split[g]) continue;
         solve_split(records, pairs.data() + begin[g], order.data() + begin[g], s.partitions[g], max_iterations,
                     results[g].tolerance, s.tasks, results[g], pool);
-        tally_group(records, order.data() + begin[g], begin[g + 1] - begin[g], s.forces.data() + begin[g], results[g]);
+        tally_group(records, pairs.data() + begin[g], order.data() + begin[g], begin[g + 1] - begin[g], h,
+                    s.forces.data() + begin[g], results[g]);
     }
     pair_forces.clear();
     for (uint32_t g = 0; g < groups; ++g)
-        for (uint32_t k = begin[g]; k < begin[g] + results[g].pair_forces; ++k) {
-            const ForceEntry& e = s.forces[k];
-            pair_forces.push_back(BodyPairForce{uint32_t(e.key >> 32), uint32_t(e.key), e.force});
-        }
+        for (uint32_t k = begin[g]; k < begin[g] + results[g].pair_forces; ++k)
+            pair_forces.push_back(pair_force_of(s.forces[k], records, pairs.data() + begin[g], order.data() + begin[g]));
 
     // Iterations and residual of the slowest group to converge, the deepest penetration.
     ContactSolveResult result;

@@ -37,6 +37,12 @@ private:
 struct BodyPairForce {
     uint32_t slot_a = 0, slot_b = 0;  // world slots, slot_a <= slot_b
     double force = 0;                 // N
+    // The fastest approach among the pair's active records: the speed (m/s) at which the node
+    // closed on the face along the normal before the solve, the node where the solve left it,
+    // and the normal turned to point from slot_a toward slot_b.
+    double approach_speed = 0;
+    double point[3] = {0, 0, 0};
+    double normal[3] = {0, 0, 0};
 };
 
 struct ContactSolveResult {

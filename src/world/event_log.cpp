@@ -50,8 +50,19 @@ void EventLog::tally(Span<const BodyPairForce> solved, Span<const ContactRecord>
         const double longer = std::max(h_mid[a], h_mid[b]);
         return longer > 0.0 ? longer : h;
     };
-    for (const BodyPairForce& f : solved)
-        tally_of(body_pair_key(f.slot_a, f.slot_b), interval(f.slot_a, f.slot_b))->substep_force += f.force;
+    for (const BodyPairForce& f : solved) {
+        PairTally* t = tally_of(body_pair_key(f.slot_a, f.slot_b), interval(f.slot_a, f.slot_b));
+        t->substep_force += f.force;
+        // The first sub-step of the call in which the pair touched: a BEGIN's impact. (Later
+        // sub-steps' approach is no speed of the bodies: a pressed node's predicted motion
+        // holds the elastic push of the body behind it, the stress wave the contact stops.)
+        if (!t->impact_known) {
+            t->impact_known = true;
+            t->impact.approach_speed = f.approach_speed;
+            std::copy(f.point, f.point + 3, t->impact.point);
+            std::copy(f.normal, f.normal + 3, t->impact.normal);
+        }
+    }
     // The frozen pairs come ordered by node, so a pair's come in runs: its tally is looked up
     // once per run, its force summed in list order.
     uint32_t last_a = UINT32_MAX, last_b = UINT32_MAX;
@@ -91,7 +102,8 @@ void EventLog::finish_call(std::vector<uint64_t>& touching, const BodyRegistry& 
         StepEvent e;
         e.a = bodies.handle_of(uint32_t(key >> 32));
         e.b = bodies.handle_of(uint32_t(key));
-        if (found != pair_tally_.end()) e.normal_impulse = found->second.impulse, e.max_force = found->second.max_force;
+        if (found != pair_tally_.end())
+            e.normal_impulse = found->second.impulse, e.max_force = found->second.max_force, e.impact = found->second.impact;
         if (during && !before) {
             e.type = EventType::contact_begin;
             events.push_back(e);

@@ -17,12 +17,22 @@
 namespace lfem {
 
 // One event, with the world's handles.
+// Where and how fast two bodies came together: the fastest approach of their touching points
+// in the first sub-step of a call they touched in (BodyPairForce), the normal from the
+// event's body a toward its body b.
+struct ImpactPoint {
+    double approach_speed = 0;  // m/s
+    double point[3] = {0, 0, 0};
+    double normal[3] = {0, 0, 0};
+};
+
 struct StepEvent {
     EventType type = EventType::contact_begin;
     BodyHandle a{}, b{};
     AttachmentHandle attachment{};
     double normal_impulse = 0;  // N s
     double max_force = 0;       // N
+    ImpactPoint impact;         // contact events: the pair's approach in its first sub-step of the call
 };
 
 class EventLog {
@@ -61,6 +71,8 @@ public:
 private:
     struct PairTally {
         double impulse = 0, max_force = 0;
+        ImpactPoint impact;        // the approach of the first sub-step of the call it touched in
+        bool impact_known = false;
         double substep_force = 0;  // N, summed over the sub-step being tallied
         double interval = 0;       // s, the sub-step's interval for this pair's impulse
         uint64_t last_substep = 0;

@@ -91,7 +91,8 @@ public static class LfemTests
                          "ThreadCount", 44,
                          "ContactTolerance", 48, "MaxSubsteps", 56, "AllowUnstableStep", 60, "internalValue", 64,
                          "MassScalingStep", 72, "EnableSleep", 61, "SleepVelocity", 80, "SleepTime", 88);
-        Layout<Event>(48, "BodyA", 8, "BodyB", 16, "Attachment", 24, "NormalImpulse", 32, "MaxForce", 40);
+        Layout<Event>(104, "BodyA", 8, "BodyB", 16, "Attachment", 24, "NormalImpulse", 32, "MaxForce", 40,
+                      "ApproachSpeed", 48, "Point", 56, "Normal", 80);
         Layout<WorldStats>(184, "Steps", 8, "StepSize", 16, "StableStep", 24, "SubstepsLastCall", 32, "BodyCount", 36,
                            "KineticEnergy", 40, "EnergyError", 72, "LinearMomentum", 80, "AngularMomentum", 104,
                            "ContactCount", 128, "SolverIterations", 132, "SolverResidual", 136, "MaxPenetration", 144,

@@ -333,6 +333,7 @@ class Event(ctypes.Structure):
     _fields_ = [
         ("_type", ctypes.c_int), ("_padding", ctypes.c_uint32), ("body_a", Body), ("body_b", Body),
         ("attachment", Attachment), ("normal_impulse", ctypes.c_double), ("max_force", ctypes.c_double),
+        ("approach_speed", ctypes.c_double), ("point", _d3), ("normal", _d3),
     ]
 
     @property

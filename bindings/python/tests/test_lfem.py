@@ -46,8 +46,8 @@ class Layout(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(ctypes.c_void_p), 8)
         self.assertEqual(ctypes.sizeof(ctypes.c_int), 4)  # enums
         self.check(lfem.Body, 8, {"index": 0, "generation": 4})
-        self.check(lfem.Event, 48, {"body_a": 8, "body_b": 16, "attachment": 24, "normal_impulse": 32,
-                                    "max_force": 40})
+        self.check(lfem.Event, 104, {"body_a": 8, "body_b": 16, "attachment": 24, "normal_impulse": 32,
+                                     "max_force": 40, "approach_speed": 48, "point": 56, "normal": 80})
         self.check(lfem.WorldDef, 96, {
             "gravity": 0, "time_step": 24, "step_safety": 32, "contact_iterations": 40,
             "thread_count": 44,

@@ -11,7 +11,7 @@ use std::mem::size_of;
 use std::os::raw::{c_char, c_double, c_int, c_void};
 
 pub const LFEM_VERSION_MAJOR: u32 = 0;
-pub const LFEM_VERSION_MINOR: u32 = 2;
+pub const LFEM_VERSION_MINOR: u32 = 3;
 pub const LFEM_VERSION_PATCH: u32 = 0;
 
 // ---- enums: 32-bit integers in C; kept as integers here (an unknown value is not UB) ---------
@@ -182,6 +182,9 @@ pub struct lfem_event {
     pub attachment: lfem_attachment,
     pub normal_impulse: c_double,
     pub max_force: c_double,
+    pub approach_speed: c_double,
+    pub point: [c_double; 3],
+    pub normal: [c_double; 3],
 }
 
 /// The kinds of warning (lfem_warning_kind).
@@ -356,7 +359,7 @@ const _: () = assert!(size_of::<lfem_shape_type>() == 4);
 const _: () = assert!(size_of::<lfem_body>() == 8);
 const _: () = assert!(size_of::<lfem_world_def>() == 96);
 const _: () = assert!(size_of::<lfem_attachment>() == 8);
-const _: () = assert!(size_of::<lfem_event>() == 48);
+const _: () = assert!(size_of::<lfem_event>() == 104);
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(size_of::<lfem_attachment_def>() == 96);
 const _: () = assert!(size_of::<lfem_world_stats>() == 184);

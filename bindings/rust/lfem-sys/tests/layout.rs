@@ -113,6 +113,9 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_event, attachment), 24);
     assert_eq!(offset!(lfem_event, normal_impulse), 32);
     assert_eq!(offset!(lfem_event, max_force), 40);
+    assert_eq!(offset!(lfem_event, approach_speed), 48);
+    assert_eq!(offset!(lfem_event, point), 56);
+    assert_eq!(offset!(lfem_event, normal), 80);
     assert_eq!(offset!(lfem_body_def, user_data), 104);
     assert_eq!(offset!(lfem_body_def, internal_value), 112);
 

@@ -661,6 +661,12 @@ pub struct Event {
     pub normal_impulse: f64,
     /// N: a pair's largest summed normal force at a sub-step; the force that broke an attachment.
     pub max_force: f64,
+    /// m/s: a contact pair's fastest approach at a sub-step of the step (an impact's speed).
+    pub approach_speed: f64,
+    /// m: where that approach was, at the end of its sub-step (contact events).
+    pub point: [f64; 3],
+    /// The unit contact normal there, from `body_a` toward `body_b` (contact events).
+    pub normal: [f64; 3],
 }
 
 /// A body's inverted tets after the last sub-step (lfem_body_get_inversion).
@@ -959,6 +965,9 @@ impl World {
                 attachment: Attachment { index: e.attachment.index, generation: e.attachment.generation },
                 normal_impulse: e.normal_impulse,
                 max_force: e.max_force,
+                approach_speed: e.approach_speed,
+                point: e.point,
+                normal: e.normal,
             })
             .collect())
     }
