@@ -21,6 +21,18 @@
 namespace lfem {
 namespace {
 
+// The body's mass and its first moments must be finite numbers.
+void require_finite_mass(const std::vector<double>& mass, const std::vector<double>& X) {
+    double total = 0.0, moment = 0.0;
+    for (std::size_t i = 0; i < mass.size(); ++i) {
+        total += mass[i];
+        moment += mass[i] * (std::fabs(X[3 * i]) + std::fabs(X[3 * i + 1]) + std::fabs(X[3 * i + 2]));
+    }
+    if (!std::isfinite(total) || !std::isfinite(moment))
+        throw Error(Status::invalid_mesh, "the body's mass overflows a double (density times volume, or "
+                                              "times the distance from the origin)");
+}
+
 std::string number(double v) { return format_number(v, 3); }
 
 // A curved 10-node tet must not fold over: det J > 0, and not flat (the linear tets' test,
@@ -97,6 +109,9 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
     add_lumped_mass(ref.tets.data(), ref.volume.data(), old_tets, old_tets + tet_count, body.def.density,
                     ref.mass.data(), nodes_per_tet);
     const uint32_t n = ref.node_count();
+    // Each tet's volume is finite (mesh_check), but density times a volume near the largest
+    // double, summed, or its moments about the origin, may not be (found by fuzz_api).
+    require_finite_mass(ref.mass, ref.X);
     derive_reference_data(body, ref);
     if (body.is_deformable() && def.mass_scaling_step > 0.0) {
         // Mass for the tets that would need a shorter step than the requested one (all the
@@ -122,6 +137,7 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
     if (body.is_rigid()) {
         // The inertia of the lumped masses about the centre of mass, in the reference frame.
         const Mat3 I = inertia_tensor(ref.mass.data(), ref.X.data(), n, C);
+        if (!I.allFinite()) throw Error(Status::invalid_mesh, "the body's inertia overflows a double (mass times size squared)");
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) ref.inertia[3 * r + c] = I(r, c);
     }

@@ -121,6 +121,11 @@ TEST_F(BadInput, BadMeshes) {
     bad_mesh({0, 1, 2, 3}, nan_x, 4, LFEM_INVALID_ARGUMENT, "NaN position");
     bad_mesh({0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3}, X, 4, LFEM_INVALID_MESH,
              "face shared by three tets");
+    // A tet whose volume is finite (1.5e102^3 / 6 = 5.6e305 m^3) but whose mass at the default
+    // 1000 kg/m^3 overflows (found by fuzz_api: the body's mass was inf).
+    const double s = 1.5e102, huge[] = {0, 0, 0, s, 0, 0, 0, s, 0, 0, 0, s};
+    bad_mesh({0, 1, 2, 3}, huge, 4, LFEM_INVALID_MESH, "a mass that overflows");
+    EXPECT_NE(std::string(lfem_last_error()).find("mass overflows"), std::string::npos);
 }
 
 // 10-node tets (lfem_body_add_quadratic_mesh): the linear checks on their corners, then their
