@@ -217,9 +217,39 @@ LFEM_API lfem_status lfem_body_get_positions(const lfem_world* world, lfem_body 
 LFEM_API lfem_status lfem_body_get_velocities(const lfem_world* world, lfem_body body,
                                               double* out, uint32_t node_capacity);
 
-/** Overwrite the velocities (m/s, 3 per node, node_count must equal the body's). */
+/** Overwrite the velocities (m/s, 3 per node, node_count must equal the body's). A rigid body
+ * (with a mesh) takes the rigid motion nearest the field: the one with its momentum and its
+ * angular momentum about the centre of mass. The change of kinetic energy is the caller's work. */
 LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
                                               const double* velocities, uint32_t node_count);
+
+/** Teleport a deformable body's nodes to new positions (m, 3 per node; node_count must equal
+ * the body's), deformed or not. Its velocities are kept, the change of strain energy is booked as
+ * external work, and the body and what rested on it wake. Its pairs end (an
+ * LFEM_EVENT_CONTACT_END each with the next step's events; touching where it lands begins anew).
+ * Attachments hold: held nodes are pulled back to their target at the next step (move it too). */
+LFEM_API lfem_status lfem_body_set_positions(lfem_world* world, lfem_body body,
+                                             const double* positions, uint32_t node_count);
+
+/** The body's pose: the rigid motion x = R X + t that carries its mesh as added (X) to where its
+ * nodes are now (x); out[0..2] = t (m), out[3..6] = R as a unit quaternion (w, x, y, z). A rigid
+ * body's exactly, a kinematic body's as it has moved and turned, a static body's the identity;
+ * a deformable body's best fit (the polar rotation of sum m (x - c)(X - C)^T about the centres
+ * of mass, the floating frame of the "paper" model), for an engine to parent objects to. */
+LFEM_API lfem_status lfem_body_get_transform(const lfem_world* world, lfem_body body, double out[7]);
+
+/** The centre of mass where the nodes are now (m): a rigid body's centre, a kinematic body's
+ * pivot, a static body's centre as added. */
+LFEM_API lfem_status lfem_body_get_center_of_mass(const lfem_world* world, lfem_body body,
+                                                  double out[3]);
+
+/** Teleport a body rigidly, at once, to the pose `transform` (t, then a quaternion w x y z,
+ * normalised here: lfem_body_get_transform then gives it). Its velocities are kept (a rigid
+ * body's spin turns with it) and no work is done; its pairs end and what rested on it wakes, as
+ * with lfem_body_set_positions. Rigid, kinematic and deformable bodies with a mesh or shapes; a
+ * static body does not move (LFEM_INVALID_ARGUMENT). */
+LFEM_API lfem_status lfem_body_set_transform(lfem_world* world, lfem_body body,
+                                             const double transform[7]);
 
 /** Boundary triangles (3 node indices each, counter-clockwise seen from outside): the flat
  * triangles contact uses, which for a body of 10-node tets are the 4 triangles of each 6-node

@@ -836,6 +836,39 @@ namespace Lfem
             return r;
         }
 
+        /// <summary>Teleport a deformable body's nodes (m, one per node): velocities kept, the change
+        /// of strain energy booked as work, its pairs end.</summary>
+        public void SetPositions(Body body, Vec3[] positions)
+        {
+            if (positions == null) throw new ArgumentNullException("positions");
+            LfemException.Check(Native.lfem_body_set_positions(handle, body, positions, (uint)positions.Length));
+        }
+
+        /// <summary>The body's pose x = R X + t: t, then R as a quaternion w x y z (7 numbers; a
+        /// deformable body's best fit).</summary>
+        public double[] GetTransform(Body body)
+        {
+            double[] t = new double[7];
+            LfemException.Check(Native.lfem_body_get_transform(handle, body, t));
+            return t;
+        }
+
+        /// <summary>Teleport a body rigidly to the pose (t, then a quaternion w x y z): velocities
+        /// kept, no work.</summary>
+        public void SetTransform(Body body, double[] transform)
+        {
+            if (transform == null || transform.Length != 7) throw new ArgumentException("transform must hold 7 numbers", "transform");
+            LfemException.Check(Native.lfem_body_set_transform(handle, body, transform));
+        }
+
+        /// <summary>The centre of mass where the nodes are now (m).</summary>
+        public Vec3 GetCenterOfMass(Body body)
+        {
+            Vec3 c;
+            LfemException.Check(Native.lfem_body_get_center_of_mass(handle, body, out c));
+            return c;
+        }
+
         /// <summary>The nodes whose current position lies in the box [lo, hi] (m).</summary>
         public uint[] FindNodesInBox(Body body, Vec3 lo, Vec3 hi)
         {
@@ -1240,6 +1273,10 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_boundary_faces(WorldHandle world, Body body, [Out] uint[] faces, uint faceCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_von_mises_stress(WorldHandle world, Body body, [Out] double[] stress, uint tetCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_rotation(WorldHandle world, Body body, [Out] double[] rotation);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_positions(WorldHandle world, Body body, [In] Vec3[] positions, uint nodeCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_transform(WorldHandle world, Body body, [Out] double[] transform);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_transform(WorldHandle world, Body body, [In] double[] transform);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_center_of_mass(WorldHandle world, Body body, out Vec3 center);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_find_nodes_in_box(WorldHandle world, Body body, ref Vec3 lo, ref Vec3 hi, [Out] uint[] nodes, uint capacity, out uint count);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_fix_nodes(WorldHandle world, Body body, [In] uint[] nodes, uint count);

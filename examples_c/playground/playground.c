@@ -10,6 +10,7 @@
  * fixed-step accumulator (at most 4 ticks a drawn frame). Headless, each frame is one tick. */
 #include <SDL.h>
 #include <SDL_opengl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,13 +54,15 @@ static void default_camera(pg_camera* c, int width, int height) {
     c->height = height;
 }
 
+/* Everything back where it was built, by teleports: the world and its handles stay. */
 static int reset(app* a) {
-    pg_room_destroy(&a->room);
+    double ignored[3];
+    if (a->grab.active && pg_grab_release(&a->grab, &a->room, ignored) != 0) return -1;
     memset(&a->grab, 0, sizeof a->grab);
     const double fps = a->stats.fps;
-    memset(&a->stats, 0, sizeof a->stats); /* the HUD's figures start again with the room */
+    memset(&a->stats, 0, sizeof a->stats); /* the HUD's figures start again */
     a->stats.fps = fps;
-    return pg_room_create(&a->room, a->threads);
+    return pg_room_reset(&a->room);
 }
 
 /* The mouse, or the headless script through the same calls. */
@@ -113,8 +116,27 @@ static int draw_frame(app* a, int hud) {
 /* ---------------------------------------------------------------------------------------- */
 
 /* The script: at kPressFrame the cursor presses where the first jelly cube's centre is seen,
- * lifts it for kLiftFrames ticks, swings it right for kSwingFrames and lets go. */
-enum { kPressFrame = 40, kLiftFrames = 30, kSwingFrames = 20 };
+ * lifts it for kLiftFrames ticks, swings it right for kSwingFrames and lets go; at kResetFrame
+ * the room is reset (teleports), and every body must then be where it was built, at rest. */
+enum { kPressFrame = 40, kLiftFrames = 30, kSwingFrames = 20, kResetFrame = 105 };
+
+static int check_reset(app* a, int frame) {
+    if (reset(a) != 0) return -1;
+    int back = 0;
+    for (int i = 0; i < a->room.body_count; ++i) {
+        const pg_body* b = &a->room.bodies[i];
+        double* x = (double*)malloc(sizeof(double) * 6 * b->node_count);
+        int same = x && lfem_body_get_positions(a->room.world, b->body, x, b->node_count) == LFEM_OK &&
+                   lfem_body_get_velocities(a->room.world, b->body, x + 3 * b->node_count, b->node_count) == LFEM_OK;
+        /* Soft bodies: their nodes exactly; the crate: placed by its pose, to round-off. */
+        for (uint32_t k = 0; same && k < 3 * b->node_count; ++k)
+            same = fabs(x[k] - b->start[k]) <= (b->deformable ? 0.0 : 1e-12) && x[3 * b->node_count + k] == 0.0;
+        free(x);
+        back += same;
+    }
+    printf("reset: frame %d, %d of %d bodies back where they were built, at rest\n", frame, back, a->room.body_count);
+    return back == a->room.body_count ? 0 : -1;
+}
 
 static int body_centre(const pg_room* room, lfem_body body, double centre[3]) {
     uint32_t n = 0;
@@ -132,6 +154,7 @@ static double ease(double u) { return u * u * (3 - 2 * u); }
 
 static int script(app* a, int frame) {
     static double start[2];
+    if (frame == kResetFrame) return check_reset(a, frame);
     const double lift = 0.30 * a->camera.height, swing = 0.22 * a->camera.width;
     if (frame == kPressFrame) {
         double centre[3];

@@ -175,6 +175,42 @@ static int build_bodies(pg_room* room) {
     return add_box_body(room, &crate, crate_at, crate_size, crate_cells, 0.02, 6, 0.65, 0.50, 0.35);
 }
 
+/* Each body's nodes as built, for pg_room_reset. */
+static int keep_start(pg_room* room) {
+    for (int i = 0; i < room->body_count; ++i) {
+        pg_body* b = &room->bodies[i];
+        PG_TRY(lfem_body_get_node_count(room->world, b->body, &b->node_count));
+        b->start = (double*)malloc(sizeof(double) * 3 * b->node_count);
+        if (!b->start) return -1;
+        PG_TRY(lfem_body_get_positions(room->world, b->body, b->start, b->node_count));
+    }
+    return 0;
+}
+
+int pg_room_reset(pg_room* room) {
+    for (int i = 0; i < room->body_count; ++i) {
+        pg_body* b = &room->bodies[i];
+        double* zero = (double*)calloc(3 * (size_t)b->node_count, sizeof(double));
+        if (!zero) return -1;
+        lfem_status s;
+        if (b->deformable) {
+            s = lfem_body_set_positions(room->world, b->body, b->start, b->node_count);
+        } else {
+            /* The crate's mesh as built is its reference: the identity pose puts it back. */
+            const double identity[7] = {0, 0, 0, 1, 0, 0, 0};
+            s = lfem_body_set_transform(room->world, b->body, identity);
+        }
+        if (s == LFEM_OK) s = lfem_body_set_velocities(room->world, b->body, zero, b->node_count);
+        free(zero);
+        if (s != LFEM_OK) {
+            fprintf(stderr, "playground: resetting body %d failed: %s\n", i, lfem_last_error());
+            return -1;
+        }
+        b->flash = 0;
+    }
+    return 0;
+}
+
 int pg_room_create(pg_room* room, uint32_t thread_count) {
     memset(room, 0, sizeof *room);
     lfem_world_def def = lfem_world_def_default();
@@ -185,7 +221,7 @@ int pg_room_create(pg_room* room, uint32_t thread_count) {
         fprintf(stderr, "playground: lfem_world_create failed: %s\n", lfem_last_error());
         return -1;
     }
-    if (build_static(room) != 0 || build_bodies(room) != 0) {
+    if (build_static(room) != 0 || build_bodies(room) != 0 || keep_start(room) != 0) {
         pg_room_destroy(room);
         return -1;
     }
@@ -193,7 +229,7 @@ int pg_room_create(pg_room* room, uint32_t thread_count) {
 }
 
 void pg_room_destroy(pg_room* room) {
-    for (int i = 0; i < room->body_count; ++i) pg_mesh_destroy(&room->bodies[i].skin);
+    for (int i = 0; i < room->body_count; ++i) pg_mesh_destroy(&room->bodies[i].skin), free(room->bodies[i].start);
     for (int i = 0; i < room->shape_count; ++i) pg_mesh_destroy(&room->shapes[i].mesh);
     free(room->events);
     lfem_world_destroy(room->world);
@@ -219,9 +255,10 @@ int pg_room_sleeping(const pg_room* room) {
     return n;
 }
 
-/* 1 N s is the smallest cube (4.1 kg) arriving at 0.24 m/s: a contact that begins with less
- * is a body settling or sliding onto a neighbour, not an impact worth a flash. */
-static const double kImpactImpulse = 1.0;
+/* An impact worth a flash: bodies that met at 0.3 m/s or faster (a body put down or settling
+ * meets at about g h, a few cm/s at the sub-steps of these jellies; a cube dropped from its own
+ * height at 1.7 m/s); the flash grows with the speed, full from 3 m/s. */
+static const double kImpactSpeed = 0.3, kFullFlashSpeed = 3.0;
 
 static lfem_status read_events(pg_room* room) {
     lfem_status s = lfem_world_get_events(room->world, room->events, room->event_capacity, &room->event_count);
@@ -246,11 +283,12 @@ lfem_status pg_room_step(pg_room* room, double dt) {
     if (s != LFEM_OK) return s;
     for (uint32_t i = 0; i < room->event_count; ++i) {
         const lfem_event* e = &room->events[i];
-        if (e->type != LFEM_EVENT_CONTACT_BEGIN || e->normal_impulse < kImpactImpulse) continue;
+        if (e->type != LFEM_EVENT_CONTACT_BEGIN || e->approach_speed < kImpactSpeed) continue;
         room->impacts++;
+        const float strength = (float)(e->approach_speed < kFullFlashSpeed ? e->approach_speed / kFullFlashSpeed : 1.0);
         pg_body* hit[2] = {pg_room_find(room, e->body_a), pg_room_find(room, e->body_b)};
         for (int k = 0; k < 2; ++k)
-            if (hit[k]) hit[k]->flash = 1.0f;
+            if (hit[k] && hit[k]->flash < strength) hit[k]->flash = strength;
     }
     return LFEM_OK;
 }

@@ -32,7 +32,9 @@ typedef struct pg_body {
     int deformable;      /* 1: the mouse may grab it (attachments hold deformable bodies) */
     float colour[3];
     pg_mesh skin;        /* the skin's triangles, and its vertices as read after each frame */
-    float flash;         /* 1 right after an impact, fading to 0 (the HUD's impacts, seen) */
+    float flash;         /* up to 1 right after an impact (by its speed), fading to 0 */
+    double* start;       /* its nodes as built (3 per node): a reset teleports it back */
+    uint32_t node_count;
 } pg_body;
 
 /* A static shape as drawn: its surface in world coordinates. */
@@ -49,12 +51,17 @@ typedef struct pg_room {
     int shape_count;
     lfem_event* events;  /* the last step's events (grown as needed) */
     uint32_t event_capacity, event_count;
-    uint64_t impacts;    /* contacts begun with an impulse worth a flash, since the start */
+    uint64_t impacts;    /* contacts begun fast enough for a flash, since the start */
 } pg_room;
 
 /* Builds the room on a world of thread_count threads. Returns 0, or -1 after printing why. */
 int pg_room_create(pg_room* room, uint32_t thread_count);
 void pg_room_destroy(pg_room* room);
+
+/* Puts every body back where it was built, at rest, by teleports (lfem_body_set_positions for
+ * a soft body, its shape as built; lfem_body_set_transform for the crate; then zero velocities):
+ * the world, its handles and skins stay. Returns 0, or -1 after printing why. */
+int pg_room_reset(pg_room* room);
 
 /* One frame of the game loop's physics: lfem_world_step(dt), then the events (impacts counted,
  * the bodies hit flashed). Returns lfem_world_step's status (the world is rolled back on

@@ -12,14 +12,6 @@ using namespace lfem::api;
 namespace {
 
 
-// A frame as the caller gives it: a finite centre and a quaternion that can be normalised.
-void check_frame(const double* frame, const char* what) {
-    require_pointer(frame, what);
-    require_finite(frame, 7, what);
-    const double q2 = frame[3] * frame[3] + frame[4] * frame[4] + frame[5] * frame[5] + frame[6] * frame[6];
-    require(q2 > 1e-12, std::string(what) + "'s quaternion (elements 3..6) must not be zero");
-}
-
 lfem_event event_as_c(const StepEvent& e) {
     lfem_event out{};
     out.type = to_c(e.type);
@@ -56,7 +48,7 @@ LFEM_API lfem_status lfem_attachment_create(lfem_world* world, const lfem_attach
         require(target.is_null() || w.is_valid(target),
                 "def->target {" + std::to_string(def->target.index) + ", " + std::to_string(def->target.generation) +
                     "} is stale or of another world (the null handle means the caller's frame)");
-        if (target.is_null()) check_frame(def->frame, "def->frame");
+        if (target.is_null()) require_pose(def->frame, "def->frame");
         require(std::isfinite(def->break_force) && def->break_force >= 0.0,
                 "def->break_force must be finite and >= 0 N (0 = never breaks)");
         const std::vector<uint32_t> nodes = internal_nodes(b, def->nodes, def->node_count);
@@ -78,7 +70,7 @@ LFEM_API lfem_status lfem_attachment_set_frame(lfem_world* world, lfem_attachmen
     return guard(__func__, [&] {
         World& w = world_of(world);
         w.attachment(from_c(attachment));  // the handle first
-        check_frame(frame, "frame");
+        require_pose(frame, "frame");
         w.set_attachment_frame(from_c(attachment), frame);
     });
 }

@@ -240,7 +240,8 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
     return guard(__func__, [&] {
         World& w = world_of(world);
         const Body& b = w.body(from_c(body));
-        require_deformable(b, "setting node velocities");
+        require(b.is_deformable() || (b.is_rigid() && b.has_mesh()),
+                "setting node velocities needs a deformable body or a rigid body with a mesh");
         require_pointer(velocities, "velocities");
         require(node_count == b.node_count(),
                 "node_count " + std::to_string(node_count) + " differs from the body's " +
@@ -249,6 +250,51 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
         std::vector<double> v(3 * std::size_t(b.node_count()));  // internal order
         b.numbering().nodes_from_api(velocities, node_count, v.data());
         w.set_velocities(from_c(body), v.data());
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_positions(lfem_world* world, lfem_body body, const double* positions,
+                                             uint32_t node_count) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
+        require_deformable(b, "setting node positions");
+        require_pointer(positions, "positions");
+        require(node_count == b.node_count(),
+                "node_count " + std::to_string(node_count) + " differs from the body's " +
+                    std::to_string(b.node_count()));
+        require_finite(positions, 3 * std::size_t(node_count), "positions");
+        std::vector<double> x(3 * std::size_t(b.node_count()));  // internal order
+        b.numbering().nodes_from_api(positions, node_count, x.data());
+        w.set_positions(from_c(body), x.data());
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_transform(lfem_world* world, lfem_body body, const double transform[7]) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));  // the handle first
+        require_pose(transform, "transform");
+        w.set_transform(from_c(body), transform);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_transform(const lfem_world* world, lfem_body body, double out[7]) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
+        require_pointer(out, "out");
+        w.body_transform(b, out);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_center_of_mass(const lfem_world* world, lfem_body body, double out[3]) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
+        require_pointer(out, "out");
+        const Vec3 c = w.body_center_of_mass(b);
+        for (int k = 0; k < 3; ++k) out[k] = c[k];
     });
 }
 

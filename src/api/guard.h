@@ -52,6 +52,15 @@ inline void require_finite(const double* v, std::size_t n, const char* name) {
                         std::string(name) + "[" + std::to_string(i) + "] is not finite");
 }
 
+// A pose as the caller gives it (a frame, a transform): a finite centre and a quaternion
+// (w, x, y, z) that can be normalised.
+inline void require_pose(const double* pose, const char* name) {
+    require_pointer(pose, name);
+    require_finite(pose, 7, name);
+    const double q2 = pose[3] * pose[3] + pose[4] * pose[4] + pose[5] * pose[5] + pose[6] * pose[6];
+    require(q2 > 1e-12, std::string(name) + "'s quaternion (elements 3..6) must not be zero");
+}
+
 // A feature this build leaves out: LFEM_UNSUPPORTED, naming the CMake option that brings it
 // back. Called after the arguments were checked, so a bad argument still gets its own status.
 [[noreturn]] inline void unsupported(const std::string& what, const char* option) {

@@ -11,16 +11,6 @@ Quat rotation_of(const Vec3& theta) {
     return a > 0.0 ? Quat(Eigen::AngleAxisd(a, theta / a)) : Quat::Identity();
 }
 
-// Place every node rigidly: x_i = c + R (X_i - C).
-void place_nodes(const RigidBodyView& b, const GlobalMotion& m, Span<double> x) {
-    const Mat3 R = load_quaternion(m.rotation).toRotationMatrix();
-    const Vec3 c(m.center);
-    for (uint32_t i = 0; i < x.size() / 3; ++i) {
-        const Vec3 xi = c + R * (Vec3(&b.X[3 * i]) - b.com);
-        for (int k = 0; k < 3; ++k) x[3 * i + k] = xi[k];
-    }
-}
-
 // Gravity plus the node forces, and the node forces' torque about the centre.
 void applied_load(const RigidBodyView& b, const GlobalMotion& m, Span<const double> x,
                   const double g[3], Vec3& force, Vec3& torque) {
@@ -35,6 +25,15 @@ void applied_load(const RigidBodyView& b, const GlobalMotion& m, Span<const doub
 }
 
 }  // namespace
+
+void place_nodes(const RigidBodyView& b, const GlobalMotion& m, Span<double> x) {
+    const Mat3 R = load_quaternion(m.rotation).toRotationMatrix();
+    const Vec3 c(m.center);
+    for (uint32_t i = 0; i < x.size() / 3; ++i) {
+        const Vec3 xi = c + R * (Vec3(&b.X[3 * i]) - b.com);
+        for (int k = 0; k < 3; ++k) x[3 * i + k] = xi[k];
+    }
+}
 
 Mat3 rigid_world_inertia(const RigidBodyView& b, const GlobalMotion& m) {
     const Mat3 R = load_quaternion(m.rotation).toRotationMatrix();
@@ -91,23 +90,28 @@ double commit_rigid(const RigidBodyView& b, double h, const Vec3& dc, const Vec3
     return rigid_kinetic_energy(b, m) - before;
 }
 
+void move_rigidly(const Mat3& R, const Quat& turn, const Vec3& from, const Vec3& to, Span<double> x,
+                  Span<double> shape_poses) {
+    for (uint32_t i = 0; i < x.size() / 3; ++i) {
+        const Vec3 xi = to + R * (Vec3(&x[3 * i]) - from);
+        for (int k = 0; k < 3; ++k) x[3 * i + k] = xi[k];
+    }
+    for (std::size_t j = 0; j < shape_poses.size(); j += 7) {
+        const Vec3 c = to + R * (Vec3(&shape_poses[j]) - from);
+        const Quat q = (turn * load_quaternion(&shape_poses[j + 3])).normalized();
+        for (int k = 0; k < 3; ++k) shape_poses[j + k] = c[k];
+        store_quaternion(q, &shape_poses[j + 3]);
+    }
+}
+
 void move_kinematic(const Vec3& lin, const Vec3& ang, double h, double center[3], double rotation[4], Span<double> x,
                     Span<double> shape_poses) {
     const Vec3 c_old(center);
     const Vec3 c_new = c_old + h * lin;
     const double angle = h * ang.norm();
     const Mat3 Rot = angle > 0.0 ? Mat3(Eigen::AngleAxisd(angle, ang.normalized()).toRotationMatrix()) : Mat3::Identity();
-    for (uint32_t i = 0; i < x.size() / 3; ++i) {
-        const Vec3 xi = c_new + Rot * (Vec3(&x[3 * i]) - c_old);
-        for (int k = 0; k < 3; ++k) x[3 * i + k] = xi[k];
-    }
     const Quat turn(Rot);
-    for (std::size_t j = 0; j < shape_poses.size(); j += 7) {
-        const Vec3 c = c_new + Rot * (Vec3(&shape_poses[j]) - c_old);
-        const Quat q = (turn * load_quaternion(&shape_poses[j + 3])).normalized();
-        for (int k = 0; k < 3; ++k) shape_poses[j + k] = c[k];
-        store_quaternion(q, &shape_poses[j + 3]);
-    }
+    move_rigidly(Rot, turn, c_old, c_new, x, shape_poses);
     for (int k = 0; k < 3; ++k) center[k] = c_new[k];
     store_quaternion((turn * load_quaternion(rotation)).normalized(), rotation);
 }

@@ -39,6 +39,14 @@ Vec3 rigid_synchronized_velocity(const RigidBodyView& body, const GlobalMotion& 
                                  Span<const double> x, const double gravity[3], double h_last, Vec3& V,
                                  Vec3& omega);
 
+// Place every node rigidly at the frame: x_i = c + R (X_i - C).
+void place_nodes(const RigidBodyView& body, const GlobalMotion& motion, Span<double> x);
+
+// Move nodes (3 per node) and shape placements (7 per shape: centre, quaternion w, x, y, z)
+// rigidly: x -> to + R (x - from), a shape's rotation turned by `turn` (R's quaternion).
+void move_rigidly(const Mat3& R, const Quat& turn, const Vec3& from, const Vec3& to, Span<double> x,
+                  Span<double> shape_poses);
+
 // A kinematic body moves rigidly: its centre by v h, its nodes (3 per node) and the
 // placements of its shapes (7 per shape: centre, quaternion w, x, y, z) turned by omega h
 // about the centre, and its rotation since it was created (a quaternion, for what is attached

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "rigid/global_rotation.h"
+#include "rigid/rigid_body.h"
 #include "world/world.h"
 
 namespace lfem {
@@ -13,6 +14,27 @@ void World::set_velocities(BodyHandle handle, const double* v) {
     Body& body = bodies_.get(handle);
     wake(handle.index);
     const uint32_t n = body.ref.node_count();
+    if (body.is_rigid()) {
+        // The rigid motion nearest the field: the one with its momentum and its angular
+        // momentum about the centre of mass (V = P / M, L; the nodes' lumped masses).
+        const RigidBodyView view = rigid_view(body);
+        const double before = rigid_kinetic_energy(view, body.state.global);
+        const Vec3 c(body.state.global.center);
+        Vec3 P = Vec3::Zero();
+        for (uint32_t i = 0; i < n; ++i) P += body.ref.mass[i] * Vec3(&v[3 * i]);
+        const Vec3 L = angular_momentum(body.ref.mass.data(), body.state.x.data(), v, n, c);
+        for (int k = 0; k < 3; ++k)
+            body.state.global.velocity[k] = P[k] / body.ref.total_mass, body.state.global.angular_momentum[k] = L[k];
+        const Vec3 omega = rigid_world_inertia(view, body.state.global).ldlt().solve(L);
+        for (uint32_t i = 0; i < n; ++i) {
+            const Vec3 vi = Vec3(body.state.global.velocity) + omega.cross(Vec3(&body.state.x[3 * i]) - c);
+            for (int k = 0; k < 3; ++k) body.state.v_half[3 * i + k] = vi[k];
+        }
+        body.state.h_last = 0.0;  // the frame holds synchronized velocities
+        std::vector<double>().swap(body.state.contact_force);
+        state_.counters.external_work += rigid_kinetic_energy(view, body.state.global) - before;
+        return;
+    }
     double before = 0.0, after = 0.0;
     if (body.is_deformable()) {
         std::vector<double> old(3 * std::size_t(n));

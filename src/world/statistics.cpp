@@ -7,15 +7,16 @@
 #include "world/world.h"
 
 namespace lfem {
-namespace {
-
-// The step a rigid body's velocity is extrapolated over to the end of its last step (h_last, or
-// 0 for none). A body pressed by a contact or held by an attachment reports its last step's
+// A rigid body's synchronized velocity, extrapolated over half its last step (h_last; none
+// after a reset). A body pressed by a contact or held by an attachment reports its last step's
 // velocity, as a deformable body's pressed node does: the half-step extrapolation knows gravity
-// but not the support, and a body at rest on a floor would report -g h/2.
-double rigid_extrapolation(const BodyState& s) { return s.contact_force.empty() ? s.h_last : 0.0; }
-
-}  // namespace
+// but not the support, and a body at rest on a floor would report -g h/2. Returns its angular
+// momentum about its centre.
+Vec3 World::rigid_velocity(const Body& b, Vec3& V, Vec3& omega) const {
+    const BodyState& s = b.state;
+    const double h = s.contact_force.empty() ? s.h_last : 0.0;
+    return rigid_synchronized_velocity(rigid_view(b), s.global, s.x, def_.gravity, h, V, omega);
+}
 
 double World::stable_step() const {
     double h = std::numeric_limits<double>::infinity();
@@ -53,7 +54,7 @@ void World::synchronized_velocities(const Body& body, double* out) const {
     const uint32_t n = body.ref.node_count();
     if (body.is_rigid()) {
         Vec3 V, omega;
-        rigid_synchronized_velocity(rigid_view(body), s.global, s.x, def_.gravity, rigid_extrapolation(s), V, omega);
+        rigid_velocity(body, V, omega);
         for (uint32_t i = 0; i < n; ++i) {
             const Vec3 v = V + omega.cross(Vec3(&s.x[3 * i]) - Vec3(s.global.center));
             for (int k = 0; k < 3; ++k) out[3 * i + k] = v[k];
@@ -104,8 +105,7 @@ void World::body_momentum(const Body& b, Vec3& P, Vec3& L) const {
     P = Vec3::Zero(), L = Vec3::Zero();
     if (b.is_rigid() && b.has_mesh()) {
         Vec3 V, omega;
-        const Vec3 L_centre = rigid_synchronized_velocity(rigid_view(b), b.state.global, b.state.x, def_.gravity,
-                                                          rigid_extrapolation(b.state), V, omega);
+        const Vec3 L_centre = rigid_velocity(b, V, omega);
         P = b.ref.total_mass * V;
         L = Vec3(b.state.global.center).cross(P) + L_centre;
     } else if (b.is_deformable() && b.has_mesh()) {

@@ -17,27 +17,16 @@ void World::set_gravity(const double g[3]) {
 
 void World::destroy_body(BodyHandle h) {
     bodies_.get(h);  // the handle first
-    const auto involves = [&](uint64_t key) { return uint32_t(key >> 32) == h.index || uint32_t(key) == h.index; };
-    std::vector<uint64_t>& touching = state_.touching;
-    // The only allocations, before any change: room for its attachments' slots, and for the
-    // events its going makes (an end for each pair it touched, a wake for each body it held).
+    // The only allocation before any change: room for its attachments' slots (end_contacts_of
+    // makes room for its events before it changes anything).
     state_.attachments.free_slots.reserve(state_.attachments.free_slots.size() + state_.attachments.slots.size());
-    events_.reserve(bodies_.slot_count() + std::size_t(std::count_if(touching.begin(), touching.end(), involves)));
-    // Its pairs end, reported with the next call's events (an engine that tracks touching pairs
-    // from the events would otherwise keep them), with its handle as it was; what it held up wakes.
-    for (uint64_t key : touching)
-        if (involves(key))
-            events_.add_contact_end(bodies_.handle_of(uint32_t(key >> 32)), bodies_.handle_of(uint32_t(key)));
-    wake_touching(h.index);
+    // Its pairs end, reported with the next call's events with its handle as it was (an engine
+    // that tracks touching pairs from the events would otherwise keep them); what it held up
+    // wakes; its contacts go with it: a query must not read its freed nodes, and a later body in
+    // the same slot must not be warm-started from them (found by fuzz_api).
+    end_contacts_of(h.index);
     bodies_.destroy(h);
     drop_attachments_of(h.index);
-    touching.erase(std::remove_if(touching.begin(), touching.end(), involves), touching.end());
-    // The body's contacts go with it: a query must not read its freed nodes, and a later body
-    // in the same slot must not be warm-started from them (found by fuzz_api).
-    std::vector<ContactRecord>& contacts = state_.contacts;
-    contacts.erase(std::remove_if(contacts.begin(), contacts.end(),
-                                  [&](const ContactRecord& r) { return r.body_a == h.index || r.body_b == h.index; }),
-                   contacts.end());
     moved();
 }
 

@@ -101,6 +101,17 @@ public:
     void clear_node_forces(BodyHandle body);
     void set_kinematic_velocity(BodyHandle body, const double linear[3], const double angular[3]);
 
+    // ---- where a body is, and teleports (teleport.cpp)
+    // The rigid motion x = R X + t that carries the mesh as added to the nodes now (7 doubles: t,
+    // then R as a unit quaternion w x y z): a deformable body's best fit, the frame of the others.
+    void body_transform(const Body& body, double out[7]) const;
+    Vec3 body_center_of_mass(const Body& body) const;
+    // Teleports: no work, velocities kept, the body's pairs end. set_positions: a deformable
+    // body's nodes (3 per node, internal order, finite); set_transform: any body but a static
+    // one, rigidly, to the pose given (7 finite doubles, the quaternion normalised).
+    void set_positions(BodyHandle body, const double* x);
+    void set_transform(BodyHandle body, const double transform[7]);
+
     // ---- attachments (attachments.cpp); node indices internal, checked by the caller
     AttachmentHandle create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,
                                        const double frame[7], double break_force);
@@ -219,6 +230,11 @@ private:
     void take_link_forces(double h);
     void finish_attachment_frames();
     void drop_attachments_of(uint32_t slot);
+    // teleport.cpp
+    void place_deformable(BodyHandle body, const double* x, const Quat& turn);
+    void end_contacts_of(uint32_t slot);
+    // statistics.cpp
+    Vec3 rigid_velocity(const Body& body, Vec3& V, Vec3& omega) const;
     // sleep.cpp
     void wake(uint32_t slot);
     void wake_touching(uint32_t slot);

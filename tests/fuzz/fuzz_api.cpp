@@ -274,6 +274,51 @@ void remove_folder(const std::string& dir) {
     rmdir(dir.c_str());
 }
 
+// Teleports and poses (a variant of call 24, flag bit 2): set_positions (nodes at random,
+// perhaps the wrong count), set_transform (any pose, perhaps a zero quaternion), or the two
+// getters (whose outputs are finite, or untouched when refused).
+lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t f, const char*& name) {
+    switch (in.below(3)) {
+        case 0: {
+            name = "body_set_positions";
+            uint32_t n = node_count_of(w, b);
+            if (f & 1) n = in.below(40);
+            std::vector<double> x(3 * std::size_t(n));
+            for (double& v : x) v = in.number(-1, 1);
+            const lfem_status st = lfem_body_set_positions(w, b, arg(s, 0, x.data()), n);
+            if (st == LFEM_OK) {
+                expect(n == node_count_of(w, b), "positions of the wrong count were accepted:", name);
+                std::vector<double> back(x.size());
+                expect(lfem_body_get_positions(w, b, back.data(), n) == LFEM_OK && back == x,
+                       "the positions set are not the positions read:", name);
+            }
+            return st;
+        }
+        case 1: {
+            name = "body_set_transform";
+            double t[7];
+            for (int k = 0; k < 3; ++k) t[k] = in.number(-2, 2);
+            for (int k = 3; k < 7; ++k) t[k] = (f & 1) ? 0.0 : in.number(-1, 1);
+            const lfem_status st = lfem_body_set_transform(w, b, arg(s, 0, t));
+            if (st == LFEM_OK) {
+                double back[7];
+                expect(lfem_body_get_transform(w, b, back) == LFEM_OK, "a teleported body has no transform:", name);
+                for (double v : back) expect(std::isfinite(v), "a teleported body's transform is not finite:", name);
+            }
+            return st;
+        }
+        default: {
+            name = "body_get_transform/center_of_mass";
+            double t[7] = {7, 7, 7, 7, 7, 7, 7}, c[3] = {7, 7, 7};
+            const lfem_status sc = lfem_body_get_center_of_mass(w, b, arg(s, 1, c));
+            const lfem_status st = lfem_body_get_transform(w, b, arg(s, 0, t));  // its message last
+            for (double v : t) expect(st == LFEM_OK ? std::isfinite(v) : v == 7, "a transform read is wrong:", name);
+            for (double v : c) expect(sc == LFEM_OK ? std::isfinite(v) : v == 7, "a centre read is wrong:", name);
+            return st;
+        }
+    }
+}
+
 // The number of calls one_call knows.
 constexpr uint32_t kCalls = 29;
 
@@ -828,6 +873,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             name = "body_set_velocities";
             const lfem_body b = pick_body(s, in);
             const uint8_t f = in.byte();
+            if (f & 2) return teleport(s, in, w, b, f, name);
             uint32_t n = node_count_of(w, b);
             if (f & 1) n = in.below(40);  // most likely the wrong count
             std::vector<double> v(3 * std::size_t(n));

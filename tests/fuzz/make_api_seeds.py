@@ -445,6 +445,37 @@ class Program:
             for x in v:
                 self.value(-2, 2, x)
 
+    def set_positions(self, body_index, positions, count=None):
+        # SET_VELOCITIES with flag 2: a teleport, variant 0; positions one per node, or count
+        # given (a wrong count)
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(2 | (0 if count is None else 1))
+        self.below(0)
+        if count is not None:
+            self.below(count)
+        for v in positions:
+            for x in v:
+                self.value(-1, 1, x)
+
+    def set_transform(self, body_index, t, q=None):
+        # variant 1: t (3 numbers) and a quaternion (4), or a zero quaternion when q is None
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(2 | (1 if q is None else 0))
+        self.below(1)
+        for x in t:
+            self.value(-2, 2, x)
+        for x in (q or ()):
+            self.value(-1, 1, x)
+
+    def read_pose(self, body_index):
+        # variant 2: lfem_body_get_transform and lfem_body_get_center_of_mass
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(2)
+        self.below(2)
+
     # which: 0 counts (capacity % 3 picks node/tet/nodes-per-tet), 1 user data, 2 mass,
     # 3 inversion, 4 momentum, 5/6 boundary triangles/faces, 7 von Mises, 8 rotation,
     # 9 nodes in box, 10 is_valid, 11 positions of exact capacity
@@ -499,6 +530,24 @@ def floor_and_block(model=PAPER, quadratic=False, block_z=0.005, **world):
     p.box(1, (0.1, 0.1, 0.1), (2, 2, 2), (-0.05, -0.05, block_z), quadratic=quadratic)
     return p
 
+
+# Teleports: the block read, moved up and turned, read again, stepped (its pair with the floor
+# ends), its nodes put back one by one (a stretched copy), a wrong count and a zero quaternion
+# refused, the static floor refused.
+p = floor_and_block(model=COROTATIONAL, block_z=0.0)
+p.step(0.01)
+p.read_pose(1)
+p.set_transform(1, (0.1, 0, 0.3), (0.5, 0.5, 0.5, 0.5))
+p.read_pose(1)
+p.step(0.01)
+p.events(3)
+p.set_positions(1, [(0.01 * i, 0.02 * (i % 3), 0.2 + 0.01 * (i % 5)) for i in range(27)])
+p.set_positions(1, [(0, 0, 0)] * 3, count=3)
+p.set_transform(1, (0, 0, 0))
+p.set_transform(0, (0, 0, 1), (1, 0, 0, 0))
+p.step(0.01)
+p.events(3)
+seed('teleports', p)
 
 # A soft block dropped on a static floor, stepped and queried, its events read.
 p = floor_and_block(model=NEO_HOOKEAN)

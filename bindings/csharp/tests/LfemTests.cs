@@ -755,6 +755,53 @@ public static class LfemTests
         }
     }
 
+    public static void TestATeleportedBlockLandsWithItsApproachSpeed()
+    {
+        // A soft block put 0.2 m above a plane by its transform (x = X + t) falls and lands at
+        // sqrt(2 g H): the begin event's approach speed is within g h / 2 of it (the impact
+        // sub-step's predicted mid-step velocity), its normal +z from the plane toward the block.
+        using (World world = new World(WorldDef.Default))
+        {
+            BodyDef sd = BodyDef.Default;
+            sd.Type = BodyType.Static;
+            Body floor = world.CreateBody(sd);
+            world.AddShape(floor, ShapeDef.Default);
+            Body block = world.CreateBody(BodyDef.Default);
+            using (Mesh mesh = Mesh.Box(new Vec3(0.1, 0.1, 0.1), 2, 2, 2)) world.AddMesh(block, mesh);
+            double[] pose = world.GetTransform(block);
+            pose[2] += 0.2;
+            world.SetTransform(block, pose);
+            double[] t = world.GetTransform(block);
+            Close(pose[2], t[2], 1e-12, "transform z");
+            Close(1.0, t[3], 1e-12, "transform w");
+            double lowest = double.PositiveInfinity;
+            foreach (Vec3 p in world.GetPositions(block)) lowest = Math.Min(lowest, p.Z);
+            Close(0.2, lowest, 1e-12, "lowest node");
+            double vImpact = Math.Sqrt(2 * 9.81 * lowest);
+            Vec3 c0 = world.GetCenterOfMass(block);
+            bool landed = false;
+            for (int call = 0; call < 30 && !landed; ++call)
+            {
+                world.Step(1.0 / 60);
+                foreach (Event e in world.GetEvents())
+                {
+                    if (e.Type != EventType.ContactBegin) continue;
+                    double h = world.Stats.StepSize;
+                    Close(vImpact, e.ApproachSpeed, 0.5 * 9.81 * h * (1 + 1e-9), "approach speed");
+                    Close(1.0, e.Normal.Z, 1e-12, "normal");
+                    Check(Math.Abs(e.Point.Z) < 1e-3 * vImpact * h, "point on the plane");
+                    landed = true;
+                }
+            }
+            Check(landed, "landed");
+            Check(world.GetCenterOfMass(block).Z < c0.Z, "fell");
+            bool refused = false;
+            try { world.SetTransform(floor, pose); }
+            catch (LfemException e) { refused = e.Status == Status.InvalidArgument; }
+            Check(refused, "a static body does not move");
+        }
+    }
+
     public static void TestRaysAndBoxesFindWhatIsThere()
     {
         // A static sphere of radius 0.5 about (2, 0, 0): a ray along +x at height 0.3 meets it at

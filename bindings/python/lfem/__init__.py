@@ -389,6 +389,33 @@ class World:
         native.lfem_body_get_rotation(self.handle, _body(body), _dptr(out))
         return out
 
+    def set_positions(self, body: Body, positions: npt.ArrayLike) -> None:
+        """Teleport a deformable body's nodes (m), an (n, 3) array: velocities kept, the change of
+        strain energy booked as work, its pairs end."""
+        x = _convert.vectors(positions, "positions")
+        native.lfem_body_set_positions(self.handle, _body(body), _dptr(x), x.shape[0])
+
+    def transform(self, body: Body) -> Vectors:
+        """The body's pose x = R X + t: 7 numbers, t then R as a quaternion (w, x, y, z) (a
+        deformable body's best fit)."""
+        out = np.empty(7, dtype=np.float64)
+        native.lfem_body_get_transform(self.handle, _body(body), _dptr(out))
+        return out
+
+    def set_transform(self, body: Body, transform: npt.ArrayLike) -> None:
+        """Teleport a body rigidly to the pose (t, then a quaternion w, x, y, z): velocities
+        kept, no work."""
+        t = np.ascontiguousarray(transform, dtype=np.float64).reshape(-1)
+        if t.size != 7:
+            raise InvalidArgumentError("transform must hold 7 numbers")
+        native.lfem_body_set_transform(self.handle, _body(body), _dptr(t))
+
+    def center_of_mass(self, body: Body) -> Vectors:
+        """The centre of mass where the nodes are now (m)."""
+        out = np.empty(3, dtype=np.float64)
+        native.lfem_body_get_center_of_mass(self.handle, _body(body), _dptr(out))
+        return out
+
     def find_nodes_in_box(self, body: Body, lo: npt.ArrayLike, hi: npt.ArrayLike) -> Indices:
         """Indices of the nodes whose current position lies in the box [lo, hi] (m)."""
         lo, hi, body = _convert.vector(lo, "lo"), _convert.vector(hi, "hi"), _body(body)

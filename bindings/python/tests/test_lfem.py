@@ -698,6 +698,43 @@ class SkinsAndQueries(unittest.TestCase):
                 world.add_skin(block, [[5, 5, 5], [5.1, 5, 5], [5, 5.1, 5]], [[0, 1, 2]])
             self.assertEqual(world.skin_count(block), 1)
 
+    def test_a_teleported_block_lands_with_its_approach_speed(self):
+        # A soft block put 0.2 m above a plane by its transform (x = X + t) falls and lands at
+        # sqrt(2 g H): the begin event's approach speed is within g h / 2 of it (the impact
+        # sub-step's predicted mid-step velocity), its normal +z from the plane toward the block.
+        with lfem.World() as world:
+            floor = world.create_body(lfem.BodyDef(type=lfem.BodyType.STATIC))
+            world.add_shape(floor)
+            block = world.create_body()
+            mesh = lfem.Mesh.box((0.1, 0.1, 0.1), (2, 2, 2))
+            world.add_mesh(block, mesh)
+            mesh.close()
+            pose = world.transform(block)
+            pose[2] += 0.2
+            world.set_transform(block, pose)
+            np.testing.assert_allclose(world.transform(block), pose, rtol=0, atol=1e-12)
+            lowest = float(world.positions(block)[:, 2].min())
+            self.assertAlmostEqual(lowest, 0.2, delta=1e-12)
+            v_impact = math.sqrt(2 * 9.81 * lowest)
+            c0 = world.center_of_mass(block)
+            landed = False
+            for _ in range(30):
+                world.step(1 / 60)
+                for e in world.events():
+                    if e.type != lfem.EventType.CONTACT_BEGIN:
+                        continue
+                    h = world.stats.step_size
+                    self.assertAlmostEqual(e.approach_speed, v_impact, delta=0.5 * 9.81 * h * (1 + 1e-9))
+                    self.assertAlmostEqual(e.normal[2], 1.0, delta=1e-12)
+                    self.assertLess(abs(e.point[2]), 1e-3 * v_impact * h)
+                    landed = True
+                if landed:
+                    break
+            self.assertTrue(landed)
+            self.assertLess(world.center_of_mass(block)[2], c0[2])
+            with self.assertRaises(lfem.InvalidArgumentError):
+                world.set_transform(floor, pose)
+
     def test_rays_and_boxes_find_what_is_there(self):
         # A static sphere of radius 0.5 about (2, 0, 0): a ray along +x at height 0.3 meets it at
         # 2 - sqrt(0.25 - 0.09) = 1.6 with normal (p - c) / r; a cube [0, 0.2]^3 is crossed at 1

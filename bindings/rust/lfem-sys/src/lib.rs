@@ -528,6 +528,15 @@ extern "C" {
         tet_capacity: u32,
     ) -> lfem_status;
     pub fn lfem_body_get_rotation(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
+    pub fn lfem_body_set_positions(
+        world: *mut lfem_world,
+        body: lfem_body,
+        positions: *const c_double,
+        node_count: u32,
+    ) -> lfem_status;
+    pub fn lfem_body_get_transform(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
+    pub fn lfem_body_get_center_of_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
+    pub fn lfem_body_set_transform(world: *mut lfem_world, body: lfem_body, transform: *const c_double) -> lfem_status;
     pub fn lfem_body_find_nodes_in_box(
         world: *const lfem_world,
         body: lfem_body,

@@ -1241,6 +1241,36 @@ impl World {
         Ok(out)
     }
 
+    /// Teleport a deformable body's nodes (m, one per node): velocities kept, the change of
+    /// strain energy booked as work, its pairs end.
+    pub fn set_positions(&mut self, body: Body, positions: &[[f64; 3]]) -> Result<()> {
+        let n = to_u32(positions.len(), "node count")?;
+        // SAFETY: live world; 3*n doubles.
+        check(unsafe { sys::lfem_body_set_positions(self.ptr_mut(), body.raw(), positions.as_ptr() as *const f64, n) })
+    }
+
+    /// The body's pose x = R X + t: `[t, quaternion w x y z]` (a deformable body's best fit).
+    pub fn transform(&self, body: Body) -> Result<[f64; 7]> {
+        let mut out = [0.0; 7];
+        // SAFETY: 7 doubles.
+        check(unsafe { sys::lfem_body_get_transform(self.ptr(), body.raw(), out.as_mut_ptr()) })?;
+        Ok(out)
+    }
+
+    /// Teleport a body rigidly to the pose `[t, quaternion w x y z]`: velocities kept, no work.
+    pub fn set_transform(&mut self, body: Body, transform: [f64; 7]) -> Result<()> {
+        // SAFETY: live world; 7 doubles.
+        check(unsafe { sys::lfem_body_set_transform(self.ptr_mut(), body.raw(), transform.as_ptr()) })
+    }
+
+    /// The centre of mass where the nodes are now (m).
+    pub fn center_of_mass(&self, body: Body) -> Result<[f64; 3]> {
+        let mut out = [0.0; 3];
+        // SAFETY: 3 doubles.
+        check(unsafe { sys::lfem_body_get_center_of_mass(self.ptr(), body.raw(), out.as_mut_ptr()) })?;
+        Ok(out)
+    }
+
     /// The nodes whose current position lies in the box [lo, hi] (m).
     pub fn find_nodes_in_box(&self, body: Body, lo: [f64; 3], hi: [f64; 3]) -> Result<Vec<u32>> {
         let mut count = 0u32;

@@ -698,3 +698,48 @@ fn a_bar_hangs_from_a_frame_and_a_resting_block_sleeps_with_events() {
     assert!(!world.is_attachment_valid(held));
     assert_eq!(world.attachment_force(held).unwrap_err().status(), Status::InvalidHandle);
 }
+
+#[test]
+fn a_teleported_block_lands_with_its_approach_speed() {
+    // A soft block put 0.2 m above a plane by its transform (x = X + t) falls and lands at
+    // sqrt(2 g H): the begin event's approach speed is within g h / 2 of it (the impact
+    // sub-step's predicted mid-step velocity), its normal +z from the plane toward the block.
+    let mut world = World::new(&WorldDef::default()).unwrap();
+    let mut floor_def = BodyDef::default();
+    floor_def.body_type = BodyType::Static;
+    let floor = world.create_body(&floor_def).unwrap();
+    world.add_shape(floor, &ShapeDef::default()).unwrap();
+    let mesh = Mesh::new_box([0.1, 0.1, 0.1], [2, 2, 2]).unwrap();
+    let block = world.create_body(&BodyDef::default()).unwrap();
+    world.add_mesh(block, &mesh).unwrap();
+    let mut pose = world.transform(block).unwrap();
+    pose[2] += 0.2;
+    world.set_transform(block, pose).unwrap();
+    let t = world.transform(block).unwrap();
+    assert!(close(t[2], pose[2], 1e-12) && close(t[3], 1.0, 1e-12), "{:?}", t);
+    let c0 = world.center_of_mass(block).unwrap();
+    let height = world.positions(block).unwrap().iter().map(|p| p[2]).fold(f64::INFINITY, f64::min);
+    assert!(close(height, 0.2, 1e-12), "lowest node {}", height);
+    let v_impact = (2.0 * G * height).sqrt();
+    let mut landed = false;
+    for _ in 0..30 {
+        world.step(1.0 / 60.0).unwrap();
+        for e in world.events().unwrap() {
+            if e.event_type != EventType::ContactBegin {
+                continue;
+            }
+            let h = world.stats().unwrap().step_size;
+            assert!(close(e.approach_speed, v_impact, 0.5 * G * h * (1.0 + 1e-9)), "approach {} vs {}", e.approach_speed, v_impact);
+            assert!(close(e.normal[2], 1.0, 1e-12), "normal {:?}", e.normal);
+            assert!(e.point[2].abs() < 1e-3 * v_impact * h, "point {:?}", e.point);
+            landed = true;
+        }
+        if landed {
+            break;
+        }
+    }
+    assert!(landed);
+    assert!(world.center_of_mass(block).unwrap()[2] < c0[2]);
+    // A static body does not move.
+    assert_eq!(world.set_transform(floor, pose).unwrap_err().status(), Status::InvalidArgument);
+}
