@@ -231,6 +231,16 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
 LFEM_API lfem_status lfem_body_set_positions(lfem_world* world, lfem_body body,
                                              const double* positions, uint32_t node_count);
 
+/** A one-shot impulse (N s) at a world point (m), as a hit gives it: a deformable body takes it on
+ * the nodes of the tet around the point (where the nodes are now; a point on the surface, within
+ * one boundary edge of the body, counts), each node its share by the tet's shape functions
+ * there, so the body gains the impulse as momentum and point x impulse as angular momentum
+ * about the origin (a fixed or prescribed node's share goes to its support); a rigid body takes
+ * it as a whole. The change of kinetic energy is the caller's work; the body wakes. Finding the
+ * tet costs O(T log T) for T tets. A deformable or rigid body with a mesh. */
+LFEM_API lfem_status lfem_body_apply_impulse(lfem_world* world, lfem_body body, const double point[3],
+                                             const double impulse[3]);
+
 /** The body's pose: the rigid motion x = R X + t that carries its mesh as added (X) to where its
  * nodes are now (x); out[0..2] = t (m), out[3..6] = R as a unit quaternion (w, x, y, z). A rigid
  * body's exactly, a kinematic body's as it has moved and turned, a static body's the identity;

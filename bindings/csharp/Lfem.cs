@@ -844,6 +844,13 @@ namespace Lfem
             LfemException.Check(Native.lfem_body_set_positions(handle, body, positions, (uint)positions.Length));
         }
 
+        /// <summary>A one-shot impulse (N s) at a world point (m): a deformable body's tet around the
+        /// point takes it by its shape functions, a rigid body as a whole.</summary>
+        public void ApplyImpulse(Body body, Vec3 point, Vec3 impulse)
+        {
+            LfemException.Check(Native.lfem_body_apply_impulse(handle, body, ref point, ref impulse));
+        }
+
         /// <summary>The body's pose x = R X + t: t, then R as a quaternion w x y z (7 numbers; a
         /// deformable body's best fit).</summary>
         public double[] GetTransform(Body body)
@@ -1274,6 +1281,7 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_von_mises_stress(WorldHandle world, Body body, [Out] double[] stress, uint tetCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_rotation(WorldHandle world, Body body, [Out] double[] rotation);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_positions(WorldHandle world, Body body, [In] Vec3[] positions, uint nodeCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_apply_impulse(WorldHandle world, Body body, ref Vec3 point, ref Vec3 impulse);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_transform(WorldHandle world, Body body, [Out] double[] transform);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_transform(WorldHandle world, Body body, [In] double[] transform);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_center_of_mass(WorldHandle world, Body body, out Vec3 center);

@@ -279,6 +279,19 @@ LFEM_API lfem_status lfem_body_set_transform(lfem_world* world, lfem_body body, 
     });
 }
 
+LFEM_API lfem_status lfem_body_apply_impulse(lfem_world* world, lfem_body body, const double point[3],
+                                             const double impulse[3]) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));  // the handle first
+        require_pointer(point, "point");
+        require_pointer(impulse, "impulse");
+        require_finite(point, 3, "point");
+        require_finite(impulse, 3, "impulse");
+        w.apply_impulse(from_c(body), point, impulse);
+    });
+}
+
 LFEM_API lfem_status lfem_body_get_transform(const lfem_world* world, lfem_body body, double out[7]) {
     return guard(__func__, [&] {
         const World& w = world_of(world);

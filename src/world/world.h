@@ -111,6 +111,9 @@ public:
     // one, rigidly, to the pose given (7 finite doubles, the quaternion normalised).
     void set_positions(BodyHandle body, const double* x);
     void set_transform(BodyHandle body, const double transform[7]);
+    // ---- impulses (impulses.cpp): a deformable or rigid body with a mesh; point and impulse
+    // finite (checked by the caller)
+    void apply_impulse(BodyHandle body, const double point[3], const double impulse[3]);
 
     // ---- attachments (attachments.cpp); node indices internal, checked by the caller
     AttachmentHandle create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,

@@ -274,11 +274,11 @@ void remove_folder(const std::string& dir) {
     rmdir(dir.c_str());
 }
 
-// Teleports and poses (a variant of call 24, flag bit 2): set_positions (nodes at random,
-// perhaps the wrong count), set_transform (any pose, perhaps a zero quaternion), or the two
-// getters (whose outputs are finite, or untouched when refused).
+// Teleports, poses and impulses (a variant of call 24, flag bit 2): set_positions (nodes at
+// random, perhaps the wrong count), set_transform (any pose, perhaps a zero quaternion), the two
+// getters (whose outputs are finite, or untouched when refused), or an impulse at a point.
 lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t f, const char*& name) {
-    switch (in.below(3)) {
+    switch (in.below(4)) {
         case 0: {
             name = "body_set_positions";
             uint32_t n = node_count_of(w, b);
@@ -305,6 +305,19 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
                 expect(lfem_body_get_transform(w, b, back) == LFEM_OK, "a teleported body has no transform:", name);
                 for (double v : back) expect(std::isfinite(v), "a teleported body's transform is not finite:", name);
             }
+            return st;
+        }
+        case 3: {
+            name = "body_apply_impulse";
+            double p[3], j[3], P0[3] = {0, 0, 0}, P1[3] = {0, 0, 0};
+            for (double& v : p) v = in.number(-1, 1);
+            for (double& v : j) v = in.number(-5, 5);
+            const bool read = lfem_body_get_momentum(w, b, P0, nullptr) == LFEM_OK;
+            const lfem_status st = lfem_body_apply_impulse(w, b, arg(s, 0, p), arg(s, 1, j));
+            if (st == LFEM_OK && read && lfem_body_get_momentum(w, b, P1, nullptr) == LFEM_OK)
+                for (int k = 0; k < 3; ++k)  // no more than the impulse (held nodes pass theirs on)
+                    expect(std::isfinite(P1[k]) && std::fabs(P1[k] - P0[k]) <= std::fabs(j[k]) * (1 + 1e-9) + 1e-9 * (1 + std::fabs(P0[k])),
+                           "an impulse changed the momentum by more than itself:", name);
             return st;
         }
         default: {

@@ -469,6 +469,17 @@ class Program:
         for x in (q or ()):
             self.value(-1, 1, x)
 
+    def impulse(self, body_index, point, impulse):
+        # variant 3: lfem_body_apply_impulse
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(2)
+        self.below(3)
+        for x in point:
+            self.value(-1, 1, x)
+        for x in impulse:
+            self.value(-5, 5, x)
+
     def read_pose(self, body_index):
         # variant 2: lfem_body_get_transform and lfem_body_get_center_of_mass
         self.call(SET_VELOCITIES)
@@ -547,6 +558,10 @@ p.set_transform(1, (0, 0, 0))
 p.set_transform(0, (0, 0, 1), (1, 0, 0, 0))
 p.step(0.01)
 p.events(3)
+p.impulse(1, (0.05, 0.05, 0.25), (0.5, 0, 1))
+p.impulse(1, (0.9, 0.9, 0.9), (0.5, 0, 1))   # refused: far from the block
+p.impulse(0, (0, 0, -0.05), (1, 0, 0))       # refused: the floor is static
+p.step(0.01)
 seed('teleports', p)
 
 # A soft block dropped on a static floor, stepped and queried, its events read.

@@ -795,6 +795,13 @@ public static class LfemTests
             }
             Check(landed, "landed");
             Check(world.GetCenterOfMass(block).Z < c0.Z, "fell");
+            // An impulse at its centre of mass: its momentum grows by exactly that (round-off).
+            Vec3 p0, p1, l;
+            world.GetMomentum(block, out p0, out l);
+            world.ApplyImpulse(block, world.GetCenterOfMass(block), new Vec3(0.5, 0, 0.2));
+            world.GetMomentum(block, out p1, out l);
+            Close(0.5, p1.X - p0.X, 1e-12, "impulse x");
+            Close(0.2, p1.Z - p0.Z, 1e-12, "impulse z");
             bool refused = false;
             try { world.SetTransform(floor, pose); }
             catch (LfemException e) { refused = e.Status == Status.InvalidArgument; }

@@ -395,6 +395,12 @@ class World:
         x = _convert.vectors(positions, "positions")
         native.lfem_body_set_positions(self.handle, _body(body), _dptr(x), x.shape[0])
 
+    def apply_impulse(self, body: Body, point: npt.ArrayLike, impulse: npt.ArrayLike) -> None:
+        """A one-shot impulse (N s) at a world point (m): a deformable body's tet around the point
+        takes it by its shape functions, a rigid body as a whole."""
+        p, j = _convert.vector(point, "point"), _convert.vector(impulse, "impulse")
+        native.lfem_body_apply_impulse(self.handle, _body(body), _dptr(p), _dptr(j))
+
     def transform(self, body: Body) -> Vectors:
         """The body's pose x = R X + t: 7 numbers, t then R as a quaternion (w, x, y, z) (a
         deformable body's best fit)."""

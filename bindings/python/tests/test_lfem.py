@@ -732,6 +732,11 @@ class SkinsAndQueries(unittest.TestCase):
                     break
             self.assertTrue(landed)
             self.assertLess(world.center_of_mass(block)[2], c0[2])
+            # An impulse at its centre of mass: its momentum grows by exactly that (round-off).
+            p0, _ = world.momentum(block)
+            world.apply_impulse(block, world.center_of_mass(block), (0.5, 0.0, 0.2))
+            p1, _ = world.momentum(block)
+            np.testing.assert_allclose(p1 - p0, [0.5, 0.0, 0.2], rtol=0, atol=1e-12)
             with self.assertRaises(lfem.InvalidArgumentError):
                 world.set_transform(floor, pose)
 

@@ -534,6 +534,12 @@ extern "C" {
         positions: *const c_double,
         node_count: u32,
     ) -> lfem_status;
+    pub fn lfem_body_apply_impulse(
+        world: *mut lfem_world,
+        body: lfem_body,
+        point: *const c_double,
+        impulse: *const c_double,
+    ) -> lfem_status;
     pub fn lfem_body_get_transform(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
     pub fn lfem_body_get_center_of_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
     pub fn lfem_body_set_transform(world: *mut lfem_world, body: lfem_body, transform: *const c_double) -> lfem_status;

@@ -1249,6 +1249,13 @@ impl World {
         check(unsafe { sys::lfem_body_set_positions(self.ptr_mut(), body.raw(), positions.as_ptr() as *const f64, n) })
     }
 
+    /// A one-shot impulse (N s) at a world point (m): a deformable body's tet around the point
+    /// takes it by its shape functions, a rigid body as a whole.
+    pub fn apply_impulse(&mut self, body: Body, point: [f64; 3], impulse: [f64; 3]) -> Result<()> {
+        // SAFETY: live world; 3 doubles each.
+        check(unsafe { sys::lfem_body_apply_impulse(self.ptr_mut(), body.raw(), point.as_ptr(), impulse.as_ptr()) })
+    }
+
     /// The body's pose x = R X + t: `[t, quaternion w x y z]` (a deformable body's best fit).
     pub fn transform(&self, body: Body) -> Result<[f64; 7]> {
         let mut out = [0.0; 7];

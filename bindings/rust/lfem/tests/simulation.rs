@@ -740,6 +740,12 @@ fn a_teleported_block_lands_with_its_approach_speed() {
     }
     assert!(landed);
     assert!(world.center_of_mass(block).unwrap()[2] < c0[2]);
+    // An impulse at its centre of mass: its momentum grows by exactly that (round-off).
+    let (p0, _) = world.momentum(block).unwrap();
+    let c = world.center_of_mass(block).unwrap();
+    world.apply_impulse(block, c, [0.5, 0.0, 0.2]).unwrap();
+    let (p1, _) = world.momentum(block).unwrap();
+    assert!(close(p1[0] - p0[0], 0.5, 1e-12) && close(p1[2] - p0[2], 0.2, 1e-12), "{:?} -> {:?}", p0, p1);
     // A static body does not move.
     assert_eq!(world.set_transform(floor, pose).unwrap_err().status(), Status::InvalidArgument);
 }
