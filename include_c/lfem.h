@@ -231,6 +231,20 @@ LFEM_API lfem_status lfem_body_set_velocities(lfem_world* world, lfem_body body,
 LFEM_API lfem_status lfem_body_set_positions(lfem_world* world, lfem_body body,
                                              const double* positions, uint32_t node_count);
 
+/** Settings changed after creation, as lfem_body_def gives them at creation (same ranges); the
+ * handle, meshes, skins and attachments stay, and the body wakes. Friction (>= 0): the pairs'
+ * friction from the next step on. Damping (>= 0, 1/s). The collision filter: pairs it now
+ * forbids end with the next step's events, and what the body touched wakes. User data: returned
+ * by lfem_body_get_user_data (it does not wake the body). */
+LFEM_API lfem_status lfem_body_set_friction(lfem_world* world, lfem_body body, double friction);
+/** See lfem_body_set_friction. */
+LFEM_API lfem_status lfem_body_set_damping(lfem_world* world, lfem_body body, double damping);
+/** See lfem_body_set_friction. */
+LFEM_API lfem_status lfem_body_set_filter(lfem_world* world, lfem_body body, uint32_t category_bits,
+                                          uint32_t mask_bits);
+/** See lfem_body_set_friction. */
+LFEM_API lfem_status lfem_body_set_user_data(lfem_world* world, lfem_body body, void* user_data);
+
 /** A one-shot impulse (N s) at a world point (m), as a hit gives it: a deformable body takes it on
  * the nodes of the tet around the point (where the nodes are now; a point on the surface, within
  * one boundary edge of the body, counts), each node its share by the tet's shape functions
@@ -431,6 +445,8 @@ LFEM_API lfem_status lfem_world_get_events(const lfem_world* world, lfem_event* 
 LFEM_API lfem_status lfem_body_add_skin(lfem_world* world, lfem_body body, const double* positions,
                                         uint32_t vertex_count, const uint32_t* triangles,
                                         uint32_t triangle_count, uint32_t* skin_index);
+/** Remove a skin; the skins after it move down one index (skin < lfem_body_get_skin_count). */
+LFEM_API lfem_status lfem_body_remove_skin(lfem_world* world, lfem_body body, uint32_t skin);
 /** The number of skins of the body. */
 LFEM_API lfem_status lfem_body_get_skin_count(const lfem_world* world, lfem_body body, uint32_t* out);
 /** The vertex and triangle counts of a skin (skin < lfem_body_get_skin_count, else

@@ -941,6 +941,17 @@ namespace Lfem
             return index;
         }
 
+        /// <summary>Remove a skin; the skins after it move down one index.</summary>
+        public void RemoveSkin(Body body, uint skin) { LfemException.Check(Native.lfem_body_remove_skin(handle, body, skin)); }
+        /// <summary>Change the body's Coulomb friction (>= 0); the body wakes.</summary>
+        public void SetFriction(Body body, double friction) { LfemException.Check(Native.lfem_body_set_friction(handle, body, friction)); }
+        /// <summary>Change the body's mass-proportional damping (>= 0, 1/s); the body wakes.</summary>
+        public void SetDamping(Body body, double damping) { LfemException.Check(Native.lfem_body_set_damping(handle, body, damping)); }
+        /// <summary>Change the body's collision filter; pairs it now forbids end with the next step's events.</summary>
+        public void SetFilter(Body body, uint categoryBits, uint maskBits) { LfemException.Check(Native.lfem_body_set_filter(handle, body, categoryBits, maskBits)); }
+        /// <summary>Change the user data World.GetUserData returns.</summary>
+        public void SetUserData(Body body, IntPtr userData) { LfemException.Check(Native.lfem_body_set_user_data(handle, body, userData)); }
+
         public int SkinCount(Body body)
         {
             uint n; LfemException.Check(Native.lfem_body_get_skin_count(handle, body, out n)); return checked((int)n);
@@ -1281,6 +1292,11 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_von_mises_stress(WorldHandle world, Body body, [Out] double[] stress, uint tetCapacity);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_rotation(WorldHandle world, Body body, [Out] double[] rotation);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_positions(WorldHandle world, Body body, [In] Vec3[] positions, uint nodeCount);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_remove_skin(WorldHandle world, Body body, uint skin);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_friction(WorldHandle world, Body body, double friction);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_damping(WorldHandle world, Body body, double damping);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_filter(WorldHandle world, Body body, uint categoryBits, uint maskBits);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_data(WorldHandle world, Body body, IntPtr userData);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_apply_impulse(WorldHandle world, Body body, ref Vec3 point, ref Vec3 impulse);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_transform(WorldHandle world, Body body, [Out] double[] transform);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_transform(WorldHandle world, Body body, [In] double[] transform);

@@ -279,6 +279,41 @@ LFEM_API lfem_status lfem_body_set_transform(lfem_world* world, lfem_body body, 
     });
 }
 
+LFEM_API lfem_status lfem_body_set_friction(lfem_world* world, lfem_body body, double friction) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));  // the handle first
+        require(std::isfinite(friction) && friction >= 0.0, "friction must be finite and >= 0");
+        w.set_friction(from_c(body), friction);
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_damping(lfem_world* world, lfem_body body, double damping) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));
+        require(std::isfinite(damping) && damping >= 0.0, "damping must be finite and >= 0 1/s");
+        w.set_damping(from_c(body), damping);
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_filter(lfem_world* world, lfem_body body, uint32_t category_bits,
+                                          uint32_t mask_bits) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));
+        w.set_filter(from_c(body), category_bits, mask_bits);
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_user_data(lfem_world* world, lfem_body body, void* user_data) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));
+        w.set_user_data(from_c(body), user_data);
+    });
+}
+
 LFEM_API lfem_status lfem_body_apply_impulse(lfem_world* world, lfem_body body, const double point[3],
                                              const double impulse[3]) {
     return guard(__func__, [&] {

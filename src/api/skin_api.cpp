@@ -47,6 +47,14 @@ LFEM_API lfem_status lfem_body_add_skin(lfem_world* world, lfem_body body, const
     });
 }
 
+LFEM_API lfem_status lfem_body_remove_skin(lfem_world* world, lfem_body body, uint32_t skin) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));  // the handle first
+        w.remove_skin(from_c(body), skin);
+    });
+}
+
 LFEM_API lfem_status lfem_body_get_skin_count(const lfem_world* world, lfem_body body, uint32_t* out) {
     return guard(__func__, [&] {
         const Body& b = world_of(world).body(from_c(body));

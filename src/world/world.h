@@ -111,6 +111,13 @@ public:
     // one, rigidly, to the pose given (7 finite doubles, the quaternion normalised).
     void set_positions(BodyHandle body, const double* x);
     void set_transform(BodyHandle body, const double transform[7]);
+    // ---- settings changed after creation (body_settings.cpp); values checked by the caller
+    void set_friction(BodyHandle body, double friction);
+    void set_damping(BodyHandle body, double damping);
+    void set_user_data(BodyHandle body, void* user_data);
+    void set_filter(BodyHandle body, uint32_t category_bits, uint32_t mask_bits);
+    // Later skins' indices move down by one.
+    void remove_skin(BodyHandle body, uint32_t skin);
     // ---- impulses (impulses.cpp): a deformable or rigid body with a mesh; point and impulse
     // finite (checked by the caller)
     void apply_impulse(BodyHandle body, const double point[3], const double impulse[3]);

@@ -274,11 +274,12 @@ void remove_folder(const std::string& dir) {
     rmdir(dir.c_str());
 }
 
-// Teleports, poses and impulses (a variant of call 24, flag bit 2): set_positions (nodes at
-// random, perhaps the wrong count), set_transform (any pose, perhaps a zero quaternion), the two
-// getters (whose outputs are finite, or untouched when refused), or an impulse at a point.
+// Teleports, poses, impulses and settings (a variant of call 24, flag bit 2): set_positions
+// (nodes at random, perhaps the wrong count), set_transform (any pose, perhaps a zero
+// quaternion), the two getters (whose outputs are finite, or untouched when refused), an impulse
+// at a point, a setting changed (friction, damping, filter, user data), a skin removed.
 lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t f, const char*& name) {
-    switch (in.below(4)) {
+    switch (in.below(6)) {
         case 0: {
             name = "body_set_positions";
             uint32_t n = node_count_of(w, b);
@@ -318,6 +319,36 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
                 for (int k = 0; k < 3; ++k)  // no more than the impulse (held nodes pass theirs on)
                     expect(std::isfinite(P1[k]) && std::fabs(P1[k] - P0[k]) <= std::fabs(j[k]) * (1 + 1e-9) + 1e-9 * (1 + std::fabs(P0[k])),
                            "an impulse changed the momentum by more than itself:", name);
+            return st;
+        }
+        case 4: {
+            const double value = in.number(-1, 10);
+            switch (in.below(4)) {
+                case 0: name = "body_set_friction"; return lfem_body_set_friction(w, b, value);
+                case 1: name = "body_set_damping"; return lfem_body_set_damping(w, b, value);
+                case 2: name = "body_set_filter"; return lfem_body_set_filter(w, b, in.u32(), in.u32());
+                default: {
+                    name = "body_set_user_data";
+                    // The session's record of the body's user data stays the truth: set it back.
+                    void* was = nullptr;
+                    if (lfem_body_get_user_data(w, b, &was) != LFEM_OK) return lfem_body_set_user_data(w, b, nullptr);
+                    const lfem_status st = lfem_body_set_user_data(w, b, reinterpret_cast<void*>(uintptr_t(0xABC0)));
+                    void* now = nullptr;
+                    expect(st != LFEM_OK || (lfem_body_get_user_data(w, b, &now) == LFEM_OK && now == reinterpret_cast<void*>(uintptr_t(0xABC0))),
+                           "the user data set is not the one read:", name);
+                    return st == LFEM_OK ? lfem_body_set_user_data(w, b, was) : st;
+                }
+            }
+        }
+        case 5: {
+            name = "body_remove_skin";
+            uint32_t before = 0;
+            const bool counted = lfem_body_get_skin_count(w, b, &before) == LFEM_OK;
+            const lfem_status st = lfem_body_remove_skin(w, b, in.below(4));
+            uint32_t after = 0;
+            if (st == LFEM_OK)
+                expect(counted && lfem_body_get_skin_count(w, b, &after) == LFEM_OK && after + 1 == before,
+                       "a skin removed did not lower the count by one:", name);
             return st;
         }
         default: {

@@ -480,6 +480,26 @@ class Program:
         for x in impulse:
             self.value(-5, 5, x)
 
+    def setting(self, body_index, which, value=0.0, category=1, mask=0xFFFFFFFF):
+        # variant 4: 0 friction, 1 damping (value), 2 filter (category, mask), 3 user data
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(2)
+        self.below(4)
+        self.value(-1, 10, value)
+        self.below(which)
+        if which == 2:
+            self.u32(category)
+            self.u32(mask)
+
+    def remove_skin(self, body_index, skin):
+        # variant 5
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(2)
+        self.below(5)
+        self.below(skin)
+
     def read_pose(self, body_index):
         # variant 2: lfem_body_get_transform and lfem_body_get_center_of_mass
         self.call(SET_VELOCITIES)
@@ -561,6 +581,13 @@ p.events(3)
 p.impulse(1, (0.05, 0.05, 0.25), (0.5, 0, 1))
 p.impulse(1, (0.9, 0.9, 0.9), (0.5, 0, 1))   # refused: far from the block
 p.impulse(0, (0, 0, -0.05), (1, 0, 0))       # refused: the floor is static
+p.step(0.01)
+p.setting(1, 0, 0.0)                          # friction 0
+p.setting(1, 1, 2.0)                          # damping 2 / s
+p.setting(1, 1, -1.0)                         # refused: negative damping
+p.setting(1, 2, category=4, mask=0xFFFFFFFE)  # a filter change
+p.setting(1, 3)                               # user data set and set back
+p.remove_skin(1, 0)                           # refused: no skin
 p.step(0.01)
 seed('teleports', p)
 

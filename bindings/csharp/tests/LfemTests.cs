@@ -752,6 +752,15 @@ public static class LfemTests
             Vec3[] far = { new Vec3(5, 5, 5), new Vec3(5.1, 5, 5), new Vec3(5, 5.1, 5) };
             Equal(Status.InvalidArgument, Throws(() => world.AddSkin(block, far, new uint[] { 0, 1, 2 }), "far").Status, "far");
             Equal(1, world.SkinCount(block), "nothing added");
+            // Settings after creation, and the skin removed.
+            world.SetFriction(block, 0.2);
+            world.SetDamping(block, 1.0);
+            world.SetFilter(block, 1, 0xFFFFFFFFu);
+            world.SetUserData(block, new IntPtr(1234));
+            Equal(new IntPtr(1234), world.GetUserData(block), "user data");
+            Equal(Status.InvalidArgument, Throws(() => world.SetDamping(block, -1.0), "negative damping").Status, "damping");
+            world.RemoveSkin(block, 0);
+            Equal(0, world.SkinCount(block), "skin removed");
         }
     }
 

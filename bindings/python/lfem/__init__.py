@@ -553,6 +553,26 @@ class World:
                                   t.size // 3, ctypes.byref(index))
         return index.value
 
+    def remove_skin(self, body: Body, skin: int) -> None:
+        """Remove a skin; the skins after it move down one index."""
+        native.lfem_body_remove_skin(self.handle, _body(body), skin)
+
+    def set_friction(self, body: Body, friction: float) -> None:
+        """Change the body's Coulomb friction (>= 0); the body wakes."""
+        native.lfem_body_set_friction(self.handle, _body(body), friction)
+
+    def set_damping(self, body: Body, damping: float) -> None:
+        """Change the body's mass-proportional damping (>= 0, 1/s); the body wakes."""
+        native.lfem_body_set_damping(self.handle, _body(body), damping)
+
+    def set_filter(self, body: Body, category_bits: int, mask_bits: int) -> None:
+        """Change the body's collision filter; pairs it now forbids end with the next step's events."""
+        native.lfem_body_set_filter(self.handle, _body(body), category_bits, mask_bits)
+
+    def set_user_data(self, body: Body, user_data: Optional[int]) -> None:
+        """Change the user data user_data() returns (an address, or None)."""
+        native.lfem_body_set_user_data(self.handle, _body(body), user_data)
+
     def skin_count(self, body: Body) -> int:
         """The number of skins of a body."""
         out = ctypes.c_uint32()

@@ -697,6 +697,18 @@ class SkinsAndQueries(unittest.TestCase):
             with self.assertRaises(lfem.InvalidArgumentError):  # far outside the block
                 world.add_skin(block, [[5, 5, 5], [5.1, 5, 5], [5, 5.1, 5]], [[0, 1, 2]])
             self.assertEqual(world.skin_count(block), 1)
+            # Settings after creation, and the skin removed.
+            world.set_friction(block, 0.2)
+            world.set_damping(block, 1.0)
+            world.set_filter(block, 1, 0xFFFFFFFF)
+            world.set_user_data(block, 1234)
+            self.assertEqual(world.user_data(block), 1234)
+            with self.assertRaises(lfem.InvalidArgumentError):
+                world.set_damping(block, -1.0)
+            with self.assertRaises(lfem.InvalidArgumentError):
+                world.remove_skin(block, 1)
+            world.remove_skin(block, 0)
+            self.assertEqual(world.skin_count(block), 0)
 
     def test_a_teleported_block_lands_with_its_approach_speed(self):
         # A soft block put 0.2 m above a plane by its transform (x = X + t) falls and lands at

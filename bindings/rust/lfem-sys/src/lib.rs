@@ -534,6 +534,12 @@ extern "C" {
         positions: *const c_double,
         node_count: u32,
     ) -> lfem_status;
+    pub fn lfem_body_set_friction(world: *mut lfem_world, body: lfem_body, friction: c_double) -> lfem_status;
+    pub fn lfem_body_set_damping(world: *mut lfem_world, body: lfem_body, damping: c_double) -> lfem_status;
+    pub fn lfem_body_set_filter(world: *mut lfem_world, body: lfem_body, category_bits: u32, mask_bits: u32)
+        -> lfem_status;
+    pub fn lfem_body_set_user_data(world: *mut lfem_world, body: lfem_body, user_data: *mut c_void) -> lfem_status;
+    pub fn lfem_body_remove_skin(world: *mut lfem_world, body: lfem_body, skin: u32) -> lfem_status;
     pub fn lfem_body_apply_impulse(
         world: *mut lfem_world,
         body: lfem_body,

@@ -1384,6 +1384,30 @@ impl World {
         Ok(index)
     }
 
+    /// Remove a skin; the skins after it move down one index.
+    pub fn remove_skin(&mut self, body: Body, skin: u32) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_remove_skin(self.ptr_mut(), body.raw(), skin) })
+    }
+
+    /// Change the body's Coulomb friction (>= 0); the body wakes.
+    pub fn set_friction(&mut self, body: Body, friction: f64) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_set_friction(self.ptr_mut(), body.raw(), friction) })
+    }
+
+    /// Change the body's mass-proportional damping (>= 0, 1/s); the body wakes.
+    pub fn set_damping(&mut self, body: Body, damping: f64) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_set_damping(self.ptr_mut(), body.raw(), damping) })
+    }
+
+    /// Change the body's collision filter; pairs it now forbids end with the next step's events.
+    pub fn set_filter(&mut self, body: Body, category_bits: u32, mask_bits: u32) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_set_filter(self.ptr_mut(), body.raw(), category_bits, mask_bits) })
+    }
+
     /// The number of skins of a body.
     pub fn skin_count(&self, body: Body) -> Result<usize> {
         let mut out = 0u32;

@@ -588,6 +588,14 @@ fn a_skin_falls_with_its_body() {
     let far = [[5.0, 5.0, 5.0], [5.1, 5.0, 5.0], [5.0, 5.1, 5.0]];
     assert_eq!(world.add_skin(block, &far, &[[0, 1, 2]]).unwrap_err().status(), Status::InvalidArgument);
     assert_eq!(world.skin_count(block).unwrap(), 1);
+    // Settings after creation, and the skin removed.
+    world.set_friction(block, 0.2).unwrap();
+    world.set_damping(block, 1.0).unwrap();
+    world.set_filter(block, 1, u32::MAX).unwrap();
+    assert_eq!(world.set_damping(block, -1.0).unwrap_err().status(), Status::InvalidArgument);
+    assert_eq!(world.remove_skin(block, 1).unwrap_err().status(), Status::InvalidArgument);
+    world.remove_skin(block, 0).unwrap();
+    assert_eq!(world.skin_count(block).unwrap(), 0);
 }
 
 #[test]
