@@ -140,7 +140,7 @@ CHECK_OFFSET(lfem_body_def, internal_value, 112);
 CHECK_OFFSET(lfem_body_def, enable_sleep, 116);
 CHECK_OFFSET(lfem_body_def, self_contact, 117);
 CHECK_OFFSET(lfem_body_def, composite_tets, 118);
-CHECK_OFFSET(lfem_body_def, padding, 119);
+CHECK_OFFSET(lfem_body_def, report_contacts, 119);
 
 CHECK_SIZE(lfem_contact, 128);
 CHECK_OFFSET(lfem_contact, body_a, 0);

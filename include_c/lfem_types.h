@@ -300,7 +300,10 @@ typedef struct lfem_body_def {
                                    as with 4-node tets) and it still bends without locking; a
                                    quadratic displacement is no longer reproduced exactly.
                                    0 (default) = the quadratic shape functions' strain */
-    uint8_t padding;          /**< unused, 0 */
+    uint8_t report_contacts;  /**< 1 = every call reports each pair of this body that stays in
+                                   touch (LFEM_EVENT_CONTACT_PERSIST: its impulse, peak force and
+                                   contact count), as a game reads a resting load; default 0
+                                   (begins and ends only) */
 } lfem_body_def;
 
 /** A definition filled with the defaults above. Always start from it. */
@@ -447,13 +450,17 @@ typedef enum lfem_event_type {
     LFEM_EVENT_WAKE = 3,               /**< body_a woke */
     LFEM_EVENT_ATTACHMENT_BROKEN = 4,  /**< attachment (now stale) broke; body_a, body_b: its body
                                             and target */
+    LFEM_EVENT_CONTACT_PERSIST = 5,    /**< a pair that touched at the end of the last call and
+                                            still does, reported when either body asks
+                                            (lfem_body_def.report_contacts) */
     LFEM_EVENT_TYPE_FORCE32 = 0x7fffffff /**< not a type: keeps the enum 32 bits wide */
 } lfem_event_type;
 
 /** One event of the last step (lfem_world_get_events). */
 typedef struct lfem_event {
     lfem_event_type type;          /**< what happened */
-    uint32_t padding;              /**< unused, 0 */
+    uint32_t contact_count;        /**< contact events: the pair's active node contacts at the end
+                                        of the call (0 for an end); else 0 */
     lfem_body body_a,              /**< contact: the pair, body_a the lower slot; sleep, wake:
                                         the body; broken: the attachment's body */
               body_b;              /**< contact: the pair's other body; sleep, wake: null;

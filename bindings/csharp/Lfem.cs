@@ -185,6 +185,7 @@ namespace Lfem
         Sleep = 2,        // BodyA fell asleep
         Wake = 3,         // BodyA woke
         AttachmentBroken = 4,
+        ContactPersist = 5, // a pair still touching (when either body reports its contacts)
     }
 
     /// <summary>lfem_event: one event of the last step.</summary>
@@ -192,9 +193,7 @@ namespace Lfem
     public struct Event
     {
         public EventType Type;
-#pragma warning disable 0169 // C padding
-        private uint padding;
-#pragma warning restore 0169
+        public uint ContactCount;     // contact events: the pair's active contacts after the step
         public Body BodyA, BodyB;
         public Attachment Attachment;
         public double NormalImpulse;  // N s, a pair's over the step
@@ -323,9 +322,7 @@ namespace Lfem
         public byte EnableSleep;      // 1 (default) = may fall asleep when the world allows it
         public byte SelfContact;      // 1 = the surface collides with itself (deformable only), default 0
         public byte CompositeTets;    // 1 = 10-node tets as the composite element, default 0
-#pragma warning disable 0169 // C padding
-        private byte padding0;
-#pragma warning restore 0169
+        public byte ReportContacts;   // 1 = every step reports the pairs that stay in touch, default 0
 
         /// <summary>The defaults (lfem_body_def_default).</summary>
         public static BodyDef Default { get { return Native.lfem_body_def_default(); } }

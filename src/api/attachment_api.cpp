@@ -21,6 +21,7 @@ lfem_event event_as_c(const StepEvent& e) {
     out.normal_impulse = e.normal_impulse;
     out.max_force = e.max_force;
     out.approach_speed = e.impact.approach_speed;
+    out.contact_count = e.contact_count;
     for (int k = 0; k < 3; ++k) out.point[k] = e.impact.point[k], out.normal[k] = e.impact.normal[k];
     return out;
 }

@@ -36,6 +36,8 @@ void check_body_def(const lfem_body_def& d) {
     require_finite(d.angular_velocity, 3, "def->angular_velocity");
     require(d.self_contact <= 1, "def->self_contact must be 0 or 1, got " + std::to_string(int(d.self_contact)));
     require(d.enable_sleep <= 1, "def->enable_sleep must be 0 or 1, got " + std::to_string(int(d.enable_sleep)));
+    require(d.report_contacts <= 1,
+            "def->report_contacts must be 0 or 1, got " + std::to_string(int(d.report_contacts)));
     require(d.composite_tets <= 1, "def->composite_tets must be 0 or 1, got " + std::to_string(int(d.composite_tets)));
     require(d.self_contact == 0 || d.type == LFEM_BODY_DEFORMABLE,
             "def->self_contact needs a deformable body (the others keep their shape)");

@@ -30,6 +30,7 @@ lfem_event_type to_c(EventType t) {
         case EventType::sleep: return LFEM_EVENT_SLEEP;
         case EventType::wake: return LFEM_EVENT_WAKE;
         case EventType::attachment_broken: return LFEM_EVENT_ATTACHMENT_BROKEN;
+        case EventType::contact_persist: return LFEM_EVENT_CONTACT_PERSIST;
     }
     return LFEM_EVENT_CONTACT_BEGIN;
 }
@@ -151,6 +152,7 @@ BodyDef to_body_def(const lfem_body_def& d) {
     b.enable_sleep = d.enable_sleep != 0;
     b.self_contact = d.self_contact != 0;
     b.composite_tets = d.composite_tets != 0;
+    b.report_contacts = d.report_contacts != 0;
     return b;
 }
 
@@ -172,6 +174,7 @@ lfem_body_def to_c(const BodyDef& b, uint32_t cookie) {
     d.enable_sleep = b.enable_sleep;
     d.self_contact = b.self_contact;
     d.composite_tets = b.composite_tets;
+    d.report_contacts = b.report_contacts;
     return d;
 }
 

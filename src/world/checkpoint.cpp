@@ -24,7 +24,7 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 10; // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 11; // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
@@ -32,7 +32,8 @@ constexpr uint32_t kFormatVersion = 10; // 2: thread_count in the def, float tet
                                         // per tet, quadrature volumes, 6-node faces); 8: skins;
                                         // 9: contacts' plane gap and gentle flag; 10: the
                                         // definitions field by field, no Lame parameters
-                                        // (derived from the body's def)
+                                        // (derived from the body's def); 11: a body's
+                                        // report_contacts
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -167,7 +168,7 @@ template <class A, class D>
 void body_def_fields(A& a, D& d) {
     a(d.type), a(d.model), a(d.young_modulus), a(d.poisson_ratio), a(d.density), a(d.damping);
     a(d.friction), a(d.linear_velocity), a(d.angular_velocity), a(d.category_bits), a(d.mask_bits);
-    a(d.enable_sleep), a(d.self_contact), a(d.composite_tets);
+    a(d.enable_sleep), a(d.self_contact), a(d.composite_tets), a(d.report_contacts);
 }
 
 template <class A, class B>

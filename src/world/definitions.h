@@ -41,6 +41,7 @@ struct BodyDef {
     bool enable_sleep = true;
     bool self_contact = false;
     bool composite_tets = false;
+    bool report_contacts = false;  // every call reports its pairs that stay in touch
 };
 
 // Generation-checked handles (body_registry.h): {0, 0} is the null handle.
@@ -52,6 +53,6 @@ struct AttachmentHandle {
     uint32_t index = 0, generation = 0;
 };
 
-enum class EventType : int32_t { contact_begin, contact_end, sleep, wake, attachment_broken };
+enum class EventType : int32_t { contact_begin, contact_end, sleep, wake, attachment_broken, contact_persist };
 
 }  // namespace lfem

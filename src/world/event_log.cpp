@@ -81,8 +81,13 @@ void EventLog::tally(Span<const BodyPairForce> solved, Span<const ContactRecord>
     }
 }
 
-void EventLog::finish_call(std::vector<uint64_t>& touching, const BodyRegistry& bodies) {
-    std::vector<uint64_t> now, met;
+void EventLog::finish_call(std::vector<uint64_t>& touching, const BodyRegistry& bodies,
+                           Span<const ContactRecord> contacts) {
+    std::vector<uint64_t> now, met, active;
+    for (const ContactRecord& r : contacts)
+        if (r.active()) active.push_back(body_pair_key(r.body_a, r.body_b));
+    std::sort(active.begin(), active.end());
+    const auto reports = [&](uint32_t slot) { return bodies.live(slot) && bodies.slot(slot).def.report_contacts; };
     met.reserve(pair_tally_.size());
     for (const auto& [key, t] : pair_tally_) {
         met.push_back(key);
@@ -104,12 +109,18 @@ void EventLog::finish_call(std::vector<uint64_t>& touching, const BodyRegistry& 
         e.b = bodies.handle_of(uint32_t(key));
         if (found != pair_tally_.end())
             e.normal_impulse = found->second.impulse, e.max_force = found->second.max_force, e.impact = found->second.impact;
+        const auto run = std::equal_range(active.begin(), active.end(), key);
+        e.contact_count = after ? uint32_t(run.second - run.first) : 0;
         if (during && !before) {
             e.type = EventType::contact_begin;
             events.push_back(e);
         }
         if ((before || during) && !after) {
             e.type = EventType::contact_end;
+            events.push_back(e);
+        }
+        if (before && after && (reports(uint32_t(key >> 32)) || reports(uint32_t(key)))) {
+            e.type = EventType::contact_persist;
             events.push_back(e);
         }
     }

@@ -33,6 +33,7 @@ struct StepEvent {
     double normal_impulse = 0;  // N s
     double max_force = 0;       // N
     ImpactPoint impact;         // contact events: the pair's approach in its first sub-step of the call
+    uint32_t contact_count = 0; // contact events: the pair's active records at the end of the call
 };
 
 class EventLog {
@@ -64,9 +65,11 @@ public:
 
     // After a call that succeeded: begin for a pair that touched during it and not at the end of
     // the last call (`touching`, which becomes the pairs touching now), end for one that touched
-    // (before or during it) and does not at its end; then the wakes between calls, the sleeps and
-    // wakes of the call, the broken attachments. Allocates before it changes anything.
-    void finish_call(std::vector<uint64_t>& touching, const BodyRegistry& bodies);
+    // (before or during it) and does not at its end, persist for one that touched at both ends
+    // when either body reports its contacts (BodyDef::report_contacts), each with the pair's
+    // active records in `contacts`; then the wakes between calls, the sleeps and wakes of the
+    // call, the broken attachments. Allocates before it changes anything.
+    void finish_call(std::vector<uint64_t>& touching, const BodyRegistry& bodies, Span<const ContactRecord> contacts);
 
 private:
     struct PairTally {

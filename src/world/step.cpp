@@ -203,7 +203,7 @@ void World::step(double dt) {
 void World::finish_call(double dt) {
     finish_attachment_frames();
     update_sleep(dt);
-    events_.finish_call(state_.touching, bodies_);
+    events_.finish_call(state_.touching, bodies_, state_.contacts);
     moved(pool_.get());  // the queries' boxes of the new positions (once queries are in use)
 }
 

@@ -395,6 +395,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             d.self_contact = (f >> 2) & 1;
             d.composite_tets = (f >> 3) & 1;
             d.enable_sleep = ((f >> 4) & 1) ^ 1;
+            d.report_contacts = (f >> 7) & 1;
             if (f & 32) d.self_contact = in.byte(), d.composite_tets = in.byte(), d.enable_sleep = in.byte();
             if (f & 64) d.internal_value ^= 1u + in.byte();
             void* user_data = reinterpret_cast<void*>(uintptr_t(0x1000 + 8 * s.bodies.size()));
@@ -894,7 +895,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             for (uint32_t i = 0; i < count; ++i) {
                 const lfem_event& e = out.v[i];
                 note(s, "type ", e.type);
-                expect(e.type >= LFEM_EVENT_CONTACT_BEGIN && e.type <= LFEM_EVENT_ATTACHMENT_BROKEN,
+                expect(e.type >= LFEM_EVENT_CONTACT_BEGIN && e.type <= LFEM_EVENT_CONTACT_PERSIST,
                        "an event of no known type:", name);
                 if (e.type == LFEM_EVENT_ATTACHMENT_BROKEN)
                     expect(lfem_attachment_is_valid(w, e.attachment) == 0, "a broken attachment is still valid:", name);

@@ -264,6 +264,60 @@ TEST(Events, AnImpactBeginsWithItsApproachSpeedPointAndNormal) {
     }
 }
 
+// A body that reports its contacts (lfem_body_def.report_contacts) gets, every call, an event
+// for each pair that stays in touch, with the pair's impulse over the call, its peak force and
+// its active contacts. Two undamped cubes resting on a static block, one reporting: one PERSIST
+// event a call, for its pair alone. Newton over the call: the floor's impulse on the cube is its
+// change of momentum plus what gravity took, m g dt (no damping impulse; to round-off of the
+// velocity sums, 1e-9 of m g dt); the count is that of the pair's contacts the contact query
+// lists.
+TEST(Events, AReportingBodyHearsOfEachPairThatStaysInTouch) {
+    World w;
+    Mesh floor, a_mesh, b_mesh;
+    make_box_mesh(floor, 0.6, 0.4, 0.05, 2, 2, 1, -0.3, -0.2, -0.05);
+    lfem_body_def fd = lfem_body_def_default();
+    fd.type = LFEM_BODY_STATIC;
+    const lfem_body f = add_body(w, fd, floor);
+    make_box_mesh(a_mesh, 0.1, 0.1, 0.1, 2, 2, 2, -0.2, -0.05, 0.0005);
+    make_box_mesh(b_mesh, 0.1, 0.1, 0.1, 2, 2, 2, 0.1, -0.05, 0.0005);
+    lfem_body_def d = lfem_body_def_default();
+    d.damping = 0;  // Newton's balance below holds no damping impulse
+    d.report_contacts = 1;
+    const lfem_body a = add_body(w, d, a_mesh);
+    d.report_contacts = 0;
+    add_body(w, d, b_mesh);
+    for (int call = 0; call < 60; ++call) ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    double mass = 0;
+    lfem_body_get_mass(w, a, &mass);
+    const double dt = 1.0 / 60, P0 = momentum_z(w, a);
+    ASSERT_EQ(lfem_world_step(w, dt), LFEM_OK);
+    const double P1 = momentum_z(w, a);
+    const std::vector<lfem_event> events = events_of(w);
+    ASSERT_EQ(events.size(), 1u);
+    const lfem_event& e = events[0];
+    EXPECT_EQ(e.type, LFEM_EVENT_CONTACT_PERSIST);
+    EXPECT_EQ(e.body_a.index, f.index);
+    EXPECT_EQ(e.body_b.index, a.index);
+    const double expected = (P1 - P0) + mass * 9.81 * dt;
+    std::printf("persisting pair: impulse %.9g N s against dP + m g dt = %.9g N s, %u contacts\n", e.normal_impulse,
+                expected, e.contact_count);
+    EXPECT_NEAR(e.normal_impulse, expected, 1e-9 * mass * 9.81 * dt);
+    uint32_t n = 0;
+    lfem_world_query_contacts(w, nullptr, 0, &n);
+    std::vector<lfem_contact> contacts(n);
+    ASSERT_EQ(lfem_world_query_contacts(w, contacts.data(), n, &n), LFEM_OK);
+    uint32_t of_pair = 0;
+    for (const lfem_contact& c : contacts)
+        of_pair += (c.body_a.index == a.index && c.body_b.index == f.index) || (c.body_a.index == f.index && c.body_b.index == a.index);
+    EXPECT_EQ(e.contact_count, of_pair);
+    EXPECT_GT(of_pair, 0u);
+    // A definition with report_contacts neither 0 nor 1 is refused.
+    lfem_body_def bad = lfem_body_def_default();
+    bad.report_contacts = 2;
+    lfem_body out{};
+    EXPECT_EQ(lfem_body_create(w, &bad, &out), LFEM_INVALID_ARGUMENT);
+}
+
 TEST(Events, TooSmallBuffersAndNullsAreRefused) {
     World w;
     Mesh floor, cube;

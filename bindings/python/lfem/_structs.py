@@ -188,7 +188,7 @@ class BodyDef(_Definition):
         ("enable_sleep", ctypes.c_uint8),     # 1 (default) = may fall asleep when the world allows
         ("self_contact", ctypes.c_uint8),     # 1 = the surface collides with itself (deformable)
         ("composite_tets", ctypes.c_uint8),   # 1 = 10-node tets as the composite element
-        ("_padding", ctypes.c_uint8),
+        ("report_contacts", ctypes.c_uint8),  # 1 = every step reports the pairs that stay in touch
     ]
     _enums = ("type", "model")
     type = _enum_property("_type", BodyType)
@@ -325,13 +325,14 @@ class EventType(enum.IntEnum):
     SLEEP = 2               # body_a fell asleep
     WAKE = 3                # body_a woke
     ATTACHMENT_BROKEN = 4   # attachment broke (now stale)
+    CONTACT_PERSIST = 5     # a pair still touching (when either body reports its contacts)
 
 
 class Event(ctypes.Structure):
     """lfem_event: one event of the last step."""
 
     _fields_ = [
-        ("_type", ctypes.c_int), ("_padding", ctypes.c_uint32), ("body_a", Body), ("body_b", Body),
+        ("_type", ctypes.c_int), ("contact_count", ctypes.c_uint32), ("body_a", Body), ("body_b", Body),
         ("attachment", Attachment), ("normal_impulse", ctypes.c_double), ("max_force", ctypes.c_double),
         ("approach_speed", ctypes.c_double), ("point", _d3), ("normal", _d3),
     ]

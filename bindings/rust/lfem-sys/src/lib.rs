@@ -170,13 +170,14 @@ pub const LFEM_EVENT_CONTACT_END: lfem_event_type = 1;
 pub const LFEM_EVENT_SLEEP: lfem_event_type = 2;
 pub const LFEM_EVENT_WAKE: lfem_event_type = 3;
 pub const LFEM_EVENT_ATTACHMENT_BROKEN: lfem_event_type = 4;
+pub const LFEM_EVENT_CONTACT_PERSIST: lfem_event_type = 5;
 
 /// One event of the last step (lfem_event).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct lfem_event {
     pub type_: lfem_event_type,
-    pub padding: u32,
+    pub contact_count: u32,
     pub body_a: lfem_body,
     pub body_b: lfem_body,
     pub attachment: lfem_attachment,
@@ -291,7 +292,7 @@ pub struct lfem_body_def {
     pub enable_sleep: u8,
     pub self_contact: u8,
     pub composite_tets: u8,
-    pub padding: u8,
+    pub report_contacts: u8,
 }
 
 #[repr(C)]

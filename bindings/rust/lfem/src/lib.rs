@@ -342,6 +342,9 @@ pub struct BodyDef {
     /// 10-node tets as the composite element (linear sub-tets, projected strain: plane waves
     /// and impacts carry as with 4-node tets), default false.
     pub composite_tets: bool,
+    /// Every step reports each pair of this body that stays in touch
+    /// ([`EventType::ContactPersist`]), default false.
+    pub report_contacts: bool,
     internal_value: u32,
 }
 
@@ -374,6 +377,7 @@ impl Default for BodyDef {
             self_contact: d.self_contact != 0,
             enable_sleep: d.enable_sleep != 0,
             composite_tets: d.composite_tets != 0,
+            report_contacts: d.report_contacts != 0,
             internal_value: d.internal_value,
         }
     }
@@ -408,7 +412,7 @@ impl BodyDef {
             enable_sleep: u8::from(self.enable_sleep),
             self_contact: u8::from(self.self_contact),
             composite_tets: u8::from(self.composite_tets),
-            padding: 0,
+            report_contacts: u8::from(self.report_contacts),
         }
     }
 }
@@ -644,6 +648,9 @@ pub enum EventType {
     Wake,
     /// `attachment` broke (its handle is stale now).
     AttachmentBroken,
+    /// A pair that touched at the end of the last step still does (reported when either body
+    /// asks, [`BodyDef::report_contacts`]).
+    ContactPersist,
 }
 
 /// One event of the last step (lfem_event).
@@ -663,6 +670,8 @@ pub struct Event {
     pub max_force: f64,
     /// m/s: a contact pair's fastest approach at a sub-step of the step (an impact's speed).
     pub approach_speed: f64,
+    /// A contact pair's active node contacts at the end of the step (0 for an end).
+    pub contact_count: u32,
     /// m: where that approach was, at the end of its sub-step (contact events).
     pub point: [f64; 3],
     /// The unit contact normal there, from `body_a` toward `body_b` (contact events).
@@ -958,6 +967,7 @@ impl World {
                     sys::LFEM_EVENT_CONTACT_END => EventType::ContactEnd,
                     sys::LFEM_EVENT_SLEEP => EventType::Sleep,
                     sys::LFEM_EVENT_WAKE => EventType::Wake,
+                    sys::LFEM_EVENT_CONTACT_PERSIST => EventType::ContactPersist,
                     _ => EventType::AttachmentBroken,
                 },
                 body_a: body(e.body_a),
@@ -966,6 +976,7 @@ impl World {
                 normal_impulse: e.normal_impulse,
                 max_force: e.max_force,
                 approach_speed: e.approach_speed,
+                contact_count: e.contact_count,
                 point: e.point,
                 normal: e.normal,
             })
