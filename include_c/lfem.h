@@ -239,6 +239,13 @@ LFEM_API lfem_status lfem_body_set_positions(lfem_world* world, lfem_body body,
 LFEM_API lfem_status lfem_body_set_friction(lfem_world* world, lfem_body body, double friction);
 /** See lfem_body_set_friction. */
 LFEM_API lfem_status lfem_body_set_damping(lfem_world* world, lfem_body body, double damping);
+/** A deformable body's Young's modulus (Pa, > 0) and Poisson's ratio (in (-1, 0.5)), as at
+ * creation: its elastic forces at its current shape and its stable step follow (the step of the
+ * next call with them), the change of strain energy is the caller's work, the body wakes. Not
+ * under mass scaling (lfem_world_def.mass_scaling_step: the added masses were fitted to the
+ * material): LFEM_INVALID_ARGUMENT. */
+LFEM_API lfem_status lfem_body_set_material(lfem_world* world, lfem_body body, double young_modulus,
+                                            double poisson_ratio);
 /** See lfem_body_set_friction. */
 LFEM_API lfem_status lfem_body_set_filter(lfem_world* world, lfem_body body, uint32_t category_bits,
                                           uint32_t mask_bits);

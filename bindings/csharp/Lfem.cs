@@ -942,6 +942,9 @@ namespace Lfem
         public void RemoveSkin(Body body, uint skin) { LfemException.Check(Native.lfem_body_remove_skin(handle, body, skin)); }
         /// <summary>Change the body's Coulomb friction (>= 0); the body wakes.</summary>
         public void SetFriction(Body body, double friction) { LfemException.Check(Native.lfem_body_set_friction(handle, body, friction)); }
+        /// <summary>Change a deformable body's Young's modulus (Pa) and Poisson's ratio; its stable step
+        /// follows, the change of strain energy is booked as work (not under mass scaling).</summary>
+        public void SetMaterial(Body body, double youngModulus, double poissonRatio) { LfemException.Check(Native.lfem_body_set_material(handle, body, youngModulus, poissonRatio)); }
         /// <summary>Change the body's mass-proportional damping (>= 0, 1/s); the body wakes.</summary>
         public void SetDamping(Body body, double damping) { LfemException.Check(Native.lfem_body_set_damping(handle, body, damping)); }
         /// <summary>Change the body's collision filter; pairs it now forbids end with the next step's events.</summary>
@@ -1291,6 +1294,7 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_positions(WorldHandle world, Body body, [In] Vec3[] positions, uint nodeCount);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_remove_skin(WorldHandle world, Body body, uint skin);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_friction(WorldHandle world, Body body, double friction);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_material(WorldHandle world, Body body, double youngModulus, double poissonRatio);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_damping(WorldHandle world, Body body, double damping);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_filter(WorldHandle world, Body body, uint categoryBits, uint maskBits);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_data(WorldHandle world, Body body, IntPtr userData);

@@ -299,6 +299,18 @@ LFEM_API lfem_status lfem_body_set_damping(lfem_world* world, lfem_body body, do
     });
 }
 
+LFEM_API lfem_status lfem_body_set_material(lfem_world* world, lfem_body body, double young_modulus,
+                                            double poisson_ratio) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));
+        require(std::isfinite(young_modulus) && young_modulus > 0.0, "young_modulus must be finite and > 0 Pa");
+        require(std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio < 0.5,
+                "poisson_ratio must lie in (-1, 0.5)");
+        w.set_material(from_c(body), young_modulus, poisson_ratio);
+    });
+}
+
 LFEM_API lfem_status lfem_body_set_filter(lfem_world* world, lfem_body body, uint32_t category_bits,
                                           uint32_t mask_bits) {
     return guard(__func__, [&] {

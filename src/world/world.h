@@ -114,6 +114,8 @@ public:
     // ---- settings changed after creation (body_settings.cpp); values checked by the caller
     void set_friction(BodyHandle body, double friction);
     void set_damping(BodyHandle body, double damping);
+    // A deformable body's E and nu (not under mass scaling); the stable step follows.
+    void set_material(BodyHandle body, double young_modulus, double poisson_ratio);
     void set_user_data(BodyHandle body, void* user_data);
     void set_filter(BodyHandle body, uint32_t category_bits, uint32_t mask_bits);
     // Later skins' indices move down by one.

@@ -325,7 +325,13 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
             const double value = in.number(-1, 10);
             switch (in.below(4)) {
                 case 0: name = "body_set_friction"; return lfem_body_set_friction(w, b, value);
-                case 1: name = "body_set_damping"; return lfem_body_set_damping(w, b, value);
+                case 1:
+                    if (f & 1) {
+                        name = "body_set_material";
+                        return lfem_body_set_material(w, b, 1e3 + 1e6 * std::fabs(value), in.number(-1.2, 0.6));
+                    }
+                    name = "body_set_damping";
+                    return lfem_body_set_damping(w, b, value);
                 case 2: name = "body_set_filter"; return lfem_body_set_filter(w, b, in.u32(), in.u32());
                 default: {
                     name = "body_set_user_data";

@@ -480,14 +480,17 @@ class Program:
         for x in impulse:
             self.value(-5, 5, x)
 
-    def setting(self, body_index, which, value=0.0, category=1, mask=0xFFFFFFFF):
-        # variant 4: 0 friction, 1 damping (value), 2 filter (category, mask), 3 user data
+    def setting(self, body_index, which, value=0.0, category=1, mask=0xFFFFFFFF, poisson=None):
+        # variant 4: 0 friction, 1 damping (value) or with poisson given the material
+        # (E = 1e3 + 1e6 |value|), 2 filter (category, mask), 3 user data
         self.call(SET_VELOCITIES)
         self.pick(body_index)
-        self.byte(2)
+        self.byte(2 | (1 if poisson is not None else 0))
         self.below(4)
         self.value(-1, 10, value)
         self.below(which)
+        if poisson is not None:
+            self.value(-1.2, 0.6, poisson)
         if which == 2:
             self.u32(category)
             self.u32(mask)
@@ -585,6 +588,8 @@ p.step(0.01)
 p.setting(1, 0, 0.0)                          # friction 0
 p.setting(1, 1, 2.0)                          # damping 2 / s
 p.setting(1, 1, -1.0)                         # refused: negative damping
+p.setting(1, 1, 2.0, poisson=0.25)            # the material: E = 2.001e6, nu 0.25
+p.setting(1, 1, 2.0, poisson=0.5)             # refused: nu 0.5
 p.setting(1, 2, category=4, mask=0xFFFFFFFE)  # a filter change
 p.setting(1, 3)                               # user data set and set back
 p.remove_skin(1, 0)                           # refused: no skin

@@ -149,3 +149,55 @@ TEST(BodySettings, BadValuesAreRefusedAndChangeNothing) {
     EXPECT_EQ(lfem_body_remove_skin(w, b, 0), LFEM_INVALID_ARGUMENT);
     EXPECT_EQ(fingerprint(w, {b}), before);
 }
+
+// A material changed on a stretched cube (nu = 0, a uniform strain of 10 %: W = E eps^2 V / 2):
+// four times the modulus holds four times the strain energy at the same shape, the difference is
+// booked as the caller's work (the balance does not move), and the stable step halves (omega_max
+// grows as sqrt(E) at a fixed nu: the stiffness scales, the Lanczos estimate with it).
+TEST(BodySettings, AMaterialChangedCarriesItsEnergyAndItsStep) {
+    lfem_world_def wd = lfem_world_def_default();
+    wd.gravity[2] = 0;
+    World w(wd);
+    Mesh m;
+    make_box_mesh(m, 0.1, 0.1, 0.1, 2, 2, 2, 0, 0, 0);
+    lfem_body_def d = lfem_body_def_default();
+    d.model = LFEM_MODEL_LINEAR;
+    d.poisson_ratio = 0.0;
+    d.young_modulus = 1e5;
+    const lfem_body b = add_body(w, d, m);
+    std::vector<double> x = positions(w, b);
+    for (size_t i = 0; i < x.size(); i += 3) x[i] *= 1.1;
+    ASSERT_EQ(lfem_body_set_positions(w, b, x.data(), uint32_t(x.size() / 3)), LFEM_OK);
+    const lfem_world_stats s0 = stats(w);
+    double h0 = 0, h1 = 0;
+    ASSERT_EQ(lfem_world_get_stable_step(w, &h0), LFEM_OK);
+    ASSERT_EQ(lfem_body_set_material(w, b, 4e5, 0.0), LFEM_OK) << lfem_last_error();
+    ASSERT_EQ(lfem_world_get_stable_step(w, &h1), LFEM_OK);
+    const lfem_world_stats s1 = stats(w);
+    std::printf("material x4: strain energy %.12g -> %.12g J, stable step %.6g -> %.6g s\n", s0.strain_energy,
+                s1.strain_energy, h0, h1);
+    EXPECT_NEAR(s1.strain_energy, 2.0, 1e-12 * 2.0);
+    EXPECT_NEAR(s1.external_work - s0.external_work, 1.5, 1e-12 * 2.0);
+    EXPECT_NEAR(s1.energy_error, s0.energy_error, 1e-12 * 2.0);
+    EXPECT_NEAR(h1 / h0, 0.5, 1e-9);
+    // Refused: a rigid body, a bad modulus or ratio, and any material under mass scaling.
+    Mesh r;
+    make_box_mesh(r, 0.1, 0.1, 0.1, 1, 1, 1, 1, 0, 0);
+    lfem_body_def rd = lfem_body_def_default();
+    rd.type = LFEM_BODY_RIGID;
+    const lfem_body rigid = add_body(w, rd, r);
+    const std::vector<unsigned char> before = fingerprint(w, {b, rigid});
+    EXPECT_EQ(lfem_body_set_material(w, rigid, 1e6, 0.3), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_set_material(w, b, 0.0, 0.3), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_set_material(w, b, 1e6, 0.5), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_set_material(w, b, NAN, 0.3), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(fingerprint(w, {b, rigid}), before);
+    lfem_world_def scaled = lfem_world_def_default();
+    scaled.mass_scaling_step = 1e-4;
+    World ws(scaled);
+    Mesh s;
+    make_box_mesh(s, 0.1, 0.1, 0.1, 1, 1, 1, 0, 0, 0);
+    const lfem_body bs = add_body(ws, lfem_body_def_default(), s);
+    EXPECT_EQ(lfem_body_set_material(ws, bs, 2e6, 0.3), LFEM_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(lfem_last_error()).find("mass scaling"), std::string::npos);
+}

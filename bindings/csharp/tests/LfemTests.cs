@@ -755,6 +755,8 @@ public static class LfemTests
             // Settings after creation, and the skin removed.
             world.SetFriction(block, 0.2);
             world.SetDamping(block, 1.0);
+            world.SetMaterial(block, 3e5, 0.25);
+            Equal(Status.InvalidArgument, Throws(() => world.SetMaterial(block, 3e5, 0.5), "nu 0.5").Status, "material");
             world.SetFilter(block, 1, 0xFFFFFFFFu);
             world.SetUserData(block, new IntPtr(1234));
             Equal(new IntPtr(1234), world.GetUserData(block), "user data");

@@ -561,6 +561,11 @@ class World:
         """Change the body's Coulomb friction (>= 0); the body wakes."""
         native.lfem_body_set_friction(self.handle, _body(body), friction)
 
+    def set_material(self, body: Body, young_modulus: float, poisson_ratio: float) -> None:
+        """Change a deformable body's Young's modulus (Pa) and Poisson's ratio; its stable step
+        follows, the change of strain energy is booked as work (not under mass scaling)."""
+        native.lfem_body_set_material(self.handle, _body(body), young_modulus, poisson_ratio)
+
     def set_damping(self, body: Body, damping: float) -> None:
         """Change the body's mass-proportional damping (>= 0, 1/s); the body wakes."""
         native.lfem_body_set_damping(self.handle, _body(body), damping)

@@ -700,6 +700,9 @@ class SkinsAndQueries(unittest.TestCase):
             # Settings after creation, and the skin removed.
             world.set_friction(block, 0.2)
             world.set_damping(block, 1.0)
+            world.set_material(block, 3e5, 0.25)
+            with self.assertRaises(lfem.InvalidArgumentError):
+                world.set_material(block, 3e5, 0.5)
             world.set_filter(block, 1, 0xFFFFFFFF)
             world.set_user_data(block, 1234)
             self.assertEqual(world.user_data(block), 1234)

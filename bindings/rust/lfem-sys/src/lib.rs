@@ -536,6 +536,8 @@ extern "C" {
         node_count: u32,
     ) -> lfem_status;
     pub fn lfem_body_set_friction(world: *mut lfem_world, body: lfem_body, friction: c_double) -> lfem_status;
+    pub fn lfem_body_set_material(world: *mut lfem_world, body: lfem_body, young_modulus: c_double, poisson_ratio: c_double)
+        -> lfem_status;
     pub fn lfem_body_set_damping(world: *mut lfem_world, body: lfem_body, damping: c_double) -> lfem_status;
     pub fn lfem_body_set_filter(world: *mut lfem_world, body: lfem_body, category_bits: u32, mask_bits: u32)
         -> lfem_status;

@@ -1407,6 +1407,13 @@ impl World {
         check(unsafe { sys::lfem_body_set_friction(self.ptr_mut(), body.raw(), friction) })
     }
 
+    /// Change a deformable body's Young's modulus (Pa) and Poisson's ratio; its stable step
+    /// follows, the change of strain energy is booked as work (not under mass scaling).
+    pub fn set_material(&mut self, body: Body, young_modulus: f64, poisson_ratio: f64) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_set_material(self.ptr_mut(), body.raw(), young_modulus, poisson_ratio) })
+    }
+
     /// Change the body's mass-proportional damping (>= 0, 1/s); the body wakes.
     pub fn set_damping(&mut self, body: Body, damping: f64) -> Result<()> {
         // SAFETY: live world.

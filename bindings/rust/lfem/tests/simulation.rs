@@ -591,6 +591,8 @@ fn a_skin_falls_with_its_body() {
     // Settings after creation, and the skin removed.
     world.set_friction(block, 0.2).unwrap();
     world.set_damping(block, 1.0).unwrap();
+    world.set_material(block, 3e5, 0.25).unwrap();
+    assert_eq!(world.set_material(block, 3e5, 0.5).unwrap_err().status(), Status::InvalidArgument);
     world.set_filter(block, 1, u32::MAX).unwrap();
     assert_eq!(world.set_damping(block, -1.0).unwrap_err().status(), Status::InvalidArgument);
     assert_eq!(world.remove_skin(block, 1).unwrap_err().status(), Status::InvalidArgument);
