@@ -349,6 +349,9 @@ LFEM_API lfem_status lfem_body_set_kinematic_velocity(lfem_world* world, lfem_bo
  * body touching it), when gravity changes, or on request. Waking a body does not wake what
  * touches it until that is touched in turn. Both are reported as events (lfem_world_get_events). */
 LFEM_API lfem_status lfem_body_wake(lfem_world* world, lfem_body body);
+/** Whether the body may fall asleep (lfem_body_def.enable_sleep after creation: 1 or 0); 0 wakes
+ * it. */
+LFEM_API lfem_status lfem_body_set_sleep_allowed(lfem_world* world, lfem_body body, int allowed);
 /** 1 when the body is awake (static bodies and bodies without a mesh: 1), 0 when asleep, -1 for
  * an invalid world or handle. */
 LFEM_API int lfem_body_is_awake(const lfem_world* world, lfem_body body);
@@ -373,6 +376,10 @@ LFEM_API int lfem_attachment_is_valid(const lfem_world* world, lfem_attachment a
  * centre, an nlerp of the rotation), so a frame set once per frame drags the nodes smoothly. */
 LFEM_API lfem_status lfem_attachment_set_frame(lfem_world* world, lfem_attachment attachment,
                                                const double frame[7]);
+/** Null target only: the frame the attachment holds its nodes to (centre, unit quaternion w x y
+ * z) as the caller last set it (where it is at the end of the next step). */
+LFEM_API lfem_status lfem_attachment_get_frame(const lfem_world* world, lfem_attachment attachment,
+                                               double frame[7]);
 /** The total force (N) the attachment put on the body's nodes at the last sub-step (the target
  * feels the opposite). */
 LFEM_API lfem_status lfem_attachment_get_force(const lfem_world* world, lfem_attachment attachment,

@@ -945,6 +945,15 @@ namespace Lfem
         /// <summary>Change a deformable body's Young's modulus (Pa) and Poisson's ratio; its stable step
         /// follows, the change of strain energy is booked as work (not under mass scaling).</summary>
         public void SetMaterial(Body body, double youngModulus, double poissonRatio) { LfemException.Check(Native.lfem_body_set_material(handle, body, youngModulus, poissonRatio)); }
+        /// <summary>Whether the body may fall asleep; false wakes it.</summary>
+        public void SetSleepAllowed(Body body, bool allowed) { LfemException.Check(Native.lfem_body_set_sleep_allowed(handle, body, allowed ? 1 : 0)); }
+        /// <summary>The caller's frame an attachment holds its nodes to, as last set (7 numbers).</summary>
+        public double[] GetAttachmentFrame(Attachment a)
+        {
+            double[] f = new double[7];
+            LfemException.Check(Native.lfem_attachment_get_frame(handle, a, f));
+            return f;
+        }
         /// <summary>Change the body's mass-proportional damping (>= 0, 1/s); the body wakes.</summary>
         public void SetDamping(Body body, double damping) { LfemException.Check(Native.lfem_body_set_damping(handle, body, damping)); }
         /// <summary>Change the body's collision filter; pairs it now forbids end with the next step's events.</summary>
@@ -1295,6 +1304,8 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_remove_skin(WorldHandle world, Body body, uint skin);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_friction(WorldHandle world, Body body, double friction);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_material(WorldHandle world, Body body, double youngModulus, double poissonRatio);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_sleep_allowed(WorldHandle world, Body body, int allowed);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_attachment_get_frame(WorldHandle world, Attachment attachment, [Out] double[] frame);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_damping(WorldHandle world, Body body, double damping);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_filter(WorldHandle world, Body body, uint categoryBits, uint maskBits);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_data(WorldHandle world, Body body, IntPtr userData);

@@ -1,5 +1,6 @@
 // C shim of attachments, sleeping and events: validates, translates node numbers and handles,
 // and leaves the work to lfem::World.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -81,6 +82,24 @@ LFEM_API lfem_status lfem_attachment_get_force(const lfem_world* world, lfem_att
         const Attachment& a = world_of(world).attachment(from_c(attachment));
         require_pointer(force, "force");
         for (int k = 0; k < 3; ++k) force[k] = a.force[k];
+    });
+}
+
+LFEM_API lfem_status lfem_attachment_get_frame(const lfem_world* world, lfem_attachment attachment, double frame[7]) {
+    return guard(__func__, [&] {
+        const Attachment& a = world_of(world).attachment(from_c(attachment));
+        require(a.target == kFrameTarget, "the attachment holds its nodes to a body, not to a frame");
+        require_pointer(frame, "frame");
+        std::copy(a.frame_end, a.frame_end + 7, frame);
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_sleep_allowed(lfem_world* world, lfem_body body, int allowed) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));
+        require(allowed == 0 || allowed == 1, "allowed must be 0 or 1, got " + std::to_string(allowed));
+        w.set_sleep_allowed(from_c(body), allowed == 1);
     });
 }
 

@@ -49,6 +49,13 @@ void World::set_material(BodyHandle handle, double young_modulus, double poisson
     body.ref.stable_step = stable_step;
 }
 
+void World::set_sleep_allowed(BodyHandle handle, bool allowed) {
+    Body& body = bodies_.get(handle);
+    if (!allowed) wake(handle.index);
+    body.def.enable_sleep = allowed;
+    if (!allowed) body.state.sleep_timer = 0.0;
+}
+
 void World::set_user_data(BodyHandle handle, void* user_data) { bodies_.get(handle).def.user_data = user_data; }
 
 // Pairs the new filter forbids are not detected again: they end with the next call's events as

@@ -117,6 +117,7 @@ public:
     // A deformable body's E and nu (not under mass scaling); the stable step follows.
     void set_material(BodyHandle body, double young_modulus, double poisson_ratio);
     void set_user_data(BodyHandle body, void* user_data);
+    void set_sleep_allowed(BodyHandle body, bool allowed);
     void set_filter(BodyHandle body, uint32_t category_bits, uint32_t mask_bits);
     // Later skins' indices move down by one.
     void remove_skin(BodyHandle body, uint32_t skin);

@@ -323,8 +323,9 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
         }
         case 4: {
             const double value = in.number(-1, 10);
-            switch (in.below(4)) {
+            switch (in.below(5)) {
                 case 0: name = "body_set_friction"; return lfem_body_set_friction(w, b, value);
+                case 4: name = "body_set_sleep_allowed"; return lfem_body_set_sleep_allowed(w, b, int(value));
                 case 1:
                     if (f & 1) {
                         name = "body_set_material";
@@ -869,7 +870,12 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
                     name = "attachment_set_frame";
                     double frame[7];
                     for (double& v : frame) v = in.number(-1, 1);
-                    return lfem_attachment_set_frame(w, a, arg(s, 0, frame));
+                    const lfem_status st = lfem_attachment_set_frame(w, a, arg(s, 0, frame));
+                    double back[7];
+                    if (st == LFEM_OK)
+                        expect(lfem_attachment_get_frame(w, a, back) == LFEM_OK && std::equal(back, back + 7, frame),
+                               "the frame set is not the frame read:", name);
+                    return st;
                 }
                 case 2: {
                     name = "attachment_get_force";

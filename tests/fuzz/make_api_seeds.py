@@ -482,7 +482,8 @@ class Program:
 
     def setting(self, body_index, which, value=0.0, category=1, mask=0xFFFFFFFF, poisson=None):
         # variant 4: 0 friction, 1 damping (value) or with poisson given the material
-        # (E = 1e3 + 1e6 |value|), 2 filter (category, mask), 3 user data
+        # (E = 1e3 + 1e6 |value|), 2 filter (category, mask), 3 user data, 4 sleep allowed
+        # (int(value))
         self.call(SET_VELOCITIES)
         self.pick(body_index)
         self.byte(2 | (1 if poisson is not None else 0))
@@ -592,6 +593,8 @@ p.setting(1, 1, 2.0, poisson=0.25)            # the material: E = 2.001e6, nu 0.
 p.setting(1, 1, 2.0, poisson=0.5)             # refused: nu 0.5
 p.setting(1, 2, category=4, mask=0xFFFFFFFE)  # a filter change
 p.setting(1, 3)                               # user data set and set back
+p.setting(1, 4, 0.0)                          # sleep not allowed
+p.setting(1, 4, 2.0)                          # refused: 2 is no flag
 p.remove_skin(1, 0)                           # refused: no skin
 p.step(0.01)
 seed('teleports', p)

@@ -264,6 +264,10 @@ TEST(Attachments, ABodyHangingFromTheCallersFrameSleepsAndWakesWhenTheFrameMoves
     // end of the next call (a held node meets an immovable target in one update: round-off).
     const double f[7] = {0.05, 0, 0, 1, 0, 0, 0};
     ASSERT_EQ(lfem_attachment_set_frame(w, att, f), LFEM_OK);
+    double got[7];
+    ASSERT_EQ(lfem_attachment_get_frame(w, att, got), LFEM_OK) << lfem_last_error();
+    for (int k = 0; k < 7; ++k) EXPECT_EQ(got[k], f[k]);
+    EXPECT_EQ(lfem_attachment_get_frame(w, att, nullptr), LFEM_INVALID_ARGUMENT);
     EXPECT_EQ(lfem_body_is_awake(w, bar), 1);
     ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
     const std::vector<double> x = positions(w, bar);

@@ -153,6 +153,23 @@ TEST(Sleep, ChangesByTheCallerWakeABody) {
     EXPECT_EQ(lfem_body_is_awake(nullptr, c), -1);
 }
 
+// lfem_body_set_sleep_allowed: a cube kept from sleeping after creation stays awake where its
+// twin sleeps; allowed again, it falls asleep.
+TEST(Sleep, SleepAllowedChangedAfterCreation) {
+    World w(sleepy());
+    Pile p;
+    build_pile(w, p, 2, 1);
+    ASSERT_EQ(lfem_body_set_sleep_allowed(w, p.cubes[0], 0), LFEM_OK) << lfem_last_error();
+    EXPECT_EQ(lfem_body_set_sleep_allowed(w, p.cubes[0], 2), LFEM_INVALID_ARGUMENT);
+    for (int i = 0; i < 200 && lfem_body_is_awake(w, p.cubes[1]); ++i) ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    ASSERT_EQ(lfem_body_is_awake(w, p.cubes[1]), 0);
+    for (int i = 0; i < 60; ++i) ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    EXPECT_EQ(lfem_body_is_awake(w, p.cubes[0]), 1);
+    ASSERT_EQ(lfem_body_set_sleep_allowed(w, p.cubes[0], 1), LFEM_OK);
+    for (int i = 0; i < 200 && lfem_body_is_awake(w, p.cubes[0]); ++i) ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    EXPECT_EQ(lfem_body_is_awake(w, p.cubes[0]), 0);
+}
+
 TEST(Sleep, OffByDefaultAndPerBody) {
     {
         World w;  // the default world: nothing sleeps

@@ -676,6 +676,7 @@ public static class LfemTests
             Check(world.IsAwake(bar), "bar awake");
             double m = world.Mass(bar);
             Close(m * G, world.GetAttachmentForce(held).Z, 1e-6 * m * G, "the frame carries the bar's weight");
+            Equal(1.0, world.GetAttachmentFrame(held)[3], "the frame as set");
             world.DestroyAttachment(held);
             Check(!world.IsValid(held), "destroyed");
         }
@@ -755,6 +756,7 @@ public static class LfemTests
             // Settings after creation, and the skin removed.
             world.SetFriction(block, 0.2);
             world.SetDamping(block, 1.0);
+            world.SetSleepAllowed(block, false);
             world.SetMaterial(block, 3e5, 0.25);
             Equal(Status.InvalidArgument, Throws(() => world.SetMaterial(block, 3e5, 0.5), "nu 0.5").Status, "material");
             world.SetFilter(block, 1, 0xFFFFFFFFu);

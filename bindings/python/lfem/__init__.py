@@ -566,6 +566,16 @@ class World:
         follows, the change of strain energy is booked as work (not under mass scaling)."""
         native.lfem_body_set_material(self.handle, _body(body), young_modulus, poisson_ratio)
 
+    def set_sleep_allowed(self, body: Body, allowed: bool) -> None:
+        """Whether the body may fall asleep; False wakes it."""
+        native.lfem_body_set_sleep_allowed(self.handle, _body(body), 1 if allowed else 0)
+
+    def attachment_frame(self, attachment: Attachment) -> Vectors:
+        """The caller's frame an attachment holds its nodes to, as last set (7 numbers)."""
+        out = np.empty(7, dtype=np.float64)
+        native.lfem_attachment_get_frame(self.handle, attachment, _dptr(out))
+        return out
+
     def set_damping(self, body: Body, damping: float) -> None:
         """Change the body's mass-proportional damping (>= 0, 1/s); the body wakes."""
         native.lfem_body_set_damping(self.handle, _body(body), damping)

@@ -255,6 +255,7 @@ class Physics(unittest.TestCase):
             self.assertTrue(world.is_awake(bar))
             m = world.mass(bar)
             self.assertAlmostEqual(world.attachment_force(held)[2], m * G, delta=1e-6 * m * G)
+            self.assertEqual(list(world.attachment_frame(held)), [0, 0, 0, 1, 0, 0, 0])
             world.destroy_attachment(held)
             self.assertFalse(world.attachment_is_valid(held))
 
@@ -700,6 +701,7 @@ class SkinsAndQueries(unittest.TestCase):
             # Settings after creation, and the skin removed.
             world.set_friction(block, 0.2)
             world.set_damping(block, 1.0)
+            world.set_sleep_allowed(block, False)
             world.set_material(block, 3e5, 0.25)
             with self.assertRaises(lfem.InvalidArgumentError):
                 world.set_material(block, 3e5, 0.5)

@@ -538,6 +538,9 @@ extern "C" {
     pub fn lfem_body_set_friction(world: *mut lfem_world, body: lfem_body, friction: c_double) -> lfem_status;
     pub fn lfem_body_set_material(world: *mut lfem_world, body: lfem_body, young_modulus: c_double, poisson_ratio: c_double)
         -> lfem_status;
+    pub fn lfem_body_set_sleep_allowed(world: *mut lfem_world, body: lfem_body, allowed: c_int) -> lfem_status;
+    pub fn lfem_attachment_get_frame(world: *const lfem_world, attachment: lfem_attachment, frame: *mut c_double)
+        -> lfem_status;
     pub fn lfem_body_set_damping(world: *mut lfem_world, body: lfem_body, damping: c_double) -> lfem_status;
     pub fn lfem_body_set_filter(world: *mut lfem_world, body: lfem_body, category_bits: u32, mask_bits: u32)
         -> lfem_status;

@@ -25,7 +25,7 @@
 use std::ffi::{CStr, CString};
 use std::fmt;
 use std::mem::{align_of, size_of};
-use std::os::raw::c_char;
+use std::os::raw::{c_char, c_int};
 use std::path::Path;
 use std::ptr::{self, NonNull};
 
@@ -1412,6 +1412,20 @@ impl World {
     pub fn set_material(&mut self, body: Body, young_modulus: f64, poisson_ratio: f64) -> Result<()> {
         // SAFETY: live world.
         check(unsafe { sys::lfem_body_set_material(self.ptr_mut(), body.raw(), young_modulus, poisson_ratio) })
+    }
+
+    /// Whether the body may fall asleep; false wakes it.
+    pub fn set_sleep_allowed(&mut self, body: Body, allowed: bool) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_set_sleep_allowed(self.ptr_mut(), body.raw(), c_int::from(allowed)) })
+    }
+
+    /// The caller's frame an attachment holds its nodes to, as last set (null target only).
+    pub fn attachment_frame(&self, attachment: Attachment) -> Result<[f64; 7]> {
+        let mut out = [0.0; 7];
+        // SAFETY: 7 doubles.
+        check(unsafe { sys::lfem_attachment_get_frame(self.ptr(), attachment.raw(), out.as_mut_ptr()) })?;
+        Ok(out)
     }
 
     /// Change the body's mass-proportional damping (>= 0, 1/s); the body wakes.

@@ -591,6 +591,7 @@ fn a_skin_falls_with_its_body() {
     // Settings after creation, and the skin removed.
     world.set_friction(block, 0.2).unwrap();
     world.set_damping(block, 1.0).unwrap();
+    world.set_sleep_allowed(block, false).unwrap();
     world.set_material(block, 3e5, 0.25).unwrap();
     assert_eq!(world.set_material(block, 3e5, 0.5).unwrap_err().status(), Status::InvalidArgument);
     world.set_filter(block, 1, u32::MAX).unwrap();
@@ -699,6 +700,7 @@ fn a_bar_hangs_from_a_frame_and_a_resting_block_sleeps_with_events() {
     let f = world.attachment_force(held).unwrap();
     // At rest (damping 10 for 3 s) the held nodes carry the weight to well within 1e-6.
     assert!(close(f[2], mass * G, 1e-6 * mass * G), "force {:?}, m g {}", f, mass * G);
+    assert_eq!(world.attachment_frame(held).unwrap(), [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
     let x = world.positions(block).unwrap();
     world.step(1.0 / 60.0).unwrap();
     assert_eq!(world.positions(block).unwrap(), x);
