@@ -154,6 +154,39 @@ inline void contact_force_between(lfem_world* w, lfem_body on, lfem_body from, d
     }
 }
 
+// The events of the last step (asked for their count first, as a caller does).
+inline std::vector<lfem_event> events_of(lfem_world* w) {
+    uint32_t count = 0;
+    const lfem_status asked = lfem_world_get_events(w, nullptr, 0, &count);
+    EXPECT_EQ(asked, count ? LFEM_BUFFER_TOO_SMALL : LFEM_OK);
+    std::vector<lfem_event> out(count);
+    EXPECT_EQ(lfem_world_get_events(w, out.data(), count, &count), LFEM_OK);
+    return out;
+}
+
+// The last step's events of one type.
+inline int count_events(lfem_world* w, lfem_event_type type) {
+    int k = 0;
+    for (const lfem_event& e : events_of(w)) k += e.type == type;
+    return k;
+}
+
+// A cube of 10 cm (2^3 cells) at the origin, linear, nu = 0, E = 1e5 Pa, stretched by `factor`
+// along x (lfem_body_set_positions): a uniform strain eps = factor - 1 that linear tets take
+// exactly, holding W = E eps^2 V / 2 with no lateral stress. Returns the cube.
+inline lfem_body stretched_linear_cube(lfem_world* w, Mesh& m, double factor) {
+    make_box_mesh(m, 0.1, 0.1, 0.1, 2, 2, 2, 0, 0, 0);
+    lfem_body_def d = lfem_body_def_default();
+    d.model = LFEM_MODEL_LINEAR;
+    d.poisson_ratio = 0.0;
+    d.young_modulus = 1e5;
+    const lfem_body b = add_body(w, d, m);
+    std::vector<double> x = positions(w, b);
+    for (size_t i = 0; i < x.size(); i += 3) x[i] *= factor;
+    EXPECT_EQ(lfem_body_set_positions(w, b, x.data(), uint32_t(x.size() / 3)), LFEM_OK) << lfem_last_error();
+    return b;
+}
+
 // Root mean square of a body's node speeds (m/s).
 inline double rms_velocity(lfem_world* w, lfem_body b) {
     const std::vector<double> v = velocities(w, b);

@@ -10,15 +10,6 @@ using namespace lfem_test;
 
 namespace {
 
-std::vector<lfem_event> events_of(lfem_world* w) {
-    uint32_t count = 0;
-    const lfem_status asked = lfem_world_get_events(w, nullptr, 0, &count);
-    EXPECT_EQ(asked, count ? LFEM_BUFFER_TOO_SMALL : LFEM_OK);
-    std::vector<lfem_event> out(count);
-    EXPECT_EQ(lfem_world_get_events(w, out.data(), count, &count), LFEM_OK);
-    return out;
-}
-
 double momentum_z(lfem_world* w, lfem_body b) {
     double P[3];
     EXPECT_EQ(lfem_body_get_momentum(w, b, P, nullptr), LFEM_OK);

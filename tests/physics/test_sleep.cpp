@@ -40,18 +40,6 @@ void build_pile(lfem_world* w, Pile& p, int columns, int height, double z0 = 0.0
         }
 }
 
-int count_events(lfem_world* w, lfem_event_type type) {
-    uint32_t n = 0;
-    lfem_world_get_events(w, nullptr, 0, &n);
-    std::vector<lfem_event> e(n);
-    if (n) {
-        EXPECT_EQ(lfem_world_get_events(w, e.data(), n, &n), LFEM_OK);
-    }
-    int k = 0;
-    for (const lfem_event& x : e) k += x.type == type;
-    return k;
-}
-
 }  // namespace
 
 TEST(Sleep, ASettledPileFallsAsleepAsAWholeAndCostsNothing) {
