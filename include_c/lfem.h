@@ -519,6 +519,14 @@ LFEM_API lfem_status lfem_world_cast_ray(const lfem_world* world, const double o
                                          const double direction[3], double max_distance,
                                          lfem_query_filter filter, lfem_ray_hit* out, int* hit);
 
+/** The point of the body's surface (its boundary triangles where its nodes are now) nearest to
+ * `point` (m): into out_point; *triangle (nullable) its triangle in lfem_body_get_boundary_triangles
+ * order (the first among equally near ones), *distance (nullable) how far (m; a point inside the
+ * body gets its distance to the nearest face). A body with boundary triangles (a body of shapes
+ * alone: LFEM_INVALID_ARGUMENT); O(T) in its triangles. Nothing written on failure. */
+LFEM_API lfem_status lfem_body_closest_point(const lfem_world* world, lfem_body body, const double point[3],
+                                             double out_point[3], uint32_t* triangle, double* distance);
+
 /** Every crossing along the ray, nearest first (ties as above); a ray through a body crosses
  * its surface where it enters and where it leaves, a sphere or box shape twice, a plane once
  * (and a ray through an edge or corner may list each triangle that shares it). *count is always

@@ -848,6 +848,15 @@ namespace Lfem
             LfemException.Check(Native.lfem_body_apply_impulse(handle, body, ref point, ref impulse));
         }
 
+        /// <summary>The point of the body's surface nearest to point, its boundary triangle and the
+        /// distance (m).</summary>
+        public Vec3 ClosestPoint(Body body, Vec3 point, out uint triangle, out double distance)
+        {
+            Vec3 q;
+            LfemException.Check(Native.lfem_body_closest_point(handle, body, ref point, out q, out triangle, out distance));
+            return q;
+        }
+
         /// <summary>The body's pose x = R X + t: t, then R as a quaternion w x y z (7 numbers; a
         /// deformable body's best fit).</summary>
         public double[] GetTransform(Body body)
@@ -1310,6 +1319,7 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_filter(WorldHandle world, Body body, uint categoryBits, uint maskBits);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_data(WorldHandle world, Body body, IntPtr userData);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_apply_impulse(WorldHandle world, Body body, ref Vec3 point, ref Vec3 impulse);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_closest_point(WorldHandle world, Body body, ref Vec3 point, out Vec3 outPoint, out uint triangle, out double distance);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_transform(WorldHandle world, Body body, [Out] double[] transform);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_transform(WorldHandle world, Body body, [In] double[] transform);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_center_of_mass(WorldHandle world, Body body, out Vec3 center);

@@ -120,3 +120,18 @@ LFEM_API lfem_status lfem_world_overlap_box(const lfem_world* world, const doubl
 }
 
 }  // extern "C"
+
+LFEM_API lfem_status lfem_body_closest_point(const lfem_world* world, lfem_body body, const double point[3],
+                                             double out_point[3], uint32_t* triangle, double* distance) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
+        require_pointer(point, "point");
+        require_finite(point, 3, "point");
+        require_pointer(out_point, "out_point");
+        const SurfacePoint s = w.closest_surface_point(b, point);
+        for (int k = 0; k < 3; ++k) out_point[k] = s.point[k];
+        if (triangle) *triangle = s.triangle;
+        if (distance) *distance = s.distance;
+    });
+}

@@ -1,6 +1,8 @@
 // The queries of the world's current geometry (query/query_scene.h) on the bodies as they are:
 // the world lends each body's arrays, the scene keeps its boxes and trees current through the
 // world's revision, which moves with every change of positions or geometry.
+#include "common/closest_point.h"
+#include "common/error.h"
 #include "world/world.h"
 
 namespace lfem {
@@ -65,6 +67,26 @@ void World::overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<
     const BodiesForQueries view(bodies_);
     queries_.scene.prepare(view, queries_.revision, nullptr);
     queries_.scene.overlap_box(view, box, filter, slots);
+}
+
+// Every boundary triangle where the nodes are now: O(T) for T triangles, one body. The first
+// triangle (in the body's order) among equally near ones.
+SurfacePoint World::closest_surface_point(const Body& b, const double point[3]) const {
+    const std::vector<uint32_t>& t = b.boundary_triangles();
+    if (t.empty()) throw Error(Status::invalid_argument, "the body has no boundary triangles (shapes are not searched)");
+    const Vec3 p(point);
+    const double* x = b.state.x.data();
+    SurfacePoint best;
+    double nearest = HUGE_VAL;
+    for (std::size_t k = 0; k < t.size(); k += 3) {
+        double w[3];
+        const Vec3 q = closest_on_triangle(p, Vec3(x + 3 * std::size_t(t[k])), Vec3(x + 3 * std::size_t(t[k + 1])),
+                                           Vec3(x + 3 * std::size_t(t[k + 2])), w);
+        const double d2 = (q - p).squaredNorm();
+        if (d2 < nearest) nearest = d2, best.point = q, best.triangle = uint32_t(k / 3);
+    }
+    best.distance = std::sqrt(nearest);
+    return best;
 }
 
 }  // namespace lfem

@@ -28,6 +28,13 @@
 
 namespace lfem {
 
+// The point of a body's surface nearest to a point (World::closest_surface_point).
+struct SurfacePoint {
+    Vec3 point = Vec3::Zero();  // m
+    uint32_t triangle = 0;      // in the body's boundary triangle order
+    double distance = 0;        // m
+};
+
 struct WorldImage;
 struct CallAttempt;  // step.cpp
 
@@ -195,6 +202,8 @@ public:
     void cast_ray_all(const QueryRay& ray, const QueryFilter& filter, std::vector<RayHit>& out) const;
     void overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<uint32_t>& slots) const;
     const QueryCounts& query_counts() const { return queries_.scene.counts(); }
+    // The point of the body's boundary triangles nearest to a point (a body with triangles).
+    SurfacePoint closest_surface_point(const Body& body, const double point[3]) const;
 
     // ---- checkpoints (checkpoint.h)
     const WorldState& state() const { return state_; }

@@ -362,6 +362,14 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
             name = "body_get_transform/center_of_mass";
             double t[7] = {7, 7, 7, 7, 7, 7, 7}, c[3] = {7, 7, 7};
             const lfem_status sc = lfem_body_get_center_of_mass(w, b, arg(s, 1, c));
+            {
+                const double p[3] = {0.1, -0.2, 0.3};
+                double q[3] = {7, 7, 7}, d = 7;
+                uint32_t tri = 7;
+                const lfem_status sq = lfem_body_closest_point(w, b, p, arg(s, 2, q), &tri, &d);
+                for (double v : q) expect(sq == LFEM_OK ? std::isfinite(v) : v == 7, "a closest point read is wrong:", name);
+                expect(sq == LFEM_OK ? d >= 0 && std::isfinite(d) : d == 7 && tri == 7, "a closest distance is wrong:", name);
+            }
             const lfem_status st = lfem_body_get_transform(w, b, arg(s, 0, t));  // its message last
             for (double v : t) expect(st == LFEM_OK ? std::isfinite(v) : v == 7, "a transform read is wrong:", name);
             for (double v : c) expect(sc == LFEM_OK ? std::isfinite(v) : v == 7, "a centre read is wrong:", name);

@@ -656,3 +656,56 @@ TEST(Queries, BadInputIsRefusedAndChangesNothing) {
     EXPECT_EQ(answers, query_answers(world));  // and the failed calls left the answers alone
     std::printf("%d bad query inputs refused cleanly\n", cases);
 }
+
+// lfem_body_closest_point: the nearest point of a body's surface, against the closed form of a
+// box [0, 0.2]^3: outside a face, the projection onto it; past an edge or corner, that edge or
+// corner; inside, the nearest face. Exact up to round-off (1e-15 m); the triangle named lies in
+// the plane of the face.
+TEST(Queries, TheClosestSurfacePointOfABoxIsItsClosedForm) {
+    lfem_world_def wd = lfem_world_def_default();
+    wd.gravity[2] = 0;
+    World w(wd);
+    Mesh m;
+    make_box_mesh(m, 0.2, 0.2, 0.2, 2, 2, 2, 0, 0, 0);
+    const lfem_body b = add_body(w, lfem_body_def_default(), m);
+    struct Case {
+        double p[3], q[3], d;
+    };
+    const Case cases[] = {
+        {{0.5, 0.1, 0.07}, {0.2, 0.1, 0.07}, 0.3},                       // beyond the face x = 0.2
+        {{0.3, 0.3, 0.3}, {0.2, 0.2, 0.2}, std::sqrt(3.0) * 0.1},          // past the corner
+        {{0.1, -0.1, 0.3}, {0.1, 0.0, 0.2}, std::sqrt(2.0) * 0.1},         // past the edge y = 0, z = 0.2
+        {{0.03, 0.1, 0.12}, {0.0, 0.1, 0.12}, 0.03},                     // inside, nearest the face x = 0
+    };
+    uint32_t nt = 0;
+    ASSERT_EQ(lfem_body_get_boundary_triangle_count(w, b, &nt), LFEM_OK);
+    std::vector<uint32_t> tri(3 * nt);
+    ASSERT_EQ(lfem_body_get_boundary_triangles(w, b, tri.data(), nt), LFEM_OK);
+    const std::vector<double> x = positions(w, b);
+    for (const Case& c : cases) {
+        double q[3], d = -1;
+        uint32_t t = UINT32_MAX;
+        ASSERT_EQ(lfem_body_closest_point(w, b, c.p, q, &t, &d), LFEM_OK) << lfem_last_error();
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(q[k], c.q[k], 1e-15);
+        EXPECT_NEAR(d, c.d, 1e-15);
+        ASSERT_LT(t, nt);
+        // The point lies in the triangle's plane.
+        const double* a = &x[3 * tri[3 * t]];
+        const double* bb = &x[3 * tri[3 * t + 1]];
+        const double* cc = &x[3 * tri[3 * t + 2]];
+        const double u[3] = {bb[0] - a[0], bb[1] - a[1], bb[2] - a[2]}, v[3] = {cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]};
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const double off = (q[0] - a[0]) * n[0] + (q[1] - a[1]) * n[1] + (q[2] - a[2]) * n[2];
+        EXPECT_NEAR(off, 0.0, 1e-15);
+    }
+    // Refused, nothing written: a body of shapes alone, a NaN point, no output.
+    const lfem_body floor = add_plane_floor(w);
+    double q[3] = {7, 7, 7}, d = 7;
+    uint32_t t = 7;
+    const double p[3] = {0, 0, 1}, nan_p[3] = {NAN, 0, 0};
+    EXPECT_EQ(lfem_body_closest_point(w, floor, p, q, &t, &d), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_closest_point(w, b, nan_p, q, &t, &d), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_closest_point(w, b, p, nullptr, &t, &d), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_closest_point(w, lfem_body{b.index, b.generation + 9}, p, q, &t, &d), LFEM_INVALID_HANDLE);
+    EXPECT_TRUE(q[0] == 7 && q[1] == 7 && q[2] == 7 && t == 7 && d == 7);
+}

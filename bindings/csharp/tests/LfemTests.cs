@@ -808,6 +808,15 @@ public static class LfemTests
             }
             Check(landed, "landed");
             Check(world.GetCenterOfMass(block).Z < c0.Z, "fell");
+            // The nearest point of the block's surface to a point 1 m above its centre of mass.
+            double top = double.NegativeInfinity;
+            foreach (Vec3 p in world.GetPositions(block)) top = Math.Max(top, p.Z);
+            Vec3 cm = world.GetCenterOfMass(block);
+            uint tri;
+            double dist;
+            Vec3 q = world.ClosestPoint(block, new Vec3(cm.X, cm.Y, top + 1), out tri, out dist);
+            Close(top, q.Z, 1e-12, "closest point on the top");
+            Close(1.0, dist, 1e-12, "its distance");
             // An impulse at its centre of mass: its momentum grows by exactly that (round-off).
             Vec3 p0, p1, l;
             world.GetMomentum(block, out p0, out l);

@@ -401,6 +401,15 @@ class World:
         p, j = _convert.vector(point, "point"), _convert.vector(impulse, "impulse")
         native.lfem_body_apply_impulse(self.handle, _body(body), _dptr(p), _dptr(j))
 
+    def closest_point(self, body: Body, point: npt.ArrayLike) -> Tuple[Vectors, int, float]:
+        """The point of the body's surface nearest to point (m), its boundary triangle and the
+        distance (m)."""
+        p = _convert.vector(point, "point")
+        q = np.empty(3, dtype=np.float64)
+        t, d = ctypes.c_uint32(), ctypes.c_double()
+        native.lfem_body_closest_point(self.handle, _body(body), _dptr(p), _dptr(q), ctypes.byref(t), ctypes.byref(d))
+        return q, t.value, d.value
+
     def transform(self, body: Body) -> Vectors:
         """The body's pose x = R X + t: 7 numbers, t then R as a quaternion (w, x, y, z) (a
         deformable body's best fit)."""

@@ -749,6 +749,12 @@ class SkinsAndQueries(unittest.TestCase):
                     break
             self.assertTrue(landed)
             self.assertLess(world.center_of_mass(block)[2], c0[2])
+            # The nearest point of the block's surface to a point 1 m above its centre of mass.
+            top = float(world.positions(block)[:, 2].max())
+            cm = world.center_of_mass(block)
+            q, _, d = world.closest_point(block, (cm[0], cm[1], top + 1.0))
+            self.assertAlmostEqual(q[2], top, delta=1e-12)
+            self.assertAlmostEqual(d, 1.0, delta=1e-12)
             # An impulse at its centre of mass: its momentum grows by exactly that (round-off).
             p0, _ = world.momentum(block)
             world.apply_impulse(block, world.center_of_mass(block), (0.5, 0.0, 0.2))

@@ -552,6 +552,14 @@ extern "C" {
         point: *const c_double,
         impulse: *const c_double,
     ) -> lfem_status;
+    pub fn lfem_body_closest_point(
+        world: *const lfem_world,
+        body: lfem_body,
+        point: *const c_double,
+        out_point: *mut c_double,
+        triangle: *mut u32,
+        distance: *mut c_double,
+    ) -> lfem_status;
     pub fn lfem_body_get_transform(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
     pub fn lfem_body_get_center_of_mass(world: *const lfem_world, body: lfem_body, out: *mut c_double) -> lfem_status;
     pub fn lfem_body_set_transform(world: *mut lfem_world, body: lfem_body, transform: *const c_double) -> lfem_status;

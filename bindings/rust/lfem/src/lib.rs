@@ -1267,6 +1267,15 @@ impl World {
         check(unsafe { sys::lfem_body_apply_impulse(self.ptr_mut(), body.raw(), point.as_ptr(), impulse.as_ptr()) })
     }
 
+    /// The point of the body's surface nearest to `point`, its boundary triangle and the
+    /// distance (m).
+    pub fn closest_point(&self, body: Body, point: [f64; 3]) -> Result<([f64; 3], u32, f64)> {
+        let (mut q, mut t, mut d) = ([0.0; 3], 0u32, 0.0);
+        // SAFETY: 3 doubles in, 3 out, two outputs.
+        check(unsafe { sys::lfem_body_closest_point(self.ptr(), body.raw(), point.as_ptr(), q.as_mut_ptr(), &mut t, &mut d) })?;
+        Ok((q, t, d))
+    }
+
     /// The body's pose x = R X + t: `[t, quaternion w x y z]` (a deformable body's best fit).
     pub fn transform(&self, body: Body) -> Result<[f64; 7]> {
         let mut out = [0.0; 7];

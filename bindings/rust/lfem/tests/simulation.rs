@@ -752,6 +752,11 @@ fn a_teleported_block_lands_with_its_approach_speed() {
     }
     assert!(landed);
     assert!(world.center_of_mass(block).unwrap()[2] < c0[2]);
+    // The nearest point of the block's surface to a point above it: straight below, on its top.
+    let top = world.positions(block).unwrap().iter().map(|p| p[2]).fold(f64::NEG_INFINITY, f64::max);
+    let c = world.center_of_mass(block).unwrap();
+    let (q, _, d) = world.closest_point(block, [c[0], c[1], top + 1.0]).unwrap();
+    assert!(close(q[2], top, 1e-12) && close(d, 1.0, 1e-12), "{:?} {}", q, d);
     // An impulse at its centre of mass: its momentum grows by exactly that (round-off).
     let (p0, _) = world.momentum(block).unwrap();
     let c = world.center_of_mass(block).unwrap();
