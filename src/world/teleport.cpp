@@ -162,7 +162,8 @@ void World::set_transform(BodyHandle handle, const double transform[7]) {
     for (int k = 0; k < 3; ++k) motion.center[k] = c_new[k];
     store_quaternion(q_new, motion.rotation);
     std::vector<double> x = body.state.x, poses = body.state.shape_pose;  // all allocation first
-    move_rigidly(R_d, turn, c, c_new, x, poses);
+    // A rigid body's nodes are placed at its frame below (exactly); the others' move with it.
+    move_rigidly(R_d, turn, c, c_new, body.is_rigid() ? Span<double>() : Span<double>(x), poses);
     if (body.is_rigid()) {
         const RigidBodyView view = rigid_view(body);
         Vec3 V, omega;
