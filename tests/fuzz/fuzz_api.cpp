@@ -325,7 +325,9 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
             const double value = in.number(-1, 10);
             switch (in.below(5)) {
                 case 0: name = "body_set_friction"; return lfem_body_set_friction(w, b, value);
-                case 4: name = "body_set_sleep_allowed"; return lfem_body_set_sleep_allowed(w, b, int(value));
+                case 4:  // any int, not the double (a huge one does not convert)
+                    name = "body_set_sleep_allowed";
+                    return lfem_body_set_sleep_allowed(w, b, static_cast<int>(in.u32()));
                 case 1:
                     if (f & 1) {
                         name = "body_set_material";

@@ -480,10 +480,10 @@ class Program:
         for x in impulse:
             self.value(-5, 5, x)
 
-    def setting(self, body_index, which, value=0.0, category=1, mask=0xFFFFFFFF, poisson=None):
+    def setting(self, body_index, which, value=0.0, category=1, mask=0xFFFFFFFF, poisson=None, flag=0):
         # variant 4: 0 friction, 1 damping (value) or with poisson given the material
         # (E = 1e3 + 1e6 |value|), 2 filter (category, mask), 3 user data, 4 sleep allowed
-        # (int(value))
+        # (flag, any 32 bits read as an int)
         self.call(SET_VELOCITIES)
         self.pick(body_index)
         self.byte(2 | (1 if poisson is not None else 0))
@@ -495,6 +495,8 @@ class Program:
         if which == 2:
             self.u32(category)
             self.u32(mask)
+        if which == 4:
+            self.u32(flag & 0xFFFFFFFF)
 
     def remove_skin(self, body_index, skin):
         # variant 5
@@ -593,8 +595,8 @@ p.setting(1, 1, 2.0, poisson=0.25)            # the material: E = 2.001e6, nu 0.
 p.setting(1, 1, 2.0, poisson=0.5)             # refused: nu 0.5
 p.setting(1, 2, category=4, mask=0xFFFFFFFE)  # a filter change
 p.setting(1, 3)                               # user data set and set back
-p.setting(1, 4, 0.0)                          # sleep not allowed
-p.setting(1, 4, 2.0)                          # refused: 2 is no flag
+p.setting(1, 4, flag=0)                       # sleep not allowed
+p.setting(1, 4, flag=2)                       # refused: 2 is no flag
 p.remove_skin(1, 0)                           # refused: no skin
 p.step(0.01)
 seed('teleports', p)
@@ -1098,3 +1100,12 @@ p.step(0.0049999999985797334)
 p.fix(0, [0])
 p.step(0.005)
 write('regressions', 'step_substep_count_overflow', p)
+
+# Sleep allowed set from a huge number: the harness converted a double of -2.2e168 to int (UB,
+# found by the fuzzer in CI; the harness now reads the flag as 32 bits): every int but 0 and 1,
+# here INT_MIN and -1, is refused with a message.
+p = floor_and_block()
+p.setting(1, 4, flag=0x80000000)
+p.setting(1, 4, flag=0xFFFFFFFF)
+p.step(0.005)
+write('regressions', 'sleep_allowed_from_any_int', p)
