@@ -87,7 +87,8 @@ LFEM_API lfem_status lfem_world_step(lfem_world* world, double dt);
  * `<path>.tmp`, then renamed over path, so an existing checkpoint is only ever replaced by a
  * complete one. lfem_world_load creates a new world from such a file; stepping it gives results
  * bitwise identical to the saved world's. Body handles of the saved world are valid in the
- * loaded one. user_data pointers are not saved (NULL after loading). A missing, truncated,
+ * loaded one. user_data pointers are not saved (NULL after loading); user ids are
+ * (lfem_body_set_user_id). A missing, truncated,
  * corrupted (checksum) or foreign file (other format version, byte order or build layout) gives
  * LFEM_IO_ERROR and *out unchanged; no partial world is ever returned. */
 LFEM_API lfem_status lfem_world_save(const lfem_world* world, const char* path);
@@ -251,6 +252,12 @@ LFEM_API lfem_status lfem_body_set_filter(lfem_world* world, lfem_body body, uin
                                           uint32_t mask_bits);
 /** See lfem_body_set_friction. */
 LFEM_API lfem_status lfem_body_set_user_data(lfem_world* world, lfem_body body, void* user_data);
+/** An opaque 64-bit value the caller keeps on the body (an entity id, an index): never read by
+ * lfem, 0 at creation. Unlike user_data (a pointer, meaningless in another process), checkpoints
+ * keep it: a loaded world's bodies find their entities again. */
+LFEM_API lfem_status lfem_body_set_user_id(lfem_world* world, lfem_body body, uint64_t user_id);
+/** See lfem_body_set_user_id. */
+LFEM_API lfem_status lfem_body_get_user_id(const lfem_world* world, lfem_body body, uint64_t* out);
 
 /** A one-shot impulse (N s) at a world point (m), as a hit gives it: a deformable body takes it on
  * the nodes of the tet around the point (where the nodes are now; a point on the surface, within
@@ -261,6 +268,18 @@ LFEM_API lfem_status lfem_body_set_user_data(lfem_world* world, lfem_body body, 
  * tet costs O(T log T) for T tets. A deformable or rigid body with a mesh. */
 LFEM_API lfem_status lfem_body_apply_impulse(lfem_world* world, lfem_body body, const double point[3],
                                              const double impulse[3]);
+
+/** A force (N) at a world point (m) for the next lfem_world_step call only, over all its
+ * sub-steps, on top of the node forces (lfem_body_set_node_forces); the call's end drops it (a
+ * call that fails keeps it for the next). Forces applied before one call add up. The point is
+ * bound to the body where it is now (the nodes of the tet around it, each its share by the
+ * tet's shape functions, as lfem_body_apply_impulse) and moves with the body during the call;
+ * the body feels the force and its moment about any point. A deformable body: a point inside
+ * it or within one boundary edge of its surface; a rigid body: any point (its nearest tet's
+ * weights, extrapolated). A fixed or prescribed node's share goes to its support. The body
+ * wakes; checkpoints keep a pending force. A deformable or rigid body with a mesh. */
+LFEM_API lfem_status lfem_body_apply_force(lfem_world* world, lfem_body body, const double point[3],
+                                           const double force[3]);
 
 /** The body's pose: the rigid motion x = R X + t that carries its mesh as added (X) to where its
  * nodes are now (x); out[0..2] = t (m), out[3..6] = R as a unit quaternion (w, x, y, z). A rigid

@@ -848,6 +848,13 @@ namespace Lfem
             LfemException.Check(Native.lfem_body_apply_impulse(handle, body, ref point, ref impulse));
         }
 
+        /// <summary>A force (N) at a world point (m) for the next Step call only: bound to the body
+        /// where it is now (the tet around the point) and moved with it; the body gains force * dt.</summary>
+        public void ApplyForce(Body body, Vec3 point, Vec3 force)
+        {
+            LfemException.Check(Native.lfem_body_apply_force(handle, body, ref point, ref force));
+        }
+
         /// <summary>The point of the body's surface nearest to point, its boundary triangle and the
         /// distance (m).</summary>
         public Vec3 ClosestPoint(Body body, Vec3 point, out uint triangle, out double distance)
@@ -969,6 +976,10 @@ namespace Lfem
         public void SetFilter(Body body, uint categoryBits, uint maskBits) { LfemException.Check(Native.lfem_body_set_filter(handle, body, categoryBits, maskBits)); }
         /// <summary>Change the user data World.GetUserData returns.</summary>
         public void SetUserData(Body body, IntPtr userData) { LfemException.Check(Native.lfem_body_set_user_data(handle, body, userData)); }
+        /// <summary>An opaque 64-bit number kept on the body (an entity id); checkpoints keep it.</summary>
+        public void SetUserId(Body body, ulong userId) { LfemException.Check(Native.lfem_body_set_user_id(handle, body, userId)); }
+        /// <summary>The body's user id (0 at creation).</summary>
+        public ulong GetUserId(Body body) { ulong id; LfemException.Check(Native.lfem_body_get_user_id(handle, body, out id)); return id; }
 
         public int SkinCount(Body body)
         {
@@ -1319,6 +1330,9 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_filter(WorldHandle world, Body body, uint categoryBits, uint maskBits);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_data(WorldHandle world, Body body, IntPtr userData);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_apply_impulse(WorldHandle world, Body body, ref Vec3 point, ref Vec3 impulse);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_apply_force(WorldHandle world, Body body, ref Vec3 point, ref Vec3 force);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_id(WorldHandle world, Body body, ulong userId);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_user_id(WorldHandle world, Body body, out ulong userId);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_closest_point(WorldHandle world, Body body, ref Vec3 point, out Vec3 outPoint, out uint triangle, out double distance);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_transform(WorldHandle world, Body body, [Out] double[] transform);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_transform(WorldHandle world, Body body, [In] double[] transform);

@@ -281,53 +281,6 @@ LFEM_API lfem_status lfem_body_set_transform(lfem_world* world, lfem_body body, 
     });
 }
 
-LFEM_API lfem_status lfem_body_set_friction(lfem_world* world, lfem_body body, double friction) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        w.body(from_c(body));  // the handle first
-        require(std::isfinite(friction) && friction >= 0.0, "friction must be finite and >= 0");
-        w.set_friction(from_c(body), friction);
-    });
-}
-
-LFEM_API lfem_status lfem_body_set_damping(lfem_world* world, lfem_body body, double damping) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        w.body(from_c(body));
-        require(std::isfinite(damping) && damping >= 0.0, "damping must be finite and >= 0 1/s");
-        w.set_damping(from_c(body), damping);
-    });
-}
-
-LFEM_API lfem_status lfem_body_set_material(lfem_world* world, lfem_body body, double young_modulus,
-                                            double poisson_ratio) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        w.body(from_c(body));
-        require(std::isfinite(young_modulus) && young_modulus > 0.0, "young_modulus must be finite and > 0 Pa");
-        require(std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio < 0.5,
-                "poisson_ratio must lie in (-1, 0.5)");
-        w.set_material(from_c(body), young_modulus, poisson_ratio);
-    });
-}
-
-LFEM_API lfem_status lfem_body_set_filter(lfem_world* world, lfem_body body, uint32_t category_bits,
-                                          uint32_t mask_bits) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        w.body(from_c(body));
-        w.set_filter(from_c(body), category_bits, mask_bits);
-    });
-}
-
-LFEM_API lfem_status lfem_body_set_user_data(lfem_world* world, lfem_body body, void* user_data) {
-    return guard(__func__, [&] {
-        World& w = world_of(world);
-        w.body(from_c(body));
-        w.set_user_data(from_c(body), user_data);
-    });
-}
-
 LFEM_API lfem_status lfem_body_apply_impulse(lfem_world* world, lfem_body body, const double point[3],
                                              const double impulse[3]) {
     return guard(__func__, [&] {
@@ -339,6 +292,23 @@ LFEM_API lfem_status lfem_body_apply_impulse(lfem_world* world, lfem_body body, 
         require_finite(impulse, 3, "impulse");
         w.apply_impulse(from_c(body), point, impulse);
     });
+}
+
+LFEM_API lfem_status lfem_body_apply_force(lfem_world* world, lfem_body body, const double point[3],
+                                           const double force[3]) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));  // the handle first
+        require_pointer(point, "point");
+        require_pointer(force, "force");
+        require_finite(point, 3, "point");
+        require_finite(force, 3, "force");
+        w.apply_force(from_c(body), point, force);
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_user_id(const lfem_world* world, lfem_body body, uint64_t* out) {
+    return read_body(__func__, world, body, out, [](const Body& b) { return b.user_id(); });
 }
 
 LFEM_API lfem_status lfem_body_get_transform(const lfem_world* world, lfem_body body, double out[7]) {

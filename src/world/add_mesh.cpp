@@ -260,8 +260,9 @@ void World::add_mesh(BodyHandle handle, const double* positions, uint32_t node_c
     candidate.node_mode.resize(n, NodeMode::free);
     std::vector<double> prescribed = body.prescribed_velocity;
     if (!prescribed.empty()) prescribed.resize(3 * std::size_t(n), 0.0);
-    std::vector<double> forces = body.node_force;
-    if (!forces.empty()) forces.resize(3 * std::size_t(n), 0.0);
+    std::vector<double> forces = body.node_force, call_forces = body.call_force, applied = body.applied_force;
+    for (std::vector<double>* f : {&forces, &call_forces, &applied})
+        if (!f->empty()) f->resize(3 * std::size_t(n), 0.0);  // the new nodes' are 0 in all three
     start_motion(candidate, state, pool_.get());
     // Commit: moves only from here on (no allocation, nothing can fail).
     body.ref = std::move(candidate.ref);
@@ -269,6 +270,8 @@ void World::add_mesh(BodyHandle handle, const double* positions, uint32_t node_c
     body.node_mode = std::move(candidate.node_mode);
     body.prescribed_velocity = std::move(prescribed);
     body.node_force = std::move(forces);
+    body.call_force = std::move(call_forces);
+    body.applied_force = std::move(applied);
     if (body.is_dynamic()) state_.counters.initial_energy += added_kinetic;
     state_.counters.scan_overlaps = true;
     body.geometry_revision += 1;

@@ -91,6 +91,11 @@ struct Body {
     std::vector<NodeMode> node_mode;          // per node
     std::vector<double> prescribed_velocity;  // 3 per node, empty until first prescribed
     std::vector<double> node_force;           // 3 per node, empty until a force is set
+    std::vector<double> call_force;           // 3 per node: forces for the next call only
+                                              // (lfem_body_apply_force), empty when none
+    std::vector<double> applied_force;        // node_force + call_force while call_force is set
+                                              // (the first sub-step of a call scales call_force,
+                                              // World::plan_stages)
     std::vector<RigidShape> shapes;           // rigid shapes (static and kinematic bodies)
     std::vector<Skin> skins;                  // render meshes bound to the tets (skin/skin.h);
                                               // never read by a step
@@ -98,6 +103,14 @@ struct Body {
     // The Lame parameters of the def's Young's modulus and Poisson's ratio (derived, never
     // stored: a change of the def changes them).
     Lame lame() const { return lame_from_young_poisson(def.young_modulus, def.poisson_ratio); }
+    // The node forces a step applies: the caller's lasting ones, plus the next call's when set.
+    Span<const double> loads() const { return call_force.empty() ? Span<const double>(node_force) : applied_force; }
+    // applied_force = call_scale * call_force + node_force again after either changed (the
+    // caller has sized applied_force as call_force: nothing here allocates or fails).
+    void refresh_loads(double call_scale = 1.0) {
+        for (std::size_t k = 0; k < applied_force.size(); ++k)
+            applied_force[k] = call_scale * call_force[k] + (node_force.empty() ? 0.0 : node_force[k]);
+    }
     bool is_deformable() const { return def.type == BodyKind::deformable; }
     bool is_rigid() const { return def.type == BodyKind::rigid; }
     bool is_kinematic() const { return def.type == BodyKind::kinematic; }
@@ -131,6 +144,7 @@ struct Body {
     double mass() const { return ref.total_mass; }
     double added_mass() const { return ref.added_mass; }
     void* user_data() const { return def.user_data; }
+    uint64_t user_id() const { return def.user_id; }
 };
 
 // The blocks of the parallel element loop of a body's tets (element_colouring.h): blocks of
@@ -178,14 +192,14 @@ inline void update_elastic_forces(const Body& b, BodyState& s, ThreadPool* pool)
 inline NodeLoads node_loads(const Body& b, const double gravity[3]) {
     NodeLoads l;
     l.mass = b.ref.mass, l.mode = b.node_mode, l.prescribed_velocity = b.prescribed_velocity;
-    l.node_force = b.node_force, l.elastic = b.state.elastic, l.damping = b.def.damping, l.gravity = gravity;
+    l.node_force = b.loads(), l.elastic = b.state.elastic, l.damping = b.def.damping, l.gravity = gravity;
     return l;
 }
 
 inline RigidBodyView rigid_view(const Body& b) {
     RigidBodyView v;
     v.mass = b.ref.total_mass, v.com = Vec3(b.ref.com), v.inertia = load_row_major(b.ref.inertia);
-    v.X = b.ref.X, v.node_force = b.node_force;
+    v.X = b.ref.X, v.node_force = b.loads();
     return v;
 }
 

@@ -58,6 +58,8 @@ void World::set_sleep_allowed(BodyHandle handle, bool allowed) {
 
 void World::set_user_data(BodyHandle handle, void* user_data) { bodies_.get(handle).def.user_data = user_data; }
 
+void World::set_user_id(BodyHandle handle, uint64_t user_id) { bodies_.get(handle).def.user_id = user_id; }
+
 // Pairs the new filter forbids are not detected again: they end with the next call's events as
 // any pair that stops touching does. The contact candidates are searched anew and the queries'
 // cache is refreshed (both sort bodies by their filters).

@@ -24,7 +24,7 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 11; // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 12; // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
@@ -33,7 +33,8 @@ constexpr uint32_t kFormatVersion = 11; // 2: thread_count in the def, float tet
                                         // 9: contacts' plane gap and gentle flag; 10: the
                                         // definitions field by field, no Lame parameters
                                         // (derived from the body's def); 11: a body's
-                                        // report_contacts
+                                        // report_contacts; 12: forces for the next
+                                        // call, a body's user id
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -163,12 +164,13 @@ void world_def_fields(A& a, D& d) {
     a(d.mass_scaling_step), a(d.sleep_velocity), a(d.sleep_time);
 }
 
-// user_data is a pointer into the saving process: never written, NULL after loading.
+// user_data is a pointer into the saving process: never written, NULL after loading (user_id,
+// the caller's opaque number, is kept).
 template <class A, class D>
 void body_def_fields(A& a, D& d) {
     a(d.type), a(d.model), a(d.young_modulus), a(d.poisson_ratio), a(d.density), a(d.damping);
     a(d.friction), a(d.linear_velocity), a(d.angular_velocity), a(d.category_bits), a(d.mask_bits);
-    a(d.enable_sleep), a(d.self_contact), a(d.composite_tets), a(d.report_contacts);
+    a(d.enable_sleep), a(d.self_contact), a(d.composite_tets), a(d.report_contacts), a(d.user_id);
 }
 
 template <class A, class B>
@@ -188,7 +190,7 @@ void body_fields(A& a, B& b) {
     a(s.asleep), a(s.global.rotation), a(s.global.angular_momentum), a(s.global.center);
     a(s.global.velocity);
     a(s.shape_pose);
-    a(b.node_mode), a(b.prescribed_velocity), a(b.node_force);
+    a(b.node_mode), a(b.prescribed_velocity), a(b.node_force), a(b.call_force);
     uint64_t shapes = b.shapes.size();
     a(shapes);
     if constexpr (A::loading) {
@@ -272,6 +274,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(b.prescribed_velocity.empty() || b.prescribed_velocity.size() == 3 * n,
             "bad prescribed velocities");
     require(b.node_force.empty() || b.node_force.size() == 3 * n, "bad node forces");
+    require(b.call_force.empty() || (b.call_force.size() == 3 * n && b.is_dynamic()), "bad forces for the next call");
     require(s.shape_pose.size() == 7 * b.shapes.size(), "shape poses disagree with the shapes");
     for (const RigidShape& sh : b.shapes)
         require(in_range(sh.type, ShapeType::plane, ShapeType::convex_hull) &&
@@ -289,7 +292,7 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
     require(r.added_mass >= 0.0 && r.added_mass < HUGE_VAL, "bad added mass");
     for (const std::vector<double>* a : {&r.X, &r.mass, &r.Dm_inv, &r.volume, &r.qp_volume, &s.x, &s.v_half,
                                          &s.elastic, &s.contact_force,
-                                         &s.shape_pose, &b.prescribed_velocity, &b.node_force})
+                                         &s.shape_pose, &b.prescribed_velocity, &b.node_force, &b.call_force})
         for (double v : *a) require(std::isfinite(v), "a non-finite number");
 }
 
@@ -448,6 +451,10 @@ WorldImage read_checkpoint(const std::string& path) {
     r(im.state.touching);
     if (!r.at_end()) fail(path, "has bytes after its last record");
     check_image(im, path);
+    for (Body& b : im.bodies) {  // derived: the loads of the next call (the sizes checked above)
+        b.applied_force.resize(b.call_force.size());
+        b.refresh_loads();
+    }
     return im;
 }
 

@@ -38,6 +38,7 @@ struct BodyDef {
     double angular_velocity[3] = {0, 0, 0};  // rad/s
     uint32_t category_bits = 1, mask_bits = ~0u;
     void* user_data = nullptr;   // the caller's, never read
+    uint64_t user_id = 0;        // the caller's, never read; kept by checkpoints
     bool enable_sleep = true;
     bool self_contact = false;
     bool composite_tets = false;

@@ -5,6 +5,7 @@
 // p x J as angular momentum about the origin, exactly); a rigid body as a whole, J / M and
 // I^-1 (p - c) x J. The velocities change as lfem_body_set_velocities changes them: the change
 // of kinetic energy is the caller's work.
+#include <cmath>
 #include <cstdio>
 
 #include "common/error.h"
@@ -13,6 +14,29 @@
 #include "world/world.h"
 
 namespace lfem {
+namespace {
+
+// The nodes and weights of the tet around the point where the body's nodes are now, or of the
+// nearest within `reach` (a point on the surface, a little proud of it), as a skin's vertex is
+// bound; beyond reach it is refused. The weights reproduce the point (extrapolated outside the
+// tet), so a force spread by them has the force's moment about any point.
+Skin bind_point(const Body& body, const double point[3], double reach) {
+    SkinTets tets;
+    tets.X = body.state.x;
+    tets.tets = body.ref.tets;
+    tets.nodes_per_tet = body.ref.nodes_per_tet;
+    try {
+        return bind_skin(tets, point, 1, nullptr, 0, reach);
+    } catch (const Error& e) {
+        if (e.status() != Status::invalid_argument) throw;
+        char where[160];
+        std::snprintf(where, sizeof where, "point (%.6g, %.6g, %.6g) m lies farther than %.3g m (one edge) from the body",
+                      point[0], point[1], point[2], reach);
+        throw Error(Status::invalid_argument, where);
+    }
+}
+
+}  // namespace
 
 void World::apply_impulse(BodyHandle handle, const double point[3], const double impulse[3]) {
     const Body& body = bodies_.get(handle);
@@ -32,22 +56,7 @@ void World::apply_impulse(BodyHandle handle, const double point[3], const double
         }
         return set_velocities(handle, v.data());
     }
-    // The tet around the point where the nodes are now, or the nearest within one mean boundary
-    // edge (a point on the surface, a little proud of it), as a skin's vertex is bound.
-    SkinTets tets;
-    tets.X = body.state.x;
-    tets.tets = body.ref.tets;
-    tets.nodes_per_tet = body.ref.nodes_per_tet;
-    Skin at;
-    try {
-        at = bind_skin(tets, point, 1, nullptr, 0, body.ref.surface.edge_length);
-    } catch (const Error& e) {
-        if (e.status() != Status::invalid_argument) throw;
-        char where[160];
-        std::snprintf(where, sizeof where, "point (%.6g, %.6g, %.6g) m lies farther than %.3g m (one edge) from the body",
-                      point[0], point[1], point[2], body.ref.surface.edge_length);
-        throw Error(Status::invalid_argument, where);
-    }
+    const Skin at = bind_point(body, point, body.ref.surface.edge_length);
     for (uint32_t k = 0; k < at.nodes_per_vertex; ++k) {
         const uint32_t i = at.nodes[k];
         if (body.node_mode[i] != NodeMode::free) continue;  // a held node's share goes to its support
@@ -55,6 +64,44 @@ void World::apply_impulse(BodyHandle handle, const double point[3], const double
         for (int d = 0; d < 3; ++d) v[3 * std::size_t(i) + d] += dv[d];
     }
     set_velocities(handle, v.data());
+}
+
+}  // namespace lfem
+
+namespace lfem {
+
+// A force at a point for the next call (lfem_body_apply_force), as engines apply one: spread
+// over the nodes of the tet around the point by the same weights as an impulse, so the nodes
+// carry the force and its moment; the step applies node forces as it applies the caller's
+// lasting ones (eq. 1 for a deformable body; a rigid body's sum and torque, eq. 2), and the
+// call's end drops them (finish_call). On a rigid body the point may lie anywhere: its nearest
+// tet's weights, extrapolated, still give the force's exact moment (its nodes move rigidly).
+void World::apply_force(BodyHandle handle, const double point[3], const double force[3]) {
+    Body& body = bodies_.get(handle);
+    if (!body.is_dynamic() || !body.has_mesh())
+        throw Error(Status::invalid_argument, "a force moves a deformable or rigid body with a mesh");
+    const Skin at = bind_point(body, point, body.is_rigid() ? HUGE_VAL : body.ref.surface.edge_length);
+    const std::size_t size = 3 * std::size_t(body.ref.node_count());
+    // The candidates first (all the allocation), then the swap.
+    std::vector<double> call = body.call_force;
+    if (call.empty()) call.assign(size, 0.0);
+    std::vector<double> applied(size);
+    wake(handle.index);
+    for (uint32_t k = 0; k < at.nodes_per_vertex; ++k)
+        for (int d = 0; d < 3; ++d) call[3 * std::size_t(at.nodes[k]) + d] += at.weights[k] * force[d];
+    body.call_force.swap(call);
+    body.applied_force.swap(applied);
+    body.refresh_loads();
+}
+
+// At the end of a call that succeeded, the forces meant for it are gone.
+void World::drop_call_forces() {
+    for (uint32_t i = 0; i < bodies_.slot_count(); ++i) {
+        Body& b = bodies_.slot(i);
+        if (b.call_force.empty()) continue;
+        std::vector<double>().swap(b.call_force);
+        std::vector<double>().swap(b.applied_force);
+    }
 }
 
 }  // namespace lfem

@@ -74,14 +74,19 @@ void World::set_node_forces(BodyHandle handle, const uint32_t* nodes, uint32_t c
     Body& body = bodies_.get(handle);
     wake(handle.index);
     if (body.node_force.empty()) body.node_force.assign(3 * std::size_t(body.ref.node_count()), 0.0);
-    for (uint32_t i = 0; i < count; ++i)
-        std::copy_n(&forces[3 * std::size_t(i)], 3, &body.node_force[3 * std::size_t(nodes[i])]);
+    for (uint32_t i = 0; i < count; ++i) {
+        const std::size_t at = 3 * std::size_t(nodes[i]);
+        std::copy_n(&forces[3 * std::size_t(i)], 3, &body.node_force[at]);
+        if (!body.call_force.empty())  // the next call's force at a point stays on top
+            for (int k = 0; k < 3; ++k) body.applied_force[at + k] = body.call_force[at + k] + body.node_force[at + k];
+    }
 }
 
 void World::clear_node_forces(BodyHandle handle) {
-    bodies_.get(handle);
+    Body& body = bodies_.get(handle);
     wake(handle.index);
-    std::vector<double>().swap(bodies_.get(handle).node_force);  // unused features hold no memory
+    std::vector<double>().swap(body.node_force);  // unused features hold no memory
+    body.refresh_loads();
 }
 
 void World::set_kinematic_velocity(BodyHandle handle, const double linear[3], const double angular[3]) {

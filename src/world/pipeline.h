@@ -57,6 +57,7 @@ struct Pipeline {
     StageLists stages;
     std::vector<LinkRecord> links;  // the attachments' links of the sub-step
     double frame_fraction = 1;      // how far through the call the sub-step ends
+    bool first_substep = true;      // the call's first sub-step (a force for one call, plan_stages)
     FallenIn fallen;                // by the sub-step's detection
     bool unconverged = false;       // the sub-step's contact solve used every sweep
 };

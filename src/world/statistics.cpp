@@ -15,7 +15,9 @@ namespace lfem {
 Vec3 World::rigid_velocity(const Body& b, Vec3& V, Vec3& omega) const {
     const BodyState& s = b.state;
     const double h = s.contact_force.empty() ? s.h_last : 0.0;
-    return rigid_synchronized_velocity(rigid_view(b), s.global, s.x, def_.gravity, h, V, omega);
+    RigidBodyView view = rigid_view(b);
+    view.node_force = b.node_force;  // the lasting ones: a force for the next call acts from its start
+    return rigid_synchronized_velocity(view, s.global, s.x, def_.gravity, h, V, omega);
 }
 
 double World::stable_step() const {
@@ -91,6 +93,7 @@ void World::synchronized_velocities(const Body& body, double* out) const {
                         // v^n = v^{n-1/2} + h/2 a^n with m a^n = R^n - c v^n (central difference)
                         const double m = body.ref.mass[i];
                         double R = m * g[k] + s.elastic[3 * i + k];
+                        // the lasting node forces: one applied for the next call acts from its start
                         if (!body.node_force.empty()) R += body.node_force[3 * i + k];
                         v = (2.0 * m / h * v + R) / (2.0 * m / h + body.def.damping * m);
                     }

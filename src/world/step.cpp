@@ -157,6 +157,7 @@ CallAttempt World::run_substeps(uint32_t substeps, double h, double limit, doubl
     for (uint32_t k = 0; k < substeps && !a.failed(); ++k) {
         double kinetic = 0.0, strain = 0.0, step_work = 0.0, limit_now = a.limit_seen;
         pipeline_.frame_fraction = double(k + 1) / substeps;  // the caller's frames end the call in place
+        pipeline_.first_substep = k == 0;
         substep(h, kinetic, strain, step_work);
         if (automatic) limit_now = step_limit();
         work += step_work;
@@ -198,10 +199,12 @@ void World::step(double dt) {
     call.commit();
 }
 
-// After a call's sub-steps: the caller's frames reach where they were set, bodies at rest fall
+// After a call's sub-steps: the caller's frames reach where they were set, the forces applied for
+// this call are dropped, bodies at rest fall
 // asleep, the call's events are handed out, and the queries' cache follows the bodies.
 void World::finish_call(double dt) {
     finish_attachment_frames();
+    drop_call_forces();
     update_sleep(dt);
     events_.finish_call(state_.touching, bodies_, state_.contacts);
     moved(pool_.get());  // the queries' boxes of the new positions (once queries are in use)

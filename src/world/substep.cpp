@@ -31,11 +31,12 @@ double load_motion(const Body& b, const double g[3], double h, double h_mid) {
     double accel = 0.0;
     if (b.is_rigid()) {
         Vec3 total = Vec3::Zero();
-        for (std::size_t k = 0; k < b.node_force.size(); k += 3) total += Vec3(&b.node_force[k]);
+        const Span<const double> f = b.loads();
+        for (std::size_t k = 0; k < f.size(); k += 3) total += Vec3(&f[k]);
         accel = total.norm() / b.ref.total_mass;
     } else {
-        for (std::size_t i = 0; 3 * i < b.node_force.size(); ++i)
-            accel = std::max(accel, Vec3(&b.node_force[3 * i]).norm() / b.ref.mass[i]);
+        const Span<const double> f = b.loads();
+        for (std::size_t i = 0; 3 * i < f.size(); ++i) accel = std::max(accel, Vec3(&f[3 * i]).norm() / b.ref.mass[i]);
     }
     return h * h_mid * (Vec3(g).norm() + accel);
 }
@@ -68,6 +69,11 @@ void World::plan_stages(double h) {
         if (!b.has_mesh() || b.state.asleep) continue;  // a sleeping body is not stepped
         if (b.is_dynamic()) {
             pipeline_.h_mid[i] = mid_step(b.state.h_last, h);
+            // A force for this call alone acts from its start: at the first sub-step over h, not
+            // h_mid (half of which is the last call's), so the call's sub-steps give F N h = F dt
+            // exactly (the velocity read after the call, extrapolated without it, adds nothing).
+            if (!b.call_force.empty())
+                bodies_.slot(i).refresh_loads(pipeline_.first_substep ? h / pipeline_.h_mid[i] : 1.0);
             pipeline_.bodies[i].load_motion = load_motion(b, def_.gravity, h, pipeline_.h_mid[i]);
         }
         if (b.is_rigid()) s.rigid.push_back(i);
@@ -282,7 +288,8 @@ void World::commit_rigid_bodies(double h) {
         // through eq. 2; their work is booked with the translation only).
         const Vec3 dc = Vec3(b.state.global.center) - sc.center_start;
         Vec3 force = b.ref.total_mass * Vec3(def_.gravity);
-        for (std::size_t k = 0; k < b.node_force.size(); k += 3) force += Vec3(&b.node_force[k]);
+        const Span<const double> f = b.loads();
+        for (std::size_t k = 0; k < f.size(); k += 3) force += Vec3(&f[k]);
         sc.tally.work += force.dot(dc);
         sc.tally.kinetic += rigid_kinetic_energy(view, b.state.global);
         for (std::size_t k = 0; k < b.state.x.size(); ++k) b.state.v_half[k] = (b.state.x[k] - sc.x_start[k]) / h;

@@ -124,6 +124,7 @@ public:
     // A deformable body's E and nu (not under mass scaling); the stable step follows.
     void set_material(BodyHandle body, double young_modulus, double poisson_ratio);
     void set_user_data(BodyHandle body, void* user_data);
+    void set_user_id(BodyHandle body, uint64_t user_id);
     void set_sleep_allowed(BodyHandle body, bool allowed);
     void set_filter(BodyHandle body, uint32_t category_bits, uint32_t mask_bits);
     // Later skins' indices move down by one.
@@ -131,6 +132,7 @@ public:
     // ---- impulses (impulses.cpp): a deformable or rigid body with a mesh; point and impulse
     // finite (checked by the caller)
     void apply_impulse(BodyHandle body, const double point[3], const double impulse[3]);
+    void apply_force(BodyHandle body, const double point[3], const double force[3]);
 
     // ---- attachments (attachments.cpp); node indices internal, checked by the caller
     AttachmentHandle create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,
@@ -251,6 +253,7 @@ private:
     void build_links(double fraction);
     void take_link_forces(double h);
     void finish_attachment_frames();
+    void drop_call_forces();
     void drop_attachments_of(uint32_t slot);
     // teleport.cpp
     void place_deformable(BodyHandle body, const double* x, const Quat& turn);

@@ -279,7 +279,7 @@ void remove_folder(const std::string& dir) {
 // quaternion), the two getters (whose outputs are finite, or untouched when refused), an impulse
 // at a point, a setting changed (friction, damping, filter, user data), a skin removed.
 lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t f, const char*& name) {
-    switch (in.below(6)) {
+    switch (in.below(7)) {
         case 0: {
             name = "body_set_positions";
             uint32_t n = node_count_of(w, b);
@@ -358,6 +358,30 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
             if (st == LFEM_OK)
                 expect(counted && lfem_body_get_skin_count(w, b, &after) == LFEM_OK && after + 1 == before,
                        "a skin removed did not lower the count by one:", name);
+            return st;
+        }
+        case 6: {
+            if (f & 1) {
+                name = "body_set_user_id";
+                const uint64_t high = in.u32();  // two reads in sequence (an | does not order them)
+                const uint64_t id = high << 32 | in.u32();
+                const lfem_status st = lfem_body_set_user_id(w, b, id);
+                uint64_t back = 7;
+                const lfem_status sb = lfem_body_get_user_id(w, b, arg(s, 0, &back));
+                expect(st != LFEM_OK || sb != LFEM_OK || back == id, "the user id set is not the one read:", name);
+                expect(sb == LFEM_OK || back == 7, "a refused user id read wrote its output:", name);
+                return st;
+            }
+            name = "body_apply_force";
+            double p[3], F[3], P0[3] = {0, 0, 0}, P1[3] = {0, 0, 0};
+            for (double& v : p) v = in.number(-1, 1);
+            for (double& v : F) v = in.number(-50, 50);
+            const bool read = lfem_body_get_momentum(w, b, P0, nullptr) == LFEM_OK;
+            const lfem_status st = lfem_body_apply_force(w, b, arg(s, 0, p), arg(s, 1, F));
+            if (st == LFEM_OK && read)  // a force acts in the next call: the momentum is as it was
+                expect(lfem_body_get_momentum(w, b, P1, nullptr) == LFEM_OK && P1[0] == P0[0] && P1[1] == P0[1] &&
+                           P1[2] == P0[2],
+                       "a force for the next call changed the momentum now:", name);
             return st;
         }
         default: {

@@ -498,6 +498,26 @@ class Program:
         if which == 4:
             self.u32(flag & 0xFFFFFFFF)
 
+    def force(self, body_index, point, force):
+        # variant 6: lfem_body_apply_force (for the next call)
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(2)
+        self.below(6)
+        for x in point:
+            self.value(-1, 1, x)
+        for x in force:
+            self.value(-50, 50, x)
+
+    def user_id(self, body_index, high, low):
+        # variant 6 with flag 1: lfem_body_set_user_id and its getter
+        self.call(SET_VELOCITIES)
+        self.pick(body_index)
+        self.byte(3)
+        self.below(6)
+        self.u32(high)
+        self.u32(low)
+
     def remove_skin(self, body_index, skin):
         # variant 5
         self.call(SET_VELOCITIES)
@@ -598,6 +618,10 @@ p.setting(1, 3)                               # user data set and set back
 p.setting(1, 4, flag=0)                       # sleep not allowed
 p.setting(1, 4, flag=2)                       # refused: 2 is no flag
 p.remove_skin(1, 0)                           # refused: no skin
+p.force(1, (0.05, 0.05, 0.25), (0, 20.0, 0))  # a force for the next call, inside the block
+p.force(1, (0.05, 0.05, 0.9), (0, 20.0, 0))   # refused: far from the block
+p.force(0, (0.05, 0.05, 0.05), (0, 20.0, 0))  # refused: the floor is static
+p.user_id(1, 0xFEDCBA98, 0x76543210)          # a user id
 p.step(0.01)
 seed('teleports', p)
 

@@ -142,3 +142,46 @@ TEST(UserData, RefusesBadInputAndLeavesTheOutputAlone) {
     EXPECT_EQ(user_data(w, body), &e);  // and the good call still answers
     EXPECT_EQ(e.id, 7);
 }
+
+// lfem_body_set_user_id: an opaque 64-bit number, 0 at creation, any value (all 64 bits), on
+// every kind of body, kept by a checkpoint (where the user data pointers are not).
+TEST(UserData, AUserIdIsKeptByACheckpoint) {
+    World w;
+    Mesh mesh;
+    make_box_mesh(mesh, 0.1, 0.1, 0.1, 1, 1, 1, 0.0, 0.0, 1.0);
+    const lfem_body soft = add_body(w, lfem_body_def_default(), mesh);
+    lfem_body_def rigid_def = lfem_body_def_default();
+    rigid_def.type = LFEM_BODY_RIGID;
+    const lfem_body rigid = add_body(w, rigid_def, mesh);
+    const lfem_body floor = add_plane_floor(w);
+    uint64_t id = 7;
+    ASSERT_EQ(lfem_body_get_user_id(w, soft, &id), LFEM_OK) << lfem_last_error();
+    EXPECT_EQ(id, 0u);
+    const uint64_t ids[3] = {0xFFFFFFFFFFFFFFFFull, 0x8000000000000001ull, 42};
+    const lfem_body bodies[3] = {soft, rigid, floor};
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(lfem_body_set_user_id(w, bodies[k], ids[k]), LFEM_OK) << lfem_last_error();
+    ASSERT_EQ(lfem_world_step(w, 0.01), LFEM_OK) << lfem_last_error();
+    for (int k = 0; k < 3; ++k) {
+        ASSERT_EQ(lfem_body_get_user_id(w, bodies[k], &id), LFEM_OK);
+        EXPECT_EQ(id, ids[k]);
+    }
+    // Bad input: refused, the output and the ids untouched.
+    ASSERT_EQ(lfem_body_destroy(w, rigid), LFEM_OK);
+    id = 5;
+    EXPECT_EQ(lfem_body_get_user_id(w, rigid, &id), LFEM_INVALID_HANDLE);
+    EXPECT_EQ(lfem_body_set_user_id(w, rigid, 1), LFEM_INVALID_HANDLE);
+    EXPECT_EQ(lfem_body_set_user_id(nullptr, soft, 1), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_body_get_user_id(w, soft, nullptr), LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(id, 5u);
+    if (!LFEM_WITH_IO) GTEST_SKIP() << "built without checkpoint files (LFEM_WITH_IO=OFF)";
+    const std::string path = ::testing::TempDir() + "lfem_user_id.ckpt";
+    ASSERT_EQ(lfem_world_save(w, path.c_str()), LFEM_OK) << lfem_last_error();
+    lfem_world* loaded = nullptr;
+    ASSERT_EQ(lfem_world_load(path.c_str(), &loaded), LFEM_OK) << lfem_last_error();
+    for (int k : {0, 2}) {
+        ASSERT_EQ(lfem_body_get_user_id(loaded, bodies[k], &id), LFEM_OK) << lfem_last_error();
+        EXPECT_EQ(id, ids[k]);
+    }
+    lfem_world_destroy(loaded);
+    std::remove(path.c_str());
+}

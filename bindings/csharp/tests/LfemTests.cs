@@ -831,6 +831,32 @@ public static class LfemTests
         }
     }
 
+    public static void TestAForceActsForOneCallAndAUserIdIsKept()
+    {
+        // Weightless: a force F at the cube's centre for one call of dt gives it F dt of momentum
+        // exactly (central differences; round-off of sums over its nodes), the next call nothing.
+        WorldDef def = WorldDef.Default;
+        def.Gravity = Vec3.Zero;
+        using (World world = new World(def))
+        {
+            Body cube = world.CreateBody(BodyDef.Default);
+            using (Mesh mesh = Mesh.Box(new Vec3(0.2, 0.2, 0.2), 2, 2, 2)) world.AddMesh(cube, mesh);
+            Equal(0ul, world.GetUserId(cube), "user id at creation");
+            world.SetUserId(cube, 0xFEDCBA9876543210ul);
+            Equal(0xFEDCBA9876543210ul, world.GetUserId(cube), "user id");
+            const double dt = 1.0 / 60;
+            world.ApplyForce(cube, world.GetCenterOfMass(cube), new Vec3(3, 0, -1));
+            world.Step(dt);
+            Vec3 p1, p2, l;
+            world.GetMomentum(cube, out p1, out l);
+            Close(3 * dt, p1.X, 1e-12, "force x dt");
+            Close(-dt, p1.Z, 1e-12, "force z dt");
+            world.Step(dt);
+            world.GetMomentum(cube, out p2, out l);
+            Close(p1.X, p2.X, 1e-12, "no force on the next call");
+        }
+    }
+
     public static void TestRaysAndBoxesFindWhatIsThere()
     {
         // A static sphere of radius 0.5 about (2, 0, 0): a ray along +x at height 0.3 meets it at

@@ -327,6 +327,18 @@ class World:
         native.lfem_body_get_user_data(self.handle, _body(body), ctypes.byref(out))
         return out.value
 
+    def user_id(self, body: Body) -> int:
+        """The body's opaque 64-bit id (0 at creation; kept by checkpoints)."""
+        out = ctypes.c_uint64()
+        native.lfem_body_get_user_id(self.handle, _body(body), ctypes.byref(out))
+        return out.value
+
+    def set_user_id(self, body: Body, user_id: int) -> None:
+        """An opaque 64-bit number kept on the body (an entity id); checkpoints keep it."""
+        if not 0 <= user_id < 2**64:
+            raise ValueError(f"user_id must fit in 64 unsigned bits, got {user_id}")
+        native.lfem_body_set_user_id(self.handle, _body(body), user_id)
+
     def _count(self, function: Any, body: Body, reported_as: str) -> int:
         """A count asked before the call the user made; an error names that call."""
         out = ctypes.c_uint32()
@@ -400,6 +412,12 @@ class World:
         takes it by its shape functions, a rigid body as a whole."""
         p, j = _convert.vector(point, "point"), _convert.vector(impulse, "impulse")
         native.lfem_body_apply_impulse(self.handle, _body(body), _dptr(p), _dptr(j))
+
+    def apply_force(self, body: Body, point: npt.ArrayLike, force: npt.ArrayLike) -> None:
+        """A force (N) at a world point (m) for the next step() call only: bound to the body where
+        it is now (the tet around the point) and moved with it; the body gains force * dt."""
+        p, f = _convert.vector(point, "point"), _convert.vector(force, "force")
+        native.lfem_body_apply_force(self.handle, _body(body), _dptr(p), _dptr(f))
 
     def closest_point(self, body: Body, point: npt.ArrayLike) -> Tuple[Vectors, int, float]:
         """The point of the body's surface nearest to point (m), its boundary triangle and the

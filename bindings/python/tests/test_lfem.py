@@ -763,6 +763,28 @@ class SkinsAndQueries(unittest.TestCase):
             with self.assertRaises(lfem.InvalidArgumentError):
                 world.set_transform(floor, pose)
 
+    def test_a_force_acts_for_one_call_and_a_user_id_is_kept(self):
+        # Weightless: a force F at the cube's centre for one call of dt gives it F dt of momentum
+        # exactly (central differences; round-off of sums over its nodes), the next call nothing.
+        with lfem.World(lfem.WorldDef(gravity=(0, 0, 0))) as world:
+            cube = world.create_body()
+            mesh = lfem.Mesh.box((0.2, 0.2, 0.2), (2, 2, 2))
+            world.add_mesh(cube, mesh)
+            mesh.close()
+            self.assertEqual(world.user_id(cube), 0)
+            world.set_user_id(cube, 2**64 - 1)
+            self.assertEqual(world.user_id(cube), 2**64 - 1)
+            with self.assertRaises(ValueError):
+                world.set_user_id(cube, -1)
+            dt = 1.0 / 60
+            world.apply_force(cube, world.center_of_mass(cube), (3.0, 0.0, -1.0))
+            world.step(dt)
+            p1, _ = world.momentum(cube)
+            np.testing.assert_allclose(p1, [3 * dt, 0.0, -dt], rtol=0, atol=1e-12)
+            world.step(dt)
+            p2, _ = world.momentum(cube)
+            np.testing.assert_allclose(p2, p1, rtol=0, atol=1e-12)
+
     def test_rays_and_boxes_find_what_is_there(self):
         # A static sphere of radius 0.5 about (2, 0, 0): a ray along +x at height 0.3 meets it at
         # 2 - sqrt(0.25 - 0.09) = 1.6 with normal (p - c) / r; a cube [0, 0.2]^3 is crossed at 1

@@ -1267,6 +1267,27 @@ impl World {
         check(unsafe { sys::lfem_body_apply_impulse(self.ptr_mut(), body.raw(), point.as_ptr(), impulse.as_ptr()) })
     }
 
+    /// A force (N) at a world point (m) for the next `step` call only: bound to the body where it
+    /// is now (the tet around the point) and moved with it; the body gains force * dt.
+    pub fn apply_force(&mut self, body: Body, point: [f64; 3], force: [f64; 3]) -> Result<()> {
+        // SAFETY: live world; 3 doubles each.
+        check(unsafe { sys::lfem_body_apply_force(self.ptr_mut(), body.raw(), point.as_ptr(), force.as_ptr()) })
+    }
+
+    /// An opaque 64-bit number kept on the body (an entity id); checkpoints keep it.
+    pub fn set_user_id(&mut self, body: Body, user_id: u64) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_set_user_id(self.ptr_mut(), body.raw(), user_id) })
+    }
+
+    /// The body's user id (0 at creation).
+    pub fn user_id(&self, body: Body) -> Result<u64> {
+        let mut out = 0u64;
+        // SAFETY: live world; one u64 written on success.
+        check(unsafe { sys::lfem_body_get_user_id(self.ptr(), body.raw(), &mut out) })?;
+        Ok(out)
+    }
+
     /// The point of the body's surface nearest to `point`, its boundary triangle and the
     /// distance (m).
     pub fn closest_point(&self, body: Body, point: [f64; 3]) -> Result<([f64; 3], u32, f64)> {

@@ -766,3 +766,27 @@ fn a_teleported_block_lands_with_its_approach_speed() {
     // A static body does not move.
     assert_eq!(world.set_transform(floor, pose).unwrap_err().status(), Status::InvalidArgument);
 }
+
+#[test]
+fn a_force_acts_for_one_call_and_a_user_id_is_kept() {
+    // Weightless: a force F at the cube's centre for one call of dt gives it F dt of momentum
+    // exactly (central differences; round-off of sums over its nodes), the next call nothing.
+    let mut def = WorldDef::default();
+    def.gravity = [0.0, 0.0, 0.0];
+    let mut world = World::new(&def).unwrap();
+    let cube = world.create_body(&BodyDef::default()).unwrap();
+    world.add_mesh(cube, &Mesh::new_box([0.2, 0.2, 0.2], [2, 2, 2]).unwrap()).unwrap();
+    assert_eq!(world.user_id(cube).unwrap(), 0);
+    world.set_user_id(cube, u64::MAX).unwrap();
+    assert_eq!(world.user_id(cube).unwrap(), u64::MAX);
+    let dt = 1.0 / 60.0;
+    let c = world.center_of_mass(cube).unwrap();
+    world.apply_force(cube, c, [3.0, 0.0, -1.0]).unwrap();
+    world.step(dt).unwrap();
+    let (p1, _) = world.momentum(cube).unwrap();
+    assert!(close(p1[0], 3.0 * dt, 1e-12) && close(p1[2], -dt, 1e-12), "{:?}", p1);
+    world.step(dt).unwrap();
+    let (p2, _) = world.momentum(cube).unwrap();
+    assert!(close(p2[0], p1[0], 1e-12), "{:?} -> {:?}", p1, p2);
+    assert_eq!(world.apply_force(cube, [9.0, 9.0, 9.0], [1.0, 0.0, 0.0]).unwrap_err().status(), Status::InvalidArgument);
+}
