@@ -188,6 +188,17 @@ inline lfem_body stretched_linear_cube(lfem_world* w, Mesh& m, double factor) {
 }
 
 // Root mean square of a body's node speeds (m/s).
+// A body's momentum and angular momentum about the origin.
+struct Momenta {
+    double P[3], L[3];
+};
+
+inline Momenta momenta(lfem_world* w, lfem_body b) {
+    Momenta m{};
+    EXPECT_EQ(lfem_body_get_momentum(w, b, m.P, m.L), LFEM_OK);
+    return m;
+}
+
 inline double rms_velocity(lfem_world* w, lfem_body b) {
     const std::vector<double> v = velocities(w, b);
     double s = 0;

@@ -14,16 +14,6 @@ using namespace lfem_test;
 
 namespace {
 
-struct Momenta {
-    double P[3], L[3];
-};
-
-Momenta momenta(lfem_world* w, lfem_body b) {
-    Momenta m{};
-    EXPECT_EQ(lfem_body_get_momentum(w, b, m.P, m.L), LFEM_OK);
-    return m;
-}
-
 double largest_move(const std::vector<double>& a, const std::vector<double>& b) {
     double d = 0.0;
     for (std::size_t i = 0; i < a.size(); i += 3)

@@ -12,16 +12,6 @@ using namespace lfem_test;
 
 namespace {
 
-struct Momenta {
-    double P[3], L[3];
-};
-
-Momenta momenta(lfem_world* w, lfem_body b) {
-    Momenta m{};
-    EXPECT_EQ(lfem_body_get_momentum(w, b, m.P, m.L), LFEM_OK);
-    return m;
-}
-
 // dP = J and dL = p x J, to round-off of sums over the nodes (1e-12 of |J| times the body's
 // size, 0.2 m, and of |p| |J|).
 void expect_impulse(const Momenta& before, const Momenta& after, const double* p, const double* J, const char* what) {
