@@ -105,6 +105,12 @@ CHECK_OFFSET(lfem_ray_hit, barycentric, 16);
 CHECK_OFFSET(lfem_ray_hit, point, 32);
 CHECK_OFFSET(lfem_ray_hit, normal, 56);
 CHECK_OFFSET(lfem_ray_hit, distance, 80);
+CHECK_SIZE(lfem_overlap, 48);
+CHECK_OFFSET(lfem_overlap, body, 0);
+CHECK_OFFSET(lfem_overlap, triangle, 8);
+CHECK_OFFSET(lfem_overlap, shape, 12);
+CHECK_OFFSET(lfem_overlap, point, 16);
+CHECK_OFFSET(lfem_overlap, distance, 40);
 
 CHECK_SIZE(lfem_event_type, 4);
 CHECK_SIZE(lfem_attachment, 8);

@@ -564,6 +564,22 @@ LFEM_API lfem_status lfem_world_cast_ray_all(const lfem_world* world, const doub
 LFEM_API lfem_status lfem_world_overlap_box(const lfem_world* world, const double lo[3], const double hi[3],
                                             lfem_query_filter filter, lfem_body* out, uint32_t capacity,
                                             uint32_t* count);
+
+/** The bodies the filter sees that the solid sphere (center, radius: m, finite, radius >= 0)
+ * overlaps, touching counting: one of their boundary triangles or shapes (solid) within radius
+ * of the centre, or a body of tets that holds the centre inside. In body index order, each with
+ * its triangle or shape nearest the centre and the point of it (lfem_overlap). *count is always
+ * the total; LFEM_BUFFER_TOO_SMALL when it exceeds capacity (out untouched). out is nullable when
+ * capacity is 0. */
+LFEM_API lfem_status lfem_world_overlap_sphere(const lfem_world* world, const double center[3], double radius,
+                                               lfem_query_filter filter, lfem_overlap* out, uint32_t capacity,
+                                               uint32_t* count);
+/** The same for the capsule of the segment from a to b (m) swept by radius; a == b is a sphere.
+ * The point of each body nearest the segment is found to 1e-16 of its length (a search along it:
+ * the distance to a triangle or a convex shape is convex there). */
+LFEM_API lfem_status lfem_world_overlap_capsule(const lfem_world* world, const double a[3], const double b[3],
+                                                double radius, lfem_query_filter filter, lfem_overlap* out,
+                                                uint32_t capacity, uint32_t* count);
 /** @} */
 
 /* ---------------------------------------------------------------------------------------- */

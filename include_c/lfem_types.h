@@ -516,6 +516,23 @@ typedef struct lfem_ray_hit {
                                   solid; a triangle's (b - a) x (c - a) direction) */
     double distance;         /**< m from the origin along the unit ray */
 } lfem_ray_hit;
+
+/** A body a sphere or capsule overlaps, and where (lfem_world_overlap_sphere, _capsule). */
+typedef struct lfem_overlap {
+    lfem_body body;          /**< the body overlapped */
+    uint32_t triangle;       /**< its boundary triangle (lfem_body_get_boundary_triangles order)
+                                  nearest the query's core (the centre, or the capsule's
+                                  segment), UINT32_MAX when a shape is nearer or none is in
+                                  reach */
+    uint32_t shape;          /**< the shape's index (lfem_body_add_shape) when a shape is
+                                  nearest, else UINT32_MAX */
+    double point[3];         /**< m: the point of that triangle or shape nearest the core (of a
+                                  convex hull the core is in: the core's point); a body of tets
+                                  that holds the core inside, its surface out of reach (triangle
+                                  and shape UINT32_MAX): the core's first point */
+    double distance;         /**< m from the core to point, <= radius; 0 when the core is inside
+                                  a shape or held by the body */
+} lfem_overlap;
 /** @} */
 
 /* ---------------------------------------------------------------------------------------- */

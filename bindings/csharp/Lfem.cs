@@ -283,6 +283,19 @@ namespace Lfem
         public bool HitsShape { get { return Shape != None; } }
     }
 
+    /// <summary>A body a sphere or capsule overlaps, and where (lfem_overlap).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Overlap
+    {
+        public Body Body;
+        public uint Triangle;         // its boundary triangle nearest the query's core, or None
+        public uint Shape;            // its shape nearest the core, or None
+        public Vec3 Point;            // m, the point of that triangle or shape nearest the core
+        public double Distance;       // m from the core to Point; 0 inside
+
+        public const uint None = 0xFFFFFFFFu;
+    }
+
     /// <summary>A body handle (lfem_body): a value. Body.Null is {0, 0}.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct Body : IEquatable<Body>
@@ -1086,6 +1099,25 @@ namespace Lfem
             return hits;
         }
 
+        /// <summary>The bodies the filter sees that the solid sphere overlaps (touching counts), in
+        /// body order, each with its triangle or shape nearest the centre and the point of it.</summary>
+        public Overlap[] OverlapSphere(Vec3 center, double radius, QueryFilter filter)
+        {
+            return OverlapCapsule(center, center, radius, filter);
+        }
+
+        /// <summary>The same for the capsule of the segment a-b swept by radius.</summary>
+        public Overlap[] OverlapCapsule(Vec3 a, Vec3 b, double radius, QueryFilter filter)
+        {
+            uint count;
+            Status s = Native.lfem_world_overlap_capsule(handle, ref a, ref b, radius, filter, null, 0, out count);
+            if (s != Status.BufferTooSmall) LfemException.Check(s);
+            Overlap[] found = new Overlap[count];
+            if (count > 0)
+                LfemException.Check(Native.lfem_world_overlap_capsule(handle, ref a, ref b, radius, filter, found, count, out count));
+            return found;
+        }
+
         /// <summary>The bodies the filter sees whose current geometry overlaps the box [lo, hi]
         /// (m), in body order.</summary>
         public Body[] OverlapBox(Vec3 lo, Vec3 hi, QueryFilter filter)
@@ -1362,6 +1394,7 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern QueryFilter lfem_query_filter_default();
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_cast_ray(WorldHandle world, ref Vec3 origin, ref Vec3 direction, double maxDistance, QueryFilter filter, ref RayHit hit, out int found);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_cast_ray_all(WorldHandle world, ref Vec3 origin, ref Vec3 direction, double maxDistance, QueryFilter filter, [Out] RayHit[] hits, uint capacity, out uint count);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_overlap_capsule(WorldHandle world, ref Vec3 a, ref Vec3 b, double radius, QueryFilter filter, [Out] Overlap[] found, uint capacity, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_overlap_box(WorldHandle world, ref Vec3 lo, ref Vec3 hi, QueryFilter filter, [Out] Body[] bodies, uint capacity, out uint count);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_mesh_create_box(ref Vec3 size, [In] uint[] cells, out MeshHandle mesh);

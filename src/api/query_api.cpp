@@ -121,6 +121,52 @@ LFEM_API lfem_status lfem_world_overlap_box(const lfem_world* world, const doubl
 
 }  // extern "C"
 
+namespace {
+
+// The sphere and the capsule: a segment (a point for the sphere, named as its caller names it)
+// swept by radius.
+lfem_status overlap_capsule(const char* function, const lfem_world* world, const double* a, const char* a_name,
+                            const double* b, const char* b_name, double radius, lfem_query_filter filter,
+                            lfem_overlap* out, uint32_t capacity, uint32_t* count) {
+    return guard(function, [&] {
+        const World& w = world_of(world);
+        require_pointer(a, a_name);
+        require_pointer(b, b_name);
+        require_finite(a, 3, a_name);
+        require_finite(b, 3, b_name);
+        require(std::isfinite(radius) && radius >= 0.0, "radius must be finite and >= 0 m");
+        require_pointer(count, "count");
+        require(capacity == 0 || out != nullptr, "out is NULL with a non-zero capacity");
+        QueryCapsule capsule;
+        capsule.a = Vec3(a), capsule.b = Vec3(b), capsule.radius = radius;
+        std::vector<Overlap> found;
+        w.overlap_capsule(capsule, filter_of(filter), found);
+        give_list(found.size(), out, capacity, count, "overlaps", [&](std::size_t i) {
+            const Overlap& o = found[i];
+            lfem_overlap c{};
+            c.body = to_c(w.bodies().handle_of(o.slot));
+            c.triangle = o.triangle, c.shape = o.shape;
+            for (int k = 0; k < 3; ++k) c.point[k] = o.point[k];
+            c.distance = o.distance;
+            return c;
+        });
+    });
+}
+
+}  // namespace
+
+LFEM_API lfem_status lfem_world_overlap_sphere(const lfem_world* world, const double center[3], double radius,
+                                               lfem_query_filter filter, lfem_overlap* out, uint32_t capacity,
+                                               uint32_t* count) {
+    return overlap_capsule(__func__, world, center, "center", center, "center", radius, filter, out, capacity, count);
+}
+
+LFEM_API lfem_status lfem_world_overlap_capsule(const lfem_world* world, const double a[3], const double b[3],
+                                                double radius, lfem_query_filter filter, lfem_overlap* out,
+                                                uint32_t capacity, uint32_t* count) {
+    return overlap_capsule(__func__, world, a, "a", b, "b", radius, filter, out, capacity, count);
+}
+
 LFEM_API lfem_status lfem_body_closest_point(const lfem_world* world, lfem_body body, const double point[3],
                                              double out_point[3], uint32_t* triangle, double* distance) {
     return guard(__func__, [&] {

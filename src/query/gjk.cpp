@@ -83,22 +83,24 @@ Vec3 support_point(const ConvexPoints& c, const Vec3& d) {
     return c.points[best];
 }
 
-double convex_distance(const ConvexPoints& a, const ConvexPoints& b) {
+double convex_distance(const ConvexPoints& a, const ConvexPoints& b) { return convex_separation(a, b).norm(); }
+
+Vec3 convex_separation(const ConvexPoints& a, const ConvexPoints& b) {
     const double scale = std::max(extent(a), extent(b)) + 1e-300;
     Vec3 s[4];
     int n = 0;
     Vec3 v = a.points[0] - b.points[0];
     for (int it = 0; it < kMaxIterations; ++it) {
         const double vv = v.squaredNorm();
-        if (vv <= kTolerance * kTolerance * scale * scale) return 0.0;
+        if (vv <= kTolerance * kTolerance * scale * scale) return Vec3::Zero();
         const Vec3 w = support_point(a, -v) - support_point(b, v);
         // No point of A - B lies closer to the origin along v than v itself: v is the distance.
         if (vv - v.dot(w) <= kTolerance * scale * std::sqrt(vv) || holds(s, n, w)) break;
         s[n++] = w;
         v = nearest_in_simplex(s, n, Vec3::Zero(), scale);
-        if (n == 4) return 0.0;  // the origin is inside: they overlap
+        if (n == 4) return Vec3::Zero();  // the origin is inside: they overlap
     }
-    return v.norm();
+    return v;
 }
 
 bool convex_ray_cast(const ConvexPoints& c, const Vec3& origin, const Vec3& dir, double t_max, double& t,

@@ -24,6 +24,8 @@ Vec3 support_point(const ConvexPoints& c, const Vec3& d);
 // The distance (m) between the two hulls; 0 when they overlap (touching: up to 1e-12 of
 // their size).
 double convex_distance(const ConvexPoints& a, const ConvexPoints& b);
+// The same as the vector between their nearest points, p_a - p_b (zero when they overlap).
+Vec3 convex_separation(const ConvexPoints& a, const ConvexPoints& b);
 
 // The ray origin + t dir (dir a unit vector) against the hull, for t in [0, t_max]: true and
 // the first t where it meets it, with the hull's outward unit normal there (zero when the ray

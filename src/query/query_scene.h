@@ -72,6 +72,23 @@ struct RayHit {
     double distance = 0;                                // m along the ray
 };
 
+// A sphere (a == b) or a capsule: the segment ab swept by radius.
+struct QueryCapsule {
+    Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+    double radius = 0;
+};
+
+// A body a sphere or capsule overlaps, and where: its boundary triangle or shape nearest the
+// query's core (both UINT32_MAX for a body that holds the core inside, out of the query's
+// reach of its surface), the point of it nearest the core (the core's first point for such a
+// body) and the distance from the core (0 when the core is inside a shape).
+struct Overlap {
+    uint32_t slot = 0;
+    uint32_t triangle = UINT32_MAX, shape = UINT32_MAX;
+    Vec3 point = Vec3::Zero();
+    double distance = 0;
+};
+
 // The order of hits: nearer first, then by slot, triangles before shapes, then by index, so
 // that the answer depends on nothing but the geometry.
 bool hit_before(const RayHit& a, const RayHit& b);
@@ -102,6 +119,10 @@ public:
     // counts): a boundary triangle or a shape that meets it, or a body of tets around it; in
     // slot order.
     void overlap_box(const QueryWorld& world, const Aabb& box, const QueryFilter& filter, std::vector<uint32_t>& out);
+    // The bodies the filter sees that the sphere or capsule overlaps (touching counts), in slot
+    // order, each with its nearest triangle or shape and point.
+    void overlap_capsule(const QueryWorld& world, const QueryCapsule& capsule, const QueryFilter& filter,
+                         std::vector<Overlap>& out);
 
     const QueryCounts& counts() const { return counts_; }
     void reset_counts() { counts_ = QueryCounts{}; }

@@ -69,6 +69,12 @@ void World::overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<
     queries_.scene.overlap_box(view, box, filter, slots);
 }
 
+void World::overlap_capsule(const QueryCapsule& capsule, const QueryFilter& filter, std::vector<Overlap>& out) const {
+    const BodiesForQueries view(bodies_);
+    queries_.scene.prepare(view, queries_.revision, nullptr);
+    queries_.scene.overlap_capsule(view, capsule, filter, out);
+}
+
 // Every boundary triangle where the nodes are now: O(T) for T triangles, one body. The first
 // triangle (in the body's order) among equally near ones.
 SurfacePoint World::closest_surface_point(const Body& b, const double point[3]) const {

@@ -760,7 +760,8 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             Buffer<uint32_t> tri(3 * std::size_t(capacity));
             uint32_t sizes[2] = {0xA5A5A5A5u, 0xA5A5A5A5u};
             lfem_status st;
-            switch (in.below(5)) {
+            const uint32_t which = in.below(5);
+            switch (which) {
                 case 0:
                     st = lfem_body_get_skin_vertices(w, b, skin, arg(s, 0, p.data()), f & 1 ? nrm.data() : nullptr,
                                                      capacity);
@@ -802,7 +803,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             return st;
         }
         case 17: {
-            name = "world_cast_ray(_all)/overlap_box";
+            name = "world_cast_ray(_all)/overlap_box/_sphere/_capsule";
             const double a[3] = {in.number(-2, 2), in.number(-2, 2), in.number(-2, 2)};
             const double b[3] = {in.number(-2, 2), in.number(-2, 2), in.number(-2, 2)};
             lfem_query_filter f = lfem_query_filter_default();
@@ -810,9 +811,11 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             const uint32_t capacity = in.below(8);
             Buffer<lfem_ray_hit> hits(capacity + 1);
             Buffer<lfem_body> found(capacity);
+            Buffer<lfem_overlap> overlaps(capacity);
             uint32_t count = 0xA5A5A5A5u;
             lfem_status st;
-            switch (in.below(3)) {
+            const uint32_t which = in.below(5);
+            switch (which) {
                 case 0: {
                     int hit = 2;
                     st = lfem_world_cast_ray(w, arg(s, 0, a), arg(s, 1, b), in.number(0, 5), f, arg(s, 2, hits.data()),
@@ -828,7 +831,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
                                                  arg(s, 2, capacity ? hits.data() : nullptr), capacity,
                                                  arg(s, 3, &count));
                     break;
-                default:
+                case 2:
                     st = lfem_world_overlap_box(w, arg(s, 0, a), arg(s, 1, b), f,
                                                 arg(s, 2, capacity ? found.data() : nullptr), capacity,
                                                 arg(s, 3, &count));
@@ -836,9 +839,27 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
                         for (uint32_t i = 0; i < count; ++i)
                             expect(lfem_body_is_valid(w, found.v[i]), "a box found a body that is not valid:", name);
                     break;
+                default: {  // 3: a sphere at a, 4: a capsule from a to b; the radius read as a ray's limit
+                    const double radius = in.number(0, 5);
+                    lfem_overlap* out = arg(s, 2, capacity ? overlaps.data() : nullptr);
+                    st = which == 3
+                             ? lfem_world_overlap_sphere(w, arg(s, 0, a), radius, f, out, capacity, arg(s, 3, &count))
+                             : lfem_world_overlap_capsule(w, arg(s, 0, a), arg(s, 1, b), radius, f, out, capacity,
+                                                          arg(s, 3, &count));
+                    if (st == LFEM_OK)
+                        for (uint32_t i = 0; i < count; ++i) {
+                            const lfem_overlap& o = overlaps.v[i];
+                            expect(lfem_body_is_valid(w, o.body), "an overlap names a body that is not valid:", name);
+                            expect(o.distance >= 0 && o.distance <= radius * (1 + 1e-9) + 1e-12,
+                                   "an overlap lies beyond the radius:", name);
+                            for (double v : o.point) expect(std::isfinite(v), "an overlap's point is not finite:", name);
+                        }
+                    break;
+                }
             }
             untouched_on_failure(st, hits, name);
             untouched_on_failure(st, found, name);
+            untouched_on_failure(st, overlaps, name);
             if (st == LFEM_BUFFER_TOO_SMALL) expect(count > capacity, "too small, yet the count fits:", name);
             if (st == LFEM_OK && count != 0xA5A5A5A5u) expect(count <= capacity, "the count exceeds the capacity:", name);
             return st;

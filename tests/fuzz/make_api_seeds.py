@@ -372,6 +372,12 @@ class Program:
     def overlap_box(self, lo, hi, capacity, filt=None, flags=0):
         self._query(2, lo, hi, capacity, filt, flags=flags)
 
+    def overlap_sphere(self, center, radius, capacity, filt=None, flags=0):
+        self._query(3, center, (0, 0, 0), capacity, filt, radius, flags)
+
+    def overlap_capsule(self, a, b, radius, capacity, filt=None, flags=0):
+        self._query(4, a, b, capacity, filt, radius, flags)
+
     def release(self, body_index, nodes):
         self.fix(body_index, nodes, call=RELEASE_NODES)
 
@@ -719,6 +725,10 @@ p.ray((0.5, 0.5, 1.0), (0.0, 0.0, 1.0), 4.0)      # a miss
 p.overlap_box((-0.1, -0.1, -0.1), (0.1, 0.1, 0.1), capacity=4)
 p.overlap_box((-0.1, -0.1, -0.1), (0.1, 0.1, 0.1), capacity=1)     # too small
 p.overlap_box((-0.1, -0.1, -0.1), (0.1, 0.1, 0.1), capacity=4, filt=(1, 0))
+p.overlap_sphere((0.0, 0.0, 0.15), 0.1, capacity=4)
+p.overlap_sphere((0.0, 0.0, 0.15), 0.1, capacity=0)                  # the count alone
+p.overlap_capsule((-0.5, 0.0, 0.15), (0.5, 0.0, 0.2), 0.05, capacity=4)
+p.overlap_capsule((-0.5, 0.0, 0.15), (0.5, 0.0, 0.2), 0.05, capacity=4, flags=null_arg(1))
 p.world_getter(2)             # the profile counts the queries
 seed('skin_and_rays', p)
 

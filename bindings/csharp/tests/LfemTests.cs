@@ -105,6 +105,7 @@ public static class LfemTests
                         "CandidateSearches", 184, "Queries", 192, "QueryBodies", 200, "QueryPrimitives", 208,
                         "QueryRefits", 216, "ContactSweeps", 224, "ConstraintUpdates", 232);
         Layout<QueryFilter>(8, "CategoryBits", 0, "MaskBits", 4);
+        Layout<Overlap>(48, "Body", 0, "Triangle", 8, "Shape", 12, "Point", 16, "Distance", 40);
         Layout<RayHit>(88, "Body", 0, "Triangle", 8, "Shape", 12, "Barycentric1", 16, "Barycentric2", 24, "Point", 32,
                        "Normal", 56, "Distance", 80);
         Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
@@ -877,6 +878,20 @@ public static class LfemTests
             Body cube = world.CreateBody(BodyDef.Default);
             using (Mesh mesh = Mesh.Box(new Vec3(0.2, 0.2, 0.2), 2, 2, 2)) world.AddMesh(cube, mesh);
             QueryFilter filter = QueryFilter.Default;
+            // A sphere 0.3 above the static sphere's top (radius 0.31) meets it at its top, 0.3
+            // away; one of radius 0.06 over the cube's top face (0.05 above) meets it below.
+            Overlap[] o = world.OverlapSphere(new Vec3(2, 0, 0.8), 0.31, filter);
+            Equal(1, o.Length, "one overlap");
+            Equal(ground, o[0].Body, "the sphere's body");
+            Equal(0u, o[0].Shape, "its shape");
+            Close(0.5, o[0].Point.Z, 1e-12, "its top");
+            Close(0.3, o[0].Distance, 1e-12, "0.3 away");
+            o = world.OverlapCapsule(new Vec3(0.07, 0.13, 0.25), new Vec3(0.07, 0.13, 0.25), 0.06, filter);
+            Equal(1, o.Length, "the cube");
+            Equal(cube, o[0].Body, "the cube's body");
+            Close(0.2, o[0].Point.Z, 1e-12, "its top face");
+            Close(0.05, o[0].Distance, 1e-12, "0.05 away");
+            Equal(0, world.OverlapSphere(new Vec3(2, 0, 0.8), 0.29, filter).Length, "out of reach");
             Equal(1u, filter.CategoryBits, "default category");
             Equal(0xFFFFFFFFu, filter.MaskBits, "default mask");
             RayHit hit;

@@ -45,8 +45,8 @@ from ._native import c_string as _c_string
 from ._native import lib as native
 from ._native import library_path
 from ._structs import (CONTACT_DTYPE, NO_SHAPE, RAY_HIT_DTYPE, Attachment, Body, BodyDef, BodyType,
-                       Contact, Event, EventType, Model, PhaseTime, Profile, QueryFilter, RayHit,
-                       ShapeDef, ShapeType, Warning, WarningKind, WorldDef, WorldStats)
+                       Contact, Event, EventType, Model, Overlap, PhaseTime, Profile, QueryFilter,
+                       RayHit, ShapeDef, ShapeType, Warning, WarningKind, WorldDef, WorldStats)
 from ._version import __version__
 
 __all__ = [
@@ -54,6 +54,7 @@ __all__ = [
     "Attachment", "Event", "EventType",
     "InvalidArgumentError", "WorldDef", "WorldStats", "PhaseTime", "Profile", "Body", "BodyDef",
     "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeDef", "QueryFilter", "RayHit", "RAY_HIT_DTYPE",
+    "Overlap",
     "World", "Mesh", "VtkSeries", "version",
     "version_string", "status_string", "last_error", "library_path", "native", "VERSION_MAJOR",
     "VERSION_MINOR", "VERSION_PATCH",
@@ -715,6 +716,30 @@ class World:
             native.lfem_world_cast_ray_all(self.handle, _dptr(o), _dptr(d), m, flt,
                                            out.ctypes.data, out.size, ctypes.byref(count))
         return out
+
+    def overlap_sphere(self, center: npt.ArrayLike, radius: float,
+                       filter: Optional[QueryFilter] = None) -> "list[Overlap]":
+        """The bodies the filter sees that the solid sphere overlaps (touching counts), in body
+        order, each an Overlap: its triangle or shape nearest the centre and the point of it."""
+        return self.overlap_capsule(center, center, radius, filter)
+
+    def overlap_capsule(self, a: npt.ArrayLike, b: npt.ArrayLike, radius: float,
+                        filter: Optional[QueryFilter] = None) -> "list[Overlap]":
+        """The same for the capsule of the segment a-b swept by radius (m)."""
+        pa, pb = _convert.vector(a, "a"), _convert.vector(b, "b")
+        flt = _definition(filter, QueryFilter, "filter")
+        count = ctypes.c_uint32()
+        try:
+            native.lfem_world_overlap_capsule(self.handle, _dptr(pa), _dptr(pb), float(radius), flt,
+                                              None, 0, ctypes.byref(count))
+        except LfemError as e:
+            if e.status != Status.BUFFER_TOO_SMALL:
+                raise
+        out = (Overlap * count.value)()
+        if count.value:
+            native.lfem_world_overlap_capsule(self.handle, _dptr(pa), _dptr(pb), float(radius), flt,
+                                              ctypes.addressof(out), count.value, ctypes.byref(count))
+        return list(out)
 
     def overlap_box(self, lo: npt.ArrayLike, hi: npt.ArrayLike,
                     filter: Optional[QueryFilter] = None) -> "list[Body]":

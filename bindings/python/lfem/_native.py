@@ -138,6 +138,7 @@ _declare("lfem_query_filter_default", QueryFilter)
 _declare("lfem_world_cast_ray", _st, _vp, _dp, _dp, _dbl, QueryFilter, _p(RayHit),
          _p(ctypes.c_int))
 _declare("lfem_world_cast_ray_all", _st, _vp, _dp, _dp, _dbl, QueryFilter, _vp, _u32, _up)
+_declare("lfem_world_overlap_capsule", _st, _vp, _dp, _dp, _dbl, QueryFilter, _vp, _u32, _up)
 _declare("lfem_world_overlap_box", _st, _vp, _dp, _dp, QueryFilter, _vp, _u32, _up)
 
 _declare("lfem_mesh_create_box", _st, _dp, _up, _p(_vp))

@@ -394,6 +394,17 @@ class RayHit(ctypes.Structure):
         ("distance", ctypes.c_double),        # m from the origin along the unit ray
     ]
 
+class Overlap(ctypes.Structure):
+    """lfem_overlap: a body a sphere or capsule overlaps, and where."""
+
+    _fields_ = [
+        ("body", Body),
+        ("triangle", ctypes.c_uint32),  # its boundary triangle nearest the query's core, or NO_SHAPE
+        ("shape", ctypes.c_uint32),     # its shape nearest the core, or NO_SHAPE
+        ("point", _d3),                 # m, the point of that triangle or shape nearest the core
+        ("distance", ctypes.c_double),  # m from the core to point; 0 inside
+    ]
+
 _BODY_DTYPE = np.dtype([("index", "<u4"), ("generation", "<u4")])
 
 _CONTACT_FIELDS = ["body_a", "body_b", "node", "triangle", "barycentric", "position", "normal",

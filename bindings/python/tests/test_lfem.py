@@ -73,6 +73,8 @@ class Layout(unittest.TestCase):
         self.check(lfem.RayHit, 88, {
             "body": 0, "triangle": 8, "shape": 12, "barycentric": 16, "point": 32, "normal": 56,
             "distance": 80})
+        self.check(lfem.Overlap, 48, {"body": 0, "triangle": 8, "shape": 12, "point": 16,
+                                      "distance": 40})
         dt = lfem.RAY_HIT_DTYPE
         self.assertEqual(dt.itemsize, 88)
         for name in ("body", "triangle", "shape", "barycentric", "point", "normal", "distance"):
@@ -799,6 +801,20 @@ class SkinsAndQueries(unittest.TestCase):
             mesh.close()
             f = lfem.QueryFilter()
             self.assertEqual((f.category_bits, f.mask_bits), (1, 0xFFFFFFFF))
+            # A sphere 0.3 above the static sphere's top (radius 0.31) meets it at its top, 0.3
+            # away; one of radius 0.06 over the cube's top face (0.05 above) meets it below.
+            o = world.overlap_sphere((2, 0, 0.8), 0.31)
+            self.assertEqual(len(o), 1)
+            self.assertEqual((o[0].body, o[0].shape, o[0].triangle), (ground, 0, lfem.NO_SHAPE))
+            self.assertAlmostEqual(o[0].point[2], 0.5, delta=1e-12)
+            self.assertAlmostEqual(o[0].distance, 0.3, delta=1e-12)
+            o = world.overlap_capsule((0.07, 0.13, 0.25), (0.07, 0.13, 0.25), 0.06)
+            self.assertEqual([x.body for x in o], [cube])
+            self.assertAlmostEqual(o[0].point[2], 0.2, delta=1e-12)
+            self.assertAlmostEqual(o[0].distance, 0.05, delta=1e-12)
+            self.assertEqual(world.overlap_sphere((2, 0, 0.8), 0.29), [])
+            with self.assertRaises(lfem.InvalidArgumentError):
+                world.overlap_sphere((2, 0, 0.8), -1.0)
             hit = world.cast_ray((0, 0, 0.3), (3, 0, 0))
             self.assertIsNotNone(hit)
             self.assertEqual(hit.body, ground)

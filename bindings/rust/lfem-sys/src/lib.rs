@@ -352,6 +352,19 @@ pub struct lfem_ray_hit {
     pub distance: c_double,
 }
 
+/// A body a sphere or capsule overlaps, and where (lfem_overlap).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct lfem_overlap {
+    pub body: lfem_body,
+    /// Boundary triangle nearest the query's core, or u32::MAX.
+    pub triangle: u32,
+    /// Shape index when a shape is nearest, or u32::MAX.
+    pub shape: u32,
+    pub point: [c_double; 3],
+    pub distance: c_double,
+}
+
 // The C sizes (bindings/abi_layout.c asserts the same numbers with _Static_assert).
 const _: () = assert!(size_of::<lfem_status>() == 4);
 const _: () = assert!(size_of::<lfem_body_type>() == 4);
@@ -694,6 +707,25 @@ extern "C" {
         hi: *const c_double,
         filter: lfem_query_filter,
         out: *mut lfem_body,
+        capacity: u32,
+        count: *mut u32,
+    ) -> lfem_status;
+    pub fn lfem_world_overlap_sphere(
+        world: *const lfem_world,
+        center: *const c_double,
+        radius: c_double,
+        filter: lfem_query_filter,
+        out: *mut lfem_overlap,
+        capacity: u32,
+        count: *mut u32,
+    ) -> lfem_status;
+    pub fn lfem_world_overlap_capsule(
+        world: *const lfem_world,
+        a: *const c_double,
+        b: *const c_double,
+        radius: c_double,
+        filter: lfem_query_filter,
+        out: *mut lfem_overlap,
         capacity: u32,
         count: *mut u32,
     ) -> lfem_status;

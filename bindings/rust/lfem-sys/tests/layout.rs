@@ -91,6 +91,11 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_ray_hit, point), 32);
     assert_eq!(offset!(lfem_ray_hit, normal), 56);
     assert_eq!(offset!(lfem_ray_hit, distance), 80);
+    assert_eq!(size_of::<lfem_overlap>(), 48);
+    assert_eq!(offset!(lfem_overlap, triangle), 8);
+    assert_eq!(offset!(lfem_overlap, shape), 12);
+    assert_eq!(offset!(lfem_overlap, point), 16);
+    assert_eq!(offset!(lfem_overlap, distance), 40);
 
     assert_eq!(offset!(lfem_body_def, model), 4);
     assert_eq!(offset!(lfem_body_def, young_modulus), 8);

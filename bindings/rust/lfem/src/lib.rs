@@ -755,6 +755,27 @@ impl RayHit {
 const _: () = assert!(size_of::<RayHit>() == size_of::<sys::lfem_ray_hit>());
 const _: () = assert!(align_of::<RayHit>() == align_of::<sys::lfem_ray_hit>());
 
+/// A body a sphere or capsule overlaps, and where (lfem_overlap; same layout).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Overlap {
+    /// The body overlapped.
+    pub body: Body,
+    /// Its boundary triangle nearest the query's core, u32::MAX when a shape is nearer or none is
+    /// in reach (a body that holds the core inside).
+    pub triangle: u32,
+    /// Its shape nearest the core, u32::MAX otherwise.
+    pub shape: u32,
+    /// m: the point of that triangle or shape nearest the core (the core's first point for a
+    /// body that holds it inside).
+    pub point: [f64; 3],
+    /// m from the core to `point`; 0 inside.
+    pub distance: f64,
+}
+
+const _: () = assert!(size_of::<Overlap>() == size_of::<sys::lfem_overlap>());
+const _: () = assert!(align_of::<Overlap>() == align_of::<sys::lfem_overlap>());
+
 /// A skin's deformed vertices: positions (m) and unit smooth normals, one each per vertex.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SkinVertices {
@@ -1603,6 +1624,42 @@ impl World {
             check(first)?;
         }
         let mut out = vec![RayHit::default(); count as usize];
+        if count > 0 {
+            check(call(&mut out, &mut count))?;
+        }
+        Ok(out)
+    }
+
+    /// The bodies the filter sees that the solid sphere overlaps (touching counts), in body
+    /// order, each with its triangle or shape nearest the centre and the point of it.
+    pub fn overlap_sphere(&self, center: [f64; 3], radius: f64, filter: QueryFilter) -> Result<Vec<Overlap>> {
+        self.overlap_capsule(center, center, radius, filter)
+    }
+
+    /// The same for the capsule of the segment a-b swept by radius.
+    pub fn overlap_capsule(&self, a: [f64; 3], b: [f64; 3], radius: f64, filter: QueryFilter) -> Result<Vec<Overlap>> {
+        let call = |out: &mut [Overlap], count: &mut u32| {
+            // SAFETY: 3 + 3 doubles; out holds out.len() records of lfem_overlap's layout (none:
+            // a null pointer).
+            unsafe {
+                sys::lfem_world_overlap_capsule(
+                    self.ptr(),
+                    a.as_ptr(),
+                    b.as_ptr(),
+                    radius,
+                    filter.raw(),
+                    if out.is_empty() { ptr::null_mut() } else { out.as_mut_ptr() as *mut sys::lfem_overlap },
+                    out.len() as u32,
+                    count,
+                )
+            }
+        };
+        let mut count = 0u32;
+        let first = call(&mut [], &mut count);
+        if first != sys::LFEM_BUFFER_TOO_SMALL {
+            check(first)?;
+        }
+        let mut out = vec![Overlap::default(); count as usize];
         if count > 0 {
             check(call(&mut out, &mut count))?;
         }

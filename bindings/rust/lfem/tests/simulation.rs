@@ -621,6 +621,18 @@ fn rays_and_boxes_find_what_is_there() {
     world.add_mesh(cube, &Mesh::new_box([0.2, 0.2, 0.2], [2, 2, 2]).unwrap()).unwrap();
     let filter = QueryFilter::default();
     assert_eq!(filter, QueryFilter { category_bits: 1, mask_bits: u32::MAX });
+    // A sphere 0.3 above the static sphere's top (radius 0.31) meets it at its top, 0.3 away;
+    // one of radius 0.06 over the cube's top face (0.05 above it) meets the cube straight below.
+    let o = world.overlap_sphere([2.0, 0.0, 0.8], 0.31, filter).unwrap();
+    assert_eq!(o.len(), 1);
+    assert_eq!((o[0].body, o[0].shape, o[0].triangle), (ground, 0, u32::MAX));
+    assert!(close(o[0].point[2], 0.5, 1e-12) && close(o[0].distance, 0.3, 1e-12), "{:?}", o[0]);
+    let o = world.overlap_capsule([0.07, 0.13, 0.25], [0.07, 0.13, 0.25], 0.06, filter).unwrap();
+    assert_eq!(o.len(), 1);
+    assert_eq!(o[0].body, cube);
+    assert!(close(o[0].point[2], 0.2, 1e-12) && close(o[0].distance, 0.05, 1e-12), "{:?}", o[0]);
+    assert!(world.overlap_sphere([2.0, 0.0, 0.8], 0.29, filter).unwrap().is_empty());
+    assert_eq!(world.overlap_sphere([2.0, 0.0, 0.8], -1.0, filter).unwrap_err().status(), Status::InvalidArgument);
     let hit = world.cast_ray([0.0, 0.0, 0.3], [2.0, 0.0, 0.0], f64::INFINITY, filter).unwrap().unwrap();
     assert_eq!(hit.body, ground);
     assert_eq!((hit.shape(), hit.triangle()), (Some(0), None));
