@@ -157,6 +157,21 @@ impl std::error::Error for Error {}
 /// The result of every fallible call of this crate.
 pub type Result<T> = std::result::Result<T, Error>;
 
+/// A list a C call fills after telling its length: asked with no buffer for the count (`out`
+/// empty, LFEM_BUFFER_TOO_SMALL when there is something), then filled.
+fn counted_list<T: Clone>(empty: T, call: impl Fn(&mut [T], &mut u32) -> sys::lfem_status) -> Result<Vec<T>> {
+    let mut count = 0u32;
+    let first = call(&mut [], &mut count);
+    if first != sys::LFEM_BUFFER_TOO_SMALL {
+        check(first)?;
+    }
+    let mut out = vec![empty; count as usize];
+    if count > 0 {
+        check(call(&mut out, &mut count))?;
+    }
+    Ok(out)
+}
+
 fn check(raw: sys::lfem_status) -> Result<()> {
     match Status::from_raw(raw) {
         None => Ok(()),
@@ -1618,16 +1633,7 @@ impl World {
                 )
             }
         };
-        let mut count = 0u32;
-        let first = call(&mut [], &mut count);
-        if first != sys::LFEM_BUFFER_TOO_SMALL {
-            check(first)?;
-        }
-        let mut out = vec![RayHit::default(); count as usize];
-        if count > 0 {
-            check(call(&mut out, &mut count))?;
-        }
-        Ok(out)
+        counted_list(RayHit::default(), call)
     }
 
     /// The bodies the filter sees that the solid sphere overlaps (touching counts), in body
@@ -1654,16 +1660,7 @@ impl World {
                 )
             }
         };
-        let mut count = 0u32;
-        let first = call(&mut [], &mut count);
-        if first != sys::LFEM_BUFFER_TOO_SMALL {
-            check(first)?;
-        }
-        let mut out = vec![Overlap::default(); count as usize];
-        if count > 0 {
-            check(call(&mut out, &mut count))?;
-        }
-        Ok(out)
+        counted_list(Overlap::default(), call)
     }
 
     /// The bodies the filter sees whose current geometry overlaps the box [lo, hi] (m), in body
@@ -1683,16 +1680,7 @@ impl World {
                 )
             }
         };
-        let mut count = 0u32;
-        let first = call(&mut [], &mut count);
-        if first != sys::LFEM_BUFFER_TOO_SMALL {
-            check(first)?;
-        }
-        let mut out = vec![Body::NULL; count as usize];
-        if count > 0 {
-            check(call(&mut out, &mut count))?;
-        }
-        Ok(out)
+        counted_list(Body::NULL, call)
     }
 
     // -- contacts --
