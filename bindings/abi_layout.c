@@ -161,7 +161,7 @@ CHECK_OFFSET(lfem_contact, sliding, 120);
 CHECK_OFFSET(lfem_contact, padding, 121);
 CHECK_OFFSET(lfem_contact, shape, 124);
 
-CHECK_SIZE(lfem_attachment_def, 96);
+CHECK_SIZE(lfem_attachment_def, 128);
 CHECK_OFFSET(lfem_attachment_def, body, 0);
 CHECK_OFFSET(lfem_attachment_def, target, 8);
 CHECK_OFFSET(lfem_attachment_def, nodes, 16);
@@ -169,6 +169,10 @@ CHECK_OFFSET(lfem_attachment_def, node_count, 24);
 CHECK_OFFSET(lfem_attachment_def, internal_value, 28);
 CHECK_OFFSET(lfem_attachment_def, frame, 32);
 CHECK_OFFSET(lfem_attachment_def, break_force, 88);
+CHECK_OFFSET(lfem_attachment_def, points, 96);
+CHECK_OFFSET(lfem_attachment_def, point_count, 104);
+CHECK_OFFSET(lfem_attachment_def, stiffness, 112);
+CHECK_OFFSET(lfem_attachment_def, damping, 120);
 
 CHECK_SIZE(lfem_shape_def, 120);
 CHECK_OFFSET(lfem_shape_def, type, 0);

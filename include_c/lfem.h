@@ -382,8 +382,14 @@ LFEM_API int lfem_body_is_awake(const lfem_world* world, lfem_body body);
 /** \addtogroup attachments Attachments
  * @{ */
 
-/** Hold nodes of a deformable body in the frame of a target (lfem_attachment says how), from a
- * definition started with lfem_attachment_def_default(). */
+/** Hold nodes, or points found by position, of a deformable body in the frame of a target or at
+ * material points of another deformable body, rigidly or by a spring and damper
+ * (lfem_attachment_def says how), from a definition started with lfem_attachment_def_default().
+ * A spring is solved implicitly with the contacts (its force at the end of each sub-step):
+ * stable at any stiffness, with a numerical damping ratio of omega h / 2 for its frequency omega
+ * and the sub-step h. Bad input (nodes and points together or neither, a point farther than one
+ * boundary edge from the body or from a deformable target, a negative stiffness, a damper
+ * without a spring) is refused with the world unchanged. */
 LFEM_API lfem_status lfem_attachment_create(lfem_world* world, const lfem_attachment_def* def,
                                             lfem_attachment* out);
 /** Destroy an attachment; its handle becomes stale. */

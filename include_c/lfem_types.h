@@ -355,11 +355,15 @@ typedef struct lfem_attachment {
 
 /** What lfem_attachment_create takes: start from lfem_attachment_def_default(). */
 typedef struct lfem_attachment_def {
-    lfem_body body;           /**< the deformable body whose nodes are held */
-    lfem_body target;         /**< a rigid, kinematic or static body with geometry, or the null
-                                   handle {0, 0}: the frame below */
-    const uint32_t* nodes;    /**< node_count indices of body's nodes (copied), distinct */
-    uint32_t node_count;      /**< >= 1 */
+    lfem_body body;           /**< the deformable body whose nodes or points are held */
+    lfem_body target;         /**< a rigid, kinematic or static body with geometry, another
+                                   deformable body with tets (the held points are held to its
+                                   material points where they are: each bound once to the tet of
+                                   the target around it, within one boundary edge of its
+                                   surface), or the null handle {0, 0}: the frame below */
+    const uint32_t* nodes;    /**< node_count indices of body's nodes (copied), distinct; or
+                                   NULL with node_count 0 and points given */
+    uint32_t node_count;      /**< >= 1, or 0 with points */
     uint32_t internal_value;  /**< set by lfem_attachment_def_default; do not change */
     double frame[7];          /**< null target: the frame at creation, centre (m) and unit
                                    quaternion (w, x, y, z); default the identity at the origin */
@@ -367,6 +371,17 @@ typedef struct lfem_attachment_def {
                                    LFEM_EVENT_ATTACHMENT_BROKEN event) when the total force on its
                                    nodes exceeds this at the end of a sub-step; 0 (default) =
                                    never */
+    const double* points;     /**< instead of nodes: point_count points (m, 3 each, copied) of
+                                   body, held where they are: each bound once to the tet around
+                                   it (within one boundary edge of the surface), whose nodes then
+                                   carry it by their shape functions; NULL (default) with nodes */
+    uint32_t point_count;     /**< 0 (default), or >= 1 with points and node_count 0 */
+    double stiffness;         /**< N/m per held point and axis: 0 (default) holds it rigidly (a
+                                   constraint); > 0 holds it by a spring (an implicit one: stable
+                                   at any stiffness) */
+    double damping;           /**< N s/m per held point and axis, with stiffness > 0: a damper
+                                   beside the spring, on the point's velocity relative to its
+                                   target's; 0 (default) */
 } lfem_attachment_def;
 
 /** A definition filled with the defaults above. Always start from it. */

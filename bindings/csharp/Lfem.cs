@@ -176,6 +176,10 @@ namespace Lfem
         public uint InternalValue;
         [MarshalAs(UnmanagedType.ByValArray, SizeConst = 7)] public double[] Frame;
         public double BreakForce;
+        public IntPtr Points;     // instead of Nodes: PointCount points (3 doubles each)
+        public uint PointCount;
+        public double Stiffness;  // N/m per point and axis, 0: rigid
+        public double Damping;    // N s/m, with a stiffness
     }
 
     public enum EventType : int
@@ -577,6 +581,32 @@ namespace Lfem
                 d.Nodes = pin.AddrOfPinnedObject();
                 d.NodeCount = (uint)nodes.Length;
                 d.Frame = (double[])frame.Clone();
+                d.BreakForce = breakForce;
+                Attachment a;
+                LfemException.Check(Native.lfem_attachment_create(handle, ref d, out a));
+                return a;
+            }
+            finally { pin.Free(); }
+        }
+
+        /// <summary>Hold points (m) of a deformable body where they are (each bound once to the tet
+        /// around it) at their offsets in the frame of target (Body.Null: the identity frame the
+        /// caller moves), or at the same material points of a deformable target; rigidly
+        /// (stiffness 0) or by a spring (N/m) with a damper (N s/m).</summary>
+        public Attachment AttachPoints(Body body, Vec3[] points, Body target, double stiffness = 0, double damping = 0,
+                                       double breakForce = 0)
+        {
+            if (points == null) throw new ArgumentNullException("points");
+            AttachmentDef d = Native.lfem_attachment_def_default();
+            GCHandle pin = GCHandle.Alloc(points, GCHandleType.Pinned);
+            try
+            {
+                d.Body = body;
+                d.Target = target;
+                d.Points = pin.AddrOfPinnedObject();
+                d.PointCount = (uint)points.Length;
+                d.Stiffness = stiffness;
+                d.Damping = damping;
                 d.BreakForce = breakForce;
                 Attachment a;
                 LfemException.Check(Native.lfem_attachment_create(handle, ref d, out a));

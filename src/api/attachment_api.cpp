@@ -46,17 +46,32 @@ LFEM_API lfem_status lfem_attachment_create(lfem_world* world, const lfem_attach
         require(def->internal_value == attachment_def_cookie, "def was not initialised by lfem_attachment_def_default()");
         const Body& b = w.body(from_c(def->body));
         const BodyHandle target = from_c(def->target);
-        require(def->node_count >= 1, "def->node_count must be >= 1");
+        require((def->node_count >= 1) != (def->point_count >= 1),
+                "give nodes (def->node_count >= 1) or points (def->point_count >= 1), one of the two");
         require(target.is_null() || w.is_valid(target),
                 "def->target {" + std::to_string(def->target.index) + ", " + std::to_string(def->target.generation) +
                     "} is stale or of another world (the null handle means the caller's frame)");
         if (target.is_null()) require_pose(def->frame, "def->frame");
         require(std::isfinite(def->break_force) && def->break_force >= 0.0,
                 "def->break_force must be finite and >= 0 N (0 = never breaks)");
-        const std::vector<uint32_t> nodes = internal_nodes(b, def->nodes, def->node_count);
-        double frame[7];
-        for (int k = 0; k < 7; ++k) frame[k] = def->frame[k];
-        *out = to_c(w.create_attachment(from_c(def->body), nodes, target, frame, def->break_force));
+        require(std::isfinite(def->stiffness) && def->stiffness >= 0.0,
+                "def->stiffness must be finite and >= 0 N/m (0 = rigid)");
+        require(std::isfinite(def->damping) && def->damping >= 0.0, "def->damping must be finite and >= 0 N s/m");
+        require(def->damping == 0.0 || def->stiffness > 0.0, "def->damping needs a def->stiffness > 0 (a rigid hold has no damper)");
+        AttachmentSpec spec;
+        if (def->node_count >= 1) {
+            spec.nodes = internal_nodes(b, def->nodes, def->node_count);
+        } else {
+            require_pointer(def->points, "def->points");
+            require(def->point_count <= (1u << 24), "def->point_count above 2^24");
+            require_finite(def->points, 3 * std::size_t(def->point_count), "def->points");
+            require(b.tet_count() > 0, "points are held in tets: def->body has none yet");
+            spec.points.assign(def->points, def->points + 3 * std::size_t(def->point_count));
+        }
+        spec.target = target;
+        for (int k = 0; k < 7; ++k) spec.frame[k] = def->frame[k];
+        spec.break_force = def->break_force, spec.stiffness = def->stiffness, spec.damping = def->damping;
+        *out = to_c(w.create_attachment(from_c(def->body), spec));
     });
 }
 

@@ -54,9 +54,17 @@ double stopping_tolerance(const std::vector<ContactBody>& bodies, const std::vec
     for (uint32_t k = 0; k < count; ++k) {  // a held node: its own motion against its target's
         const LinkRecord& l = links[order[k]];
         const ContactBody& a = bodies[body_of_slot[l.body_a]];
-        for (int d = 0; d < 3; ++d) motion = std::max(motion, std::fabs(last_velocity(a, l.node, d, h)) * h);
+        for (uint32_t j = 0; j < l.held.count; ++j)
+            for (int d = 0; d < 3; ++d) motion = std::max(motion, std::fabs(last_velocity(a, l.held.node[j], d, h)) * h);
         length = std::min(length, a.edge_length);
         load = std::max(load, a.load_motion);
+        if (l.target_nodes.count == 0) continue;
+        const ContactBody& b = bodies[body_of_slot[l.body_b]];  // a deformable target moves too
+        for (uint32_t j = 0; j < l.target_nodes.count; ++j)
+            for (int d = 0; d < 3; ++d)
+                motion = std::max(motion, std::fabs(last_velocity(b, l.target_nodes.node[j], d, h)) * h);
+        length = std::min(length, b.edge_length);
+        load = std::max(load, b.load_motion);
     }
     return std::max(relative_tolerance * std::max(motion, load), 1e-9 * length);
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "world/point_binding.h"
 #include "world/world.h"
 
 namespace lfem {
@@ -40,32 +41,69 @@ static Pose target_pose(const BodyRegistry& bodies, const Attachment& a, double 
     return Pose{Vec3(g.center), load_quaternion(g.rotation).normalized()};
 }
 
-AttachmentHandle World::create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,
-                                         const double frame[7], double break_force) {
+namespace {
+
+// Each held point's nodes and weights into a (nodes_per_point of each), and where each point is.
+void hold_points(const Body& b, const AttachmentSpec& spec, Attachment& a, std::vector<double>& where) {
+    if (!spec.nodes.empty()) {
+        a.nodes_per_point = 1;
+        a.nodes = spec.nodes;
+        a.weights.assign(spec.nodes.size(), 1.0);
+        where.resize(3 * spec.nodes.size());
+        for (std::size_t k = 0; k < spec.nodes.size(); ++k)
+            for (int d = 0; d < 3; ++d) where[3 * k + d] = b.state.x[3 * std::size_t(spec.nodes[k]) + d];
+        return;
+    }
+    const uint32_t count = uint32_t(spec.points.size() / 3);
+    Skin at = bind_points(b, spec.points.data(), count, b.ref.surface.edge_length, "def->points");
+    a.nodes_per_point = at.nodes_per_vertex;
+    a.nodes = std::move(at.nodes);
+    a.weights = std::move(at.weights);
+    where = spec.points;
+}
+
+}  // namespace
+
+AttachmentHandle World::create_attachment(BodyHandle body, const AttachmentSpec& spec) {
     const Body& b = this->body(body);
     if (!b.is_deformable() || !b.has_mesh())
         throw Error(Status::invalid_argument, "def->body must be a deformable body with a mesh");
     Attachment a;
     a.body = body.index, a.body_generation = body.generation;
-    if (target.index != 0 || target.generation != 0) {
+    const BodyHandle target = spec.target;
+    const Body* deformable_target = nullptr;
+    if (!target.is_null()) {
         const Body& t = this->body(target);
         if (target.index == body.index) throw Error(Status::invalid_argument, "def->target is def->body itself");
-        if (t.is_deformable()) throw Error(Status::invalid_argument, "def->target must be rigid, kinematic or static, not deformable");
         if (!t.has_geometry()) throw Error(Status::invalid_argument, "def->target has no mesh or shape yet");
+        if (t.is_deformable() && !t.has_mesh()) throw Error(Status::invalid_argument, "def->target has no tets");
+        if (t.is_deformable()) deformable_target = &t;
         a.target = target.index, a.target_generation = target.generation;
     } else {
-        std::copy(frame, frame + 7, a.frame_start);
-        std::copy(frame, frame + 7, a.frame_end);
+        std::copy(spec.frame, spec.frame + 7, a.frame_start);
+        std::copy(spec.frame, spec.frame + 7, a.frame_end);
     }
-    a.nodes = nodes;
-    a.break_force = break_force;
-    const Pose p = target_pose(bodies_, a, 0.0);
-    const Mat3 Rt = p.rotation.toRotationMatrix().transpose();
-    a.offsets.resize(3 * nodes.size());
-    a.lambda.assign(3 * nodes.size(), 0.0);
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-        const Vec3 r = Rt * (Vec3(&b.state.x[3 * std::size_t(nodes[k])]) - p.center);
-        for (int d = 0; d < 3; ++d) a.offsets[3 * k + d] = r[d];
+    std::vector<double> where;
+    hold_points(b, spec, a, where);
+    const uint32_t count = uint32_t(where.size() / 3);
+    a.break_force = spec.break_force, a.stiffness = spec.stiffness, a.damping = spec.damping;
+    a.lambda.assign(3 * std::size_t(count), 0.0);
+    a.target_end = where;  // the target point is where the held point is
+    if (deformable_target) {
+        // The same material point of the other body: its tet around each held point.
+        Skin at = bind_points(*deformable_target, where.data(), count, deformable_target->ref.surface.edge_length,
+                              "def->target (the held points in it)");
+        a.target_nodes_per_point = at.nodes_per_vertex;
+        a.target_nodes = std::move(at.nodes);
+        a.target_weights = std::move(at.weights);
+    } else {
+        const Pose p = target_pose(bodies_, a, 0.0);
+        const Mat3 Rt = p.rotation.toRotationMatrix().transpose();
+        a.offsets.resize(3 * std::size_t(count));
+        for (uint32_t k = 0; k < count; ++k) {
+            const Vec3 r = Rt * (Vec3(&where[3 * std::size_t(k)]) - p.center);
+            for (int d = 0; d < 3; ++d) a.offsets[3 * std::size_t(k) + d] = r[d];
+        }
     }
     Attachments& all = state_.attachments;
     if (all.free_slots.empty()) all.slots.reserve(all.slots.size() + 1);  // may throw before any change
@@ -80,6 +118,7 @@ AttachmentHandle World::create_attachment(BodyHandle body, const std::vector<uin
         all.slots.push_back(std::move(a));
     }
     wake(body.index);
+    if (deformable_target) wake(target.index);
     return AttachmentHandle{index, all.slots[index].generation};
 }
 
@@ -123,23 +162,69 @@ void World::drop_attachments_of(uint32_t slot) {
     }
 }
 
-void World::build_links(double fraction) {
+namespace {
+
+LinkNodes link_nodes(const std::vector<uint32_t>& nodes, const std::vector<double>& weights, uint32_t per, uint32_t k) {
+    LinkNodes n;
+    n.count = per;
+    for (uint32_t j = 0; j < per; ++j) n.node[j] = nodes[per * std::size_t(k) + j], n.weight[j] = weights[per * std::size_t(k) + j];
+    return n;
+}
+
+// sum weight_j x_j of a link side's nodes in x (3 per node).
+Vec3 weighted(const LinkNodes& n, const double* x) {
+    Vec3 p = n.weight[0] * Vec3(&x[3 * std::size_t(n.node[0])]);
+    for (uint32_t j = 1; j < n.count; ++j) p += n.weight[j] * Vec3(&x[3 * std::size_t(n.node[j])]);
+    return p;
+}
+
+}  // namespace
+
+// One link per held point. A compliant one carries its compliance 1 / (k + c/h), the damper's
+// share of it and the offset at the start of the sub-step: the held point at x^n against the
+// target point where the last sub-step left it.
+void World::build_links(double fraction, double h) {
     std::vector<LinkRecord>& links = pipeline_.links;
     links.clear();
     for (const Attachment& a : state_.attachments.slots) {
         if (a.generation == 0) continue;
         const Pose p = target_pose(bodies_, a, fraction);
         const Mat3 R = p.rotation.toRotationMatrix();
-        const bool rigid = a.target != kFrameTarget && bodies_.slot(a.target).is_rigid();
-        for (std::size_t k = 0; k < a.nodes.size(); ++k) {
+        const bool body_target = a.target != kFrameTarget;
+        const bool rigid = body_target && bodies_.slot(a.target).is_rigid();
+        const double kappa = a.stiffness > 0.0 ? a.stiffness + a.damping / h : 0.0;
+        for (uint32_t k = 0; k < a.point_count(); ++k) {
             LinkRecord l;
-            l.body_a = a.body, l.node = a.nodes[k];
-            l.body_b = rigid ? a.target : UINT32_MAX;
-            const Vec3 target = p.center + R * Vec3(&a.offsets[3 * k]);
-            for (int d = 0; d < 3; ++d) l.target[d] = target[d], l.lambda[d] = a.lambda[3 * k + d];
+            l.body_a = a.body;
+            l.held = link_nodes(a.nodes, a.weights, a.nodes_per_point, k);
+            if (a.target_nodes_per_point > 0) {
+                l.body_b = a.target;
+                l.target_nodes = link_nodes(a.target_nodes, a.target_weights, a.target_nodes_per_point, k);
+            } else {
+                l.body_b = rigid ? a.target : UINT32_MAX;
+                const Vec3 target = p.center + R * Vec3(&a.offsets[3 * std::size_t(k)]);
+                for (int d = 0; d < 3; ++d) l.target[d] = target[d];
+            }
+            for (int d = 0; d < 3; ++d) l.lambda[d] = a.lambda[3 * std::size_t(k) + d];
+            if (kappa > 0.0) {
+                l.compliance = 1.0 / kappa;
+                l.start_share = a.damping / h / kappa;
+                const Vec3 r0 = weighted(l.held, pipeline_.bodies[a.body].start.x.data()) - Vec3(&a.target_end[3 * std::size_t(k)]);
+                for (int d = 0; d < 3; ++d) l.r0[d] = r0[d];
+            }
             links.push_back(l);
         }
     }
+}
+
+// The target point where the solve left it: a fixed one where it was put, a rigid body's moved
+// by the body's corrections (to first order in the rotation), a deformable body's at its nodes.
+Vec3 World::link_target_end(const LinkRecord& l) const {
+    const Vec3 t(l.target);
+    if (l.target_nodes.count > 0) return weighted(l.target_nodes, bodies_.slot(l.body_b).state.x.data());
+    if (l.body_b == UINT32_MAX) return t;
+    const RigidResponse& r = pipeline_.bodies[l.body_b].rigid;
+    return t + r.dc + r.dtheta.cross(t - r.center);
 }
 
 void World::take_link_forces(double h) {
@@ -149,9 +234,10 @@ void World::take_link_forces(double h) {
         Attachment& a = all.slots[i];
         if (a.generation == 0) continue;
         Vec3 total = Vec3::Zero();
-        for (std::size_t k = 0; k < a.nodes.size(); ++k, ++next) {
+        for (uint32_t k = 0; k < a.point_count(); ++k, ++next) {
             const LinkRecord& l = pipeline_.links[next];
-            for (int d = 0; d < 3; ++d) a.lambda[3 * k + d] = l.lambda[d];
+            const Vec3 end = link_target_end(l);
+            for (int d = 0; d < 3; ++d) a.lambda[3 * std::size_t(k) + d] = l.lambda[d], a.target_end[3 * std::size_t(k) + d] = end[d];
             total += Vec3(l.lambda);
         }
         for (int d = 0; d < 3; ++d) a.force[d] = total[d];

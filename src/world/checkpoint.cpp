@@ -44,7 +44,7 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 static_assert(sizeof(BodyReference) == 720,  // colouring, node-triangle lists, triangle elements, tree: derived
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
-static_assert(sizeof(Attachment) == 240, "Attachment changed: update the checkpoint");
+static_assert(sizeof(Attachment) == 360, "Attachment changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 184, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
@@ -141,8 +141,9 @@ template <class A, class T>
 void attachment_fields(A& a, T& t) {
     a(t.generation);
     if (t.generation == 0) return;  // a free slot
-    a(t.body), a(t.body_generation), a(t.target), a(t.target_generation), a(t.nodes), a(t.offsets), a(t.lambda);
-    a(t.frame_start), a(t.frame_end), a(t.break_force), a(t.force);
+    a(t.body), a(t.body_generation), a(t.target), a(t.target_generation), a(t.nodes_per_point), a(t.nodes);
+    a(t.weights), a(t.target_nodes_per_point), a(t.target_nodes), a(t.target_weights), a(t.offsets), a(t.lambda);
+    a(t.target_end), a(t.stiffness), a(t.damping), a(t.frame_start), a(t.frame_end), a(t.break_force), a(t.force);
 }
 
 template <class A, class C>
@@ -322,11 +323,22 @@ void check_image(const WorldImage& im, const std::string& path) {
         if (t.generation == 0) continue;
         if (!live(t.body, t.body_generation) || !im.bodies[t.body].is_deformable())
             fail(path, "an attachment names a missing body");
-        if (t.target != kFrameTarget && (!live(t.target, t.target_generation) || im.bodies[t.target].is_deformable()))
+        if (t.target != kFrameTarget && !live(t.target, t.target_generation))
             fail(path, "an attachment names a missing target");
-        bool ok = !t.nodes.empty() && t.offsets.size() == 3 * t.nodes.size() && t.lambda.size() == t.offsets.size();
+        const bool deformable_target = t.target != kFrameTarget && im.bodies[t.target].is_deformable();
+        const std::size_t points = t.lambda.size() / 3;
+        bool ok = points > 0 && t.lambda.size() == 3 * points && t.target_end.size() == 3 * points &&
+                  (t.nodes_per_point == 1 || t.nodes_per_point == 4 || t.nodes_per_point == 10) &&
+                  t.nodes.size() == t.nodes_per_point * points && t.weights.size() == t.nodes.size() &&
+                  (deformable_target ? (t.target_nodes_per_point == 4 || t.target_nodes_per_point == 10) &&
+                                           t.target_nodes.size() == t.target_nodes_per_point * points &&
+                                           t.target_weights.size() == t.target_nodes.size() && t.offsets.empty()
+                                     : t.target_nodes_per_point == 0 && t.target_nodes.empty() &&
+                                           t.target_weights.empty() && t.offsets.size() == 3 * points) &&
+                  std::isfinite(t.stiffness) && t.stiffness >= 0.0 && std::isfinite(t.damping) && t.damping >= 0.0;
         for (uint32_t n : t.nodes) ok = ok && n < im.bodies[t.body].ref.node_count();
-        for (const std::vector<double>* v : {&t.offsets, &t.lambda})
+        for (uint32_t n : t.target_nodes) ok = ok && deformable_target && n < im.bodies[t.target].ref.node_count();
+        for (const std::vector<double>* v : {&t.offsets, &t.lambda, &t.weights, &t.target_weights, &t.target_end})
             for (double x : *v) ok = ok && std::isfinite(x);
         if (!ok) fail(path, "an attachment's nodes or offsets are inconsistent");
     }

@@ -10,34 +10,10 @@
 
 #include "common/error.h"
 #include "rigid/rigid_body.h"
-#include "skin/skin.h"
+#include "world/point_binding.h"
 #include "world/world.h"
 
 namespace lfem {
-namespace {
-
-// The nodes and weights of the tet around the point where the body's nodes are now, or of the
-// nearest within `reach` (a point on the surface, a little proud of it), as a skin's vertex is
-// bound; beyond reach it is refused. The weights reproduce the point (extrapolated outside the
-// tet), so a force spread by them has the force's moment about any point.
-Skin bind_point(const Body& body, const double point[3], double reach) {
-    SkinTets tets;
-    tets.X = body.state.x;
-    tets.tets = body.ref.tets;
-    tets.nodes_per_tet = body.ref.nodes_per_tet;
-    try {
-        return bind_skin(tets, point, 1, nullptr, 0, reach);
-    } catch (const Error& e) {
-        if (e.status() != Status::invalid_argument) throw;
-        char where[160];
-        std::snprintf(where, sizeof where, "point (%.6g, %.6g, %.6g) m lies farther than %.3g m (one edge) from the body",
-                      point[0], point[1], point[2], reach);
-        throw Error(Status::invalid_argument, where);
-    }
-}
-
-}  // namespace
-
 void World::apply_impulse(BodyHandle handle, const double point[3], const double impulse[3]) {
     const Body& body = bodies_.get(handle);
     if (!body.is_dynamic() || !body.has_mesh())
@@ -56,7 +32,7 @@ void World::apply_impulse(BodyHandle handle, const double point[3], const double
         }
         return set_velocities(handle, v.data());
     }
-    const Skin at = bind_point(body, point, body.ref.surface.edge_length);
+    const Skin at = bind_points(body, point, 1, body.ref.surface.edge_length, "point");
     for (uint32_t k = 0; k < at.nodes_per_vertex; ++k) {
         const uint32_t i = at.nodes[k];
         if (body.node_mode[i] != NodeMode::free) continue;  // a held node's share goes to its support
@@ -80,7 +56,7 @@ void World::apply_force(BodyHandle handle, const double point[3], const double f
     Body& body = bodies_.get(handle);
     if (!body.is_dynamic() || !body.has_mesh())
         throw Error(Status::invalid_argument, "a force moves a deformable or rigid body with a mesh");
-    const Skin at = bind_point(body, point, body.is_rigid() ? HUGE_VAL : body.ref.surface.edge_length);
+    const Skin at = bind_points(body, point, 1, body.is_rigid() ? HUGE_VAL : body.ref.surface.edge_length, "point");
     const std::size_t size = 3 * std::size_t(body.ref.node_count());
     // The candidates first (all the allocation), then the swap.
     std::vector<double> call = body.call_force;

@@ -195,7 +195,7 @@ void World::detect() {
 // attachments' links; then what they leave: the links' forces to the attachments, the bodies
 // that touch, the events' tallies, and sleepers pressed by an awake body woken.
 void World::solve(double h) {
-    build_links(pipeline_.frame_fraction);
+    build_links(pipeline_.frame_fraction, h);
     const ContactSettings settings{def_.contact_iterations, def_.contact_tolerance};
     const ContactOutcome out =
         contact_.solve(pipeline_.links, settings, h, state_.contacts, profile_, pipeline_.stages.pool);
@@ -216,7 +216,10 @@ void World::mark_touching(const ContactOutcome& out) {
     for (const BodyPairForce& f : out.pair_forces) pipeline_.bodies[f.slot_a].touched = pipeline_.bodies[f.slot_b].touched = true;
     for (const ContactRecord& r : out.frozen)
         if (r.active()) pipeline_.bodies[r.body_a].touched = pipeline_.bodies[r.body_b].touched = true;
-    for (const LinkRecord& l : pipeline_.links) pipeline_.bodies[l.body_a].touched = true;  // holds contact forces too
+    for (const LinkRecord& l : pipeline_.links) {  // holds contact forces too
+        pipeline_.bodies[l.body_a].touched = true;
+        if (l.target_nodes.count > 0) pipeline_.bodies[l.body_b].touched = true;
+    }
 }
 
 // The commit, the rotation update and the element forces each concern one body at a time:

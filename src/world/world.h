@@ -35,6 +35,18 @@ struct SurfacePoint {
     double distance = 0;        // m
 };
 
+// What an attachment holds and to what (World::create_attachment): the body's nodes (internal
+// numbering) or points by position (3 each), exactly one of the two non-empty; the target body
+// or, for the null handle, the caller's frame; the break force (N, 0: never), and a spring's
+// stiffness (N/m, 0: rigid) and damping (N s/m).
+struct AttachmentSpec {
+    std::vector<uint32_t> nodes;
+    std::vector<double> points;
+    BodyHandle target;
+    double frame[7] = {0, 0, 0, 1, 0, 0, 0};
+    double break_force = 0, stiffness = 0, damping = 0;
+};
+
 struct WorldImage;
 struct CallAttempt;  // step.cpp
 
@@ -135,8 +147,7 @@ public:
     void apply_force(BodyHandle body, const double point[3], const double force[3]);
 
     // ---- attachments (attachments.cpp); node indices internal, checked by the caller
-    AttachmentHandle create_attachment(BodyHandle body, const std::vector<uint32_t>& nodes, BodyHandle target,
-                                       const double frame[7], double break_force);
+    AttachmentHandle create_attachment(BodyHandle body, const AttachmentSpec& spec);
     void destroy_attachment(AttachmentHandle attachment);
     bool is_valid(AttachmentHandle attachment) const;
     // Throws Error(Status::invalid_handle) for a bad handle.
@@ -251,7 +262,8 @@ private:
     // leaves the cache stale for every revision.
     void moved(ThreadPool* pool = nullptr);
     // attachments.cpp
-    void build_links(double fraction);
+    void build_links(double fraction, double h);
+    Vec3 link_target_end(const LinkRecord& link) const;
     void take_link_forces(double h);
     void finish_attachment_frames();
     void drop_call_forces();

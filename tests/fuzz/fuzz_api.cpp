@@ -900,6 +900,15 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             }
             if (f & 4) d.break_force = in.number(0, 50);
             if (f & 8) d.internal_value ^= 1;
+            std::vector<double> points;
+            if (f & 16) {  // points by position instead of (or, refused, beside) nodes
+                points.resize(3 * std::size_t(in.below(5)));
+                for (double& v : points) v = in.number(-0.2, 0.3);
+                d.points = arg(s, 3, points.data());
+                d.point_count = uint32_t(points.size() / 3);
+                if (!(f & 64)) d.nodes = nullptr, d.node_count = 0;
+            }
+            if (f & 32) d.stiffness = in.number(0, 1e4), d.damping = in.number(0, 20);
             lfem_attachment a{12345, 678};
             const lfem_status st = lfem_attachment_create(w, arg(s, 1, &d), arg(s, 2, &a));
             if (st != LFEM_OK) {

@@ -386,11 +386,15 @@ class Program:
         self.world_def(**kw)
 
     def attach(self, body_index, nodes, target_index=None, frame=None, break_force=None,
-               cookie=False, flags=0):
+               cookie=False, flags=0, points=None, spring=None, nodes_too=False):
+        # points: held by position (up to 4); spring: (stiffness, damping); nodes_too: both
+        # nodes and points (refused)
         self.call(ATTACHMENT_CREATE, flags)
         self.pick(body_index)
         self.byte((1 if target_index is not None else 0) | (2 if frame is not None else 0)
-                  | (4 if break_force is not None else 0) | (8 if cookie else 0))
+                  | (4 if break_force is not None else 0) | (8 if cookie else 0)
+                  | (16 if points is not None else 0) | (32 if spring is not None else 0)
+                  | (64 if nodes_too else 0))
         if target_index is not None:
             self.pick(target_index)
         self.nodes(nodes)
@@ -399,6 +403,14 @@ class Program:
                 self.value(-1, 1, v)
         if break_force is not None:
             self.value(0, 50, break_force)
+        if points is not None:
+            self.below(len(points))
+            for p in points:
+                for v in p:
+                    self.value(-0.2, 0.3, v)
+        if spring is not None:
+            self.value(0, 1e4, spring[0])
+            self.value(0, 20, spring[1])
 
     def _attachment_op(self, attachment_index, which, made_up=None):
         self.call(ATTACHMENT_OP)
@@ -776,6 +788,27 @@ p.attachment_valid(0)
 p.step(0.005)
 p.attachment_force(1)
 seed('attach_to_bodies', p)
+
+# Points by position: a soft block held at two points on springs to the caller's frame, and by
+# a point to another soft block below it (its material point there); refused: nodes and points
+# together, a point far from the block, a damper without a spring.
+p = Program()
+p.world_def()
+p.body(DEFORMABLE, model=COROTATIONAL)
+p.box(0, (0.1, 0.1, 0.1), (2, 2, 2), (0, 0, 0.1))
+p.body(DEFORMABLE, model=PAPER)
+p.box(1, (0.1, 0.1, 0.1), (2, 2, 2), (0, 0, -0.005))
+p.attach(0, [], points=[(0.02, 0.05, 0.19), (0.08, 0.05, 0.19)], spring=(500.0, 2.0))
+p.attach(1, [], target_index=0, points=[(0.05, 0.05, 0.1)])
+p.attach(1, [0], points=[(0.05, 0.05, 0.05)], nodes_too=True)
+p.attach(1, [], points=[(0.05, 0.05, 0.29)])
+p.attach(1, [], points=[(0.05, 0.05, 0.05)], spring=(0.0, 3.0))
+p.step(0.005)
+p.attachment_force(0)
+p.attachment_force(1)
+p.save_load()
+p.step(0.005)
+seed('attach_points', p)
 
 # An attachment with a small break force breaks under the block's weight: its event, read with
 # buffers too small, then large enough.

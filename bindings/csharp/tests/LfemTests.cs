@@ -105,6 +105,9 @@ public static class LfemTests
                         "CandidateSearches", 184, "Queries", 192, "QueryBodies", 200, "QueryPrimitives", 208,
                         "QueryRefits", 216, "ContactSweeps", 224, "ConstraintUpdates", 232);
         Layout<QueryFilter>(8, "CategoryBits", 0, "MaskBits", 4);
+        Layout<AttachmentDef>(128, "Body", 0, "Target", 8, "Nodes", 16, "NodeCount", 24, "InternalValue", 28,
+                              "Frame", 32, "BreakForce", 88, "Points", 96, "PointCount", 104, "Stiffness", 112,
+                              "Damping", 120);
         Layout<Overlap>(48, "Body", 0, "Triangle", 8, "Shape", 12, "Point", 16, "Distance", 40);
         Layout<RayHit>(88, "Body", 0, "Triangle", 8, "Shape", 12, "Barycentric1", 16, "Barycentric2", 24, "Point", 32,
                        "Normal", 56, "Distance", 80);
@@ -680,6 +683,16 @@ public static class LfemTests
             Equal(1.0, world.GetAttachmentFrame(held)[3], "the frame as set");
             world.DestroyAttachment(held);
             Check(!world.IsValid(held), "destroyed");
+            // Held instead by a point inside its top on a critically damped spring (k 2000 N/m):
+            // 1 s later it carries the weight (to the solve's 1e-3 of it).
+            Vec3 cm = world.GetCenterOfMass(bar);
+            double topZ = double.NegativeInfinity;
+            foreach (Vec3 p in world.GetPositions(bar)) topZ = Math.Max(topZ, p.Z);
+            const double k = 2000;
+            Attachment spring = world.AttachPoints(bar, new Vec3[] { new Vec3(cm.X, cm.Y, topZ - 0.001) }, Body.Null, k,
+                                                   2 * Math.Sqrt(k * m));
+            for (int i = 0; i < 60; ++i) world.Step(1.0 / 60);
+            Close(m * G, world.GetAttachmentForce(spring).Z, 1e-3 * m * G, "the spring carries the bar's weight");
         }
     }
 

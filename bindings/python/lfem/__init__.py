@@ -44,9 +44,10 @@ from ._errors import InvalidArgumentError, LfemError, Status
 from ._native import c_string as _c_string
 from ._native import lib as native
 from ._native import library_path
-from ._structs import (CONTACT_DTYPE, NO_SHAPE, RAY_HIT_DTYPE, Attachment, Body, BodyDef, BodyType,
-                       Contact, Event, EventType, Model, Overlap, PhaseTime, Profile, QueryFilter,
-                       RayHit, ShapeDef, ShapeType, Warning, WarningKind, WorldDef, WorldStats)
+from ._structs import (CONTACT_DTYPE, NO_SHAPE, RAY_HIT_DTYPE, Attachment, AttachmentDef, Body,
+                       BodyDef, BodyType, Contact, Event, EventType, Model, Overlap, PhaseTime,
+                       Profile, QueryFilter, RayHit, ShapeDef, ShapeType, Warning, WarningKind,
+                       WorldDef, WorldStats)
 from ._version import __version__
 
 __all__ = [
@@ -54,7 +55,7 @@ __all__ = [
     "Attachment", "Event", "EventType",
     "InvalidArgumentError", "WorldDef", "WorldStats", "PhaseTime", "Profile", "Body", "BodyDef",
     "Contact", "CONTACT_DTYPE", "NO_SHAPE", "ShapeDef", "QueryFilter", "RayHit", "RAY_HIT_DTYPE",
-    "Overlap",
+    "Overlap", "AttachmentDef",
     "World", "Mesh", "VtkSeries", "version",
     "version_string", "status_string", "last_error", "library_path", "native", "VERSION_MAJOR",
     "VERSION_MINOR", "VERSION_PATCH",
@@ -469,25 +470,48 @@ class World:
     # -- attachments, sleeping, events --
 
     def attach(self, body: Body, nodes: npt.ArrayLike, target: Optional[Body] = None,
-               frame: npt.ArrayLike = (0, 0, 0, 1, 0, 0, 0), break_force: float = 0.0) -> Attachment:
+               frame: npt.ArrayLike = (0, 0, 0, 1, 0, 0, 0), break_force: float = 0.0,
+               stiffness: float = 0.0, damping: float = 0.0) -> Attachment:
         """Hold nodes of a deformable body at their offsets in the frame of target (a rigid,
-        kinematic or static body), or, when target is None, of a frame the caller moves
-        (centre and quaternion w x y z at creation; see set_attachment_frame)."""
+        kinematic or static body, or a deformable one: its material points there), or, when
+        target is None, of a frame the caller moves (centre and quaternion w x y z at creation;
+        see set_attachment_frame); rigidly (stiffness 0) or by a spring (N/m) and a damper
+        (N s/m)."""
         n = _convert.indices(nodes, "nodes")
+        d = self._attachment_def(body, target, frame, break_force, stiffness, damping)
+        d.nodes = _uptr(n)
+        d.node_count = n.size
+        out = Attachment()
+        native.lfem_attachment_create(self.handle, ctypes.byref(d), ctypes.byref(out))
+        return out
+
+    def attach_points(self, body: Body, points: npt.ArrayLike, target: Optional[Body] = None,
+                      frame: npt.ArrayLike = (0, 0, 0, 1, 0, 0, 0), break_force: float = 0.0,
+                      stiffness: float = 0.0, damping: float = 0.0) -> Attachment:
+        """As attach, for points (m, an (n, 3) array) of the body held where they are: each bound
+        once to the tet around it."""
+        p = _convert.vectors(points, "points")
+        d = self._attachment_def(body, target, frame, break_force, stiffness, damping)
+        d.points = _dptr(p)
+        d.point_count = p.shape[0]
+        out = Attachment()
+        native.lfem_attachment_create(self.handle, ctypes.byref(d), ctypes.byref(out))
+        return out
+
+    def _attachment_def(self, body: Body, target: Optional[Body], frame: npt.ArrayLike,
+                        break_force: float, stiffness: float, damping: float) -> Any:
         d = native.lfem_attachment_def_default()
         d.body = _body(body)
         d.target = _body(target) if target is not None else Body()
-        d.nodes = _uptr(n)
-        d.node_count = n.size
         f = np.asarray(frame, dtype=np.float64).reshape(-1)
         if f.size != 7:
             raise InvalidArgumentError("frame must hold 7 numbers")
         for k in range(7):
             d.frame[k] = float(f[k])
         d.break_force = _convert.real(break_force, "break_force")
-        out = Attachment()
-        native.lfem_attachment_create(self.handle, ctypes.byref(d), ctypes.byref(out))
-        return out
+        d.stiffness = _convert.real(stiffness, "stiffness")
+        d.damping = _convert.real(damping, "damping")
+        return d
 
     def destroy_attachment(self, attachment: Attachment) -> None:
         native.lfem_attachment_destroy(self.handle, attachment)

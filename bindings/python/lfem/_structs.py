@@ -314,6 +314,8 @@ class AttachmentDef(ctypes.Structure):
         ("body", Body), ("target", Body), ("nodes", ctypes.POINTER(ctypes.c_uint32)),
         ("node_count", ctypes.c_uint32), ("_internal_value", ctypes.c_uint32),
         ("frame", ctypes.c_double * 7), ("break_force", ctypes.c_double),
+        ("points", ctypes.POINTER(ctypes.c_double)), ("point_count", ctypes.c_uint32),
+        ("stiffness", ctypes.c_double), ("damping", ctypes.c_double),
     ]
 
 

@@ -73,6 +73,10 @@ class Layout(unittest.TestCase):
         self.check(lfem.RayHit, 88, {
             "body": 0, "triangle": 8, "shape": 12, "barycentric": 16, "point": 32, "normal": 56,
             "distance": 80})
+        self.check(lfem.AttachmentDef, 128, {
+            "body": 0, "target": 8, "nodes": 16, "node_count": 24, "_internal_value": 28,
+            "frame": 32, "break_force": 88, "points": 96, "point_count": 104, "stiffness": 112,
+            "damping": 120})
         self.check(lfem.Overlap, 48, {"body": 0, "triangle": 8, "shape": 12, "point": 16,
                                       "distance": 40})
         dt = lfem.RAY_HIT_DTYPE
@@ -260,6 +264,16 @@ class Physics(unittest.TestCase):
             self.assertEqual(list(world.attachment_frame(held)), [0, 0, 0, 1, 0, 0, 0])
             world.destroy_attachment(held)
             self.assertFalse(world.attachment_is_valid(held))
+            # Held instead by a point inside its top on a critically damped spring (k 2000 N/m):
+            # 1 s later it carries the weight (to the solve's 1e-3 of it).
+            cm = world.center_of_mass(bar)
+            top_z = float(world.positions(bar)[:, 2].max())
+            k = 2000.0
+            spring = world.attach_points(bar, [(cm[0], cm[1], top_z - 0.001)], stiffness=k,
+                                         damping=2 * (k * m) ** 0.5)
+            for _ in range(60):
+                world.step(1 / 60)
+            self.assertAlmostEqual(world.attachment_force(spring)[2], m * G, delta=1e-3 * m * G)
 
     def test_self_contact_is_for_deformable_bodies_only(self):
         with lfem.World() as world:

@@ -161,6 +161,10 @@ pub struct lfem_attachment_def {
     pub internal_value: u32,
     pub frame: [c_double; 7],
     pub break_force: c_double,
+    pub points: *const c_double,
+    pub point_count: u32,
+    pub stiffness: c_double,
+    pub damping: c_double,
 }
 
 /// The kinds of event (lfem_event_type).
@@ -375,7 +379,7 @@ const _: () = assert!(size_of::<lfem_world_def>() == 96);
 const _: () = assert!(size_of::<lfem_attachment>() == 8);
 const _: () = assert!(size_of::<lfem_event>() == 104);
 #[cfg(target_pointer_width = "64")]
-const _: () = assert!(size_of::<lfem_attachment_def>() == 96);
+const _: () = assert!(size_of::<lfem_attachment_def>() == 128);
 const _: () = assert!(size_of::<lfem_world_stats>() == 184);
 const _: () = assert!(size_of::<lfem_warning_kind>() == 4);
 const _: () = assert!(size_of::<lfem_warning>() == 24);

@@ -114,6 +114,10 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_attachment_def, nodes), 16);
     assert_eq!(offset!(lfem_attachment_def, frame), 32);
     assert_eq!(offset!(lfem_attachment_def, break_force), 88);
+    assert_eq!(offset!(lfem_attachment_def, points), 96);
+    assert_eq!(offset!(lfem_attachment_def, point_count), 104);
+    assert_eq!(offset!(lfem_attachment_def, stiffness), 112);
+    assert_eq!(offset!(lfem_attachment_def, damping), 120);
     assert_eq!(offset!(lfem_event, body_a), 8);
     assert_eq!(offset!(lfem_event, attachment), 24);
     assert_eq!(offset!(lfem_event, normal_impulse), 32);

@@ -643,7 +643,7 @@ impl Attachment {
 /// What an attachment holds its nodes to.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum AttachTo {
-    /// A rigid, kinematic or static body.
+    /// A rigid, kinematic or static body (or, for points, a deformable one).
     Body(Body),
     /// A frame the caller moves ([`World::set_attachment_frame`]): centre and unit quaternion
     /// (w, x, y, z) at creation.
@@ -940,6 +940,37 @@ impl World {
         def.break_force = break_force;
         let mut out = sys::lfem_attachment::default();
         // SAFETY: live world; def points at node_count indices for the duration of the call.
+        check(unsafe { sys::lfem_attachment_create(self.ptr_mut(), &def, &mut out) })?;
+        Ok(Attachment { index: out.index, generation: out.generation })
+    }
+
+    /// Hold `points` (m) of the deformable `body` where they are (each bound once to the tet
+    /// around it) at their offsets in the frame of `target`, or at the same material points of
+    /// a deformable target body; rigidly (`stiffness` 0) or by a spring of `stiffness` N/m with a
+    /// damper of `damping` N s/m; it breaks above `break_force` N (0: never).
+    pub fn create_point_attachment(
+        &mut self,
+        body: Body,
+        points: &[[f64; 3]],
+        target: AttachTo,
+        stiffness: f64,
+        damping: f64,
+        break_force: f64,
+    ) -> Result<Attachment> {
+        // SAFETY: returns a value.
+        let mut def = unsafe { sys::lfem_attachment_def_default() };
+        def.body = body.raw();
+        def.points = points.as_ptr() as *const f64;
+        def.point_count = to_u32(points.len(), "point count")?;
+        match target {
+            AttachTo::Body(b) => def.target = b.raw(),
+            AttachTo::Frame(f) => def.frame = f,
+        }
+        def.stiffness = stiffness;
+        def.damping = damping;
+        def.break_force = break_force;
+        let mut out = sys::lfem_attachment::default();
+        // SAFETY: live world; def points at 3 * point_count doubles for the duration of the call.
         check(unsafe { sys::lfem_attachment_create(self.ptr_mut(), &def, &mut out) })?;
         Ok(Attachment { index: out.index, generation: out.generation })
     }
