@@ -573,20 +573,12 @@ namespace Lfem
         {
             if (nodes == null) throw new ArgumentNullException("nodes");
             AttachmentDef d = Native.lfem_attachment_def_default();
-            GCHandle pin = GCHandle.Alloc(nodes, GCHandleType.Pinned);
-            try
-            {
-                d.Body = body;
-                d.Target = target;
-                d.Nodes = pin.AddrOfPinnedObject();
-                d.NodeCount = (uint)nodes.Length;
-                d.Frame = (double[])frame.Clone();
-                d.BreakForce = breakForce;
-                Attachment a;
-                LfemException.Check(Native.lfem_attachment_create(handle, ref d, out a));
-                return a;
-            }
-            finally { pin.Free(); }
+            d.Body = body;
+            d.Target = target;
+            d.NodeCount = (uint)nodes.Length;
+            d.Frame = (double[])frame.Clone();
+            d.BreakForce = breakForce;
+            return CreatePinned(d, nodes, true);
         }
 
         /// <summary>Hold points (m) of a deformable body where they are (each bound once to the tet
@@ -598,16 +590,23 @@ namespace Lfem
         {
             if (points == null) throw new ArgumentNullException("points");
             AttachmentDef d = Native.lfem_attachment_def_default();
-            GCHandle pin = GCHandle.Alloc(points, GCHandleType.Pinned);
+            d.Body = body;
+            d.Target = target;
+            d.PointCount = (uint)points.Length;
+            d.Stiffness = stiffness;
+            d.Damping = damping;
+            d.BreakForce = breakForce;
+            return CreatePinned(d, points, false);
+        }
+
+        // The native call with the nodes or the points pinned for its duration.
+        Attachment CreatePinned(AttachmentDef d, object held, bool nodes)
+        {
+            GCHandle pin = GCHandle.Alloc(held, GCHandleType.Pinned);
             try
             {
-                d.Body = body;
-                d.Target = target;
-                d.Points = pin.AddrOfPinnedObject();
-                d.PointCount = (uint)points.Length;
-                d.Stiffness = stiffness;
-                d.Damping = damping;
-                d.BreakForce = breakForce;
+                if (nodes) d.Nodes = pin.AddrOfPinnedObject();
+                else d.Points = pin.AddrOfPinnedObject();
                 Attachment a;
                 LfemException.Check(Native.lfem_attachment_create(handle, ref d, out a));
                 return a;
