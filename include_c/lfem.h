@@ -252,6 +252,17 @@ LFEM_API lfem_status lfem_body_set_filter(lfem_world* world, lfem_body body, uin
                                           uint32_t mask_bits);
 /** See lfem_body_set_friction. */
 LFEM_API lfem_status lfem_body_set_user_data(lfem_world* world, lfem_body body, void* user_data);
+/** Change a body's type between rigid, kinematic and static, as Box2D's b2Body_SetType: the
+ * handle, its meshes, shapes, skins and attachments stay, its pose carries over. A rigid body
+ * made kinematic moves on at its velocity and spin (lfem_body_set_kinematic_velocity changes
+ * them); a kinematic one made rigid starts from its velocities; a static body stops (where it is
+ * becomes its reference). Its contacts end (with their events) and are found again; the change
+ * of kinetic energy is the caller's work; the body and what it touched wake. A rigid body needs
+ * tets and no shapes. A deformable body keeps its type, and no body becomes deformable:
+ * LFEM_INVALID_ARGUMENT, the world unchanged. The same type: nothing happens. */
+LFEM_API lfem_status lfem_body_set_type(lfem_world* world, lfem_body body, lfem_body_type type);
+/** The body's type (lfem_body_def.type, or as lfem_body_set_type last set it). */
+LFEM_API lfem_status lfem_body_get_type(const lfem_world* world, lfem_body body, lfem_body_type* out);
 /** An opaque 64-bit value the caller keeps on the body (an entity id, an index): never read by
  * lfem, 0 at creation. Unlike user_data (a pointer, meaningless in another process), checkpoints
  * keep it: a loaded world's bodies find their entities again. */

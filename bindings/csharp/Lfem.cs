@@ -1018,6 +1018,11 @@ namespace Lfem
         public void SetFilter(Body body, uint categoryBits, uint maskBits) { LfemException.Check(Native.lfem_body_set_filter(handle, body, categoryBits, maskBits)); }
         /// <summary>Change the user data World.GetUserData returns.</summary>
         public void SetUserData(Body body, IntPtr userData) { LfemException.Check(Native.lfem_body_set_user_data(handle, body, userData)); }
+        /// <summary>Change the body's type between rigid, kinematic and static (the pose carries over;
+        /// a deformable body keeps its type).</summary>
+        public void SetBodyType(Body body, BodyType type) { LfemException.Check(Native.lfem_body_set_type(handle, body, type)); }
+        /// <summary>The body's type.</summary>
+        public BodyType GetBodyType(Body body) { BodyType t; LfemException.Check(Native.lfem_body_get_type(handle, body, out t)); return t; }
         /// <summary>An opaque 64-bit number kept on the body (an entity id); checkpoints keep it.</summary>
         public void SetUserId(Body body, ulong userId) { LfemException.Check(Native.lfem_body_set_user_id(handle, body, userId)); }
         /// <summary>The body's user id (0 at creation).</summary>
@@ -1392,6 +1397,8 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_data(WorldHandle world, Body body, IntPtr userData);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_apply_impulse(WorldHandle world, Body body, ref Vec3 point, ref Vec3 impulse);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_apply_force(WorldHandle world, Body body, ref Vec3 point, ref Vec3 force);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_type(WorldHandle world, Body body, BodyType type);
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_type(WorldHandle world, Body body, out BodyType type);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_set_user_id(WorldHandle world, Body body, ulong userId);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_user_id(WorldHandle world, Body body, out ulong userId);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_closest_point(WorldHandle world, Body body, ref Vec3 point, out Vec3 outPoint, out uint triangle, out double distance);

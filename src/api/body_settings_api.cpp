@@ -1,8 +1,10 @@
 // C shim of a body's settings changed after creation (friction, damping, material, filter,
-// user data and user id): each value checked here before lfem::World sees it
+// user data and user id, type): each value checked here before lfem::World sees it
 // (world/body_settings.cpp changes them).
 #include <cmath>
+#include <string>
 
+#include "api/conversions.h"
 #include "api/guard.h"
 #include "api/handles.h"
 
@@ -61,5 +63,25 @@ LFEM_API lfem_status lfem_body_set_user_id(lfem_world* world, lfem_body body, ui
         World& w = world_of(world);
         w.body(from_c(body));
         w.set_user_id(from_c(body), user_id);
+    });
+}
+
+LFEM_API lfem_status lfem_body_set_type(lfem_world* world, lfem_body body, lfem_body_type type) {
+    return guard(__func__, [&] {
+        World& w = world_of(world);
+        w.body(from_c(body));
+        require(type == LFEM_BODY_DEFORMABLE || type == LFEM_BODY_STATIC || type == LFEM_BODY_KINEMATIC ||
+                    type == LFEM_BODY_RIGID,
+                "type " + std::to_string(int(type)) + " is not a body type");
+        w.set_type(from_c(body), from_c(type));
+    });
+}
+
+LFEM_API lfem_status lfem_body_get_type(const lfem_world* world, lfem_body body, lfem_body_type* out) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        const Body& b = w.body(from_c(body));
+        require_pointer(out, "out");
+        *out = to_c(b.def.type);
     });
 }

@@ -35,10 +35,6 @@ lfem_event_type to_c(EventType t) {
     return LFEM_EVENT_CONTACT_BEGIN;
 }
 
-namespace {
-
-lfem_phase_time to_c(const PhaseTime& t) { return lfem_phase_time{t.seconds, t.calls}; }
-
 BodyKind from_c(lfem_body_type t) {
     switch (t) {
         case LFEM_BODY_STATIC: return BodyKind::static_body;
@@ -47,6 +43,10 @@ BodyKind from_c(lfem_body_type t) {
         default: return BodyKind::deformable;
     }
 }
+
+namespace {
+
+lfem_phase_time to_c(const PhaseTime& t) { return lfem_phase_time{t.seconds, t.calls}; }
 
 Model from_c(lfem_model m) {
     switch (m) {

@@ -18,6 +18,7 @@ lfem_event_type to_c(EventType t);
 lfem_profile to_c(const Profile& p);
 lfem_body_type to_c(BodyKind k);
 lfem_model to_c(Model m);
+BodyKind from_c(lfem_body_type t);  // one of the four (checked by the caller)
 inline BodyHandle from_c(lfem_body h) { return BodyHandle{h.index, h.generation}; }
 inline AttachmentHandle from_c(lfem_attachment h) { return AttachmentHandle{h.index, h.generation}; }
 

@@ -138,6 +138,7 @@ public:
     void set_user_data(BodyHandle body, void* user_data);
     void set_user_id(BodyHandle body, uint64_t user_id);
     void set_sleep_allowed(BodyHandle body, bool allowed);
+    void set_type(BodyHandle body, BodyKind type);  // body_type.cpp
     void set_filter(BodyHandle body, uint32_t category_bits, uint32_t mask_bits);
     // Later skins' indices move down by one.
     void remove_skin(BodyHandle body, uint32_t skin);

@@ -323,7 +323,7 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
         }
         case 4: {
             const double value = in.number(-1, 10);
-            switch (in.below(5)) {
+            switch (in.below(6)) {
                 case 0: name = "body_set_friction"; return lfem_body_set_friction(w, b, value);
                 case 4:  // any int, not the double (a huge one does not convert)
                     name = "body_set_sleep_allowed";
@@ -336,6 +336,16 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
                     name = "body_set_damping";
                     return lfem_body_set_damping(w, b, value);
                 case 2: name = "body_set_filter"; return lfem_body_set_filter(w, b, in.u32(), in.u32());
+                case 5: {
+                    name = "body_set_type";
+                    const lfem_body_type type = lfem_body_type(in.below(5));  // 4: no type
+                    const lfem_status st = lfem_body_set_type(w, b, type);
+                    lfem_body_type now = LFEM_BODY_TYPE_FORCE32;
+                    if (st == LFEM_OK)
+                        expect(lfem_body_get_type(w, b, &now) == LFEM_OK && now == type, "the type set is not the one read:",
+                               name);
+                    return st;
+                }
                 default: {
                     name = "body_set_user_data";
                     // The session's record of the body's user data stays the truth: set it back.

@@ -501,7 +501,7 @@ class Program:
     def setting(self, body_index, which, value=0.0, category=1, mask=0xFFFFFFFF, poisson=None, flag=0):
         # variant 4: 0 friction, 1 damping (value) or with poisson given the material
         # (E = 1e3 + 1e6 |value|), 2 filter (category, mask), 3 user data, 4 sleep allowed
-        # (flag, any 32 bits read as an int)
+        # (flag, any 32 bits read as an int), 5 the type (flag: 0 deformable .. 3 rigid, 4 none)
         self.call(SET_VELOCITIES)
         self.pick(body_index)
         self.byte(2 | (1 if poisson is not None else 0))
@@ -513,7 +513,7 @@ class Program:
         if which == 2:
             self.u32(category)
             self.u32(mask)
-        if which == 4:
+        if which in (4, 5):
             self.u32(flag & 0xFFFFFFFF)
 
     def force(self, body_index, point, force):
@@ -640,6 +640,9 @@ p.force(1, (0.05, 0.05, 0.25), (0, 20.0, 0))  # a force for the next call, insid
 p.force(1, (0.05, 0.05, 0.9), (0, 20.0, 0))   # refused: far from the block
 p.force(0, (0.05, 0.05, 0.05), (0, 20.0, 0))  # refused: the floor is static
 p.user_id(1, 0xFEDCBA98, 0x76543210)          # a user id
+p.setting(1, 5, flag=3)                       # refused: a deformable body keeps its type
+p.setting(0, 5, flag=2)                       # the static floor made kinematic
+p.setting(0, 5, flag=1)                       # and static again
 p.step(0.01)
 seed('teleports', p)
 

@@ -856,6 +856,11 @@ public static class LfemTests
             Body cube = world.CreateBody(BodyDef.Default);
             using (Mesh mesh = Mesh.Box(new Vec3(0.2, 0.2, 0.2), 2, 2, 2)) world.AddMesh(cube, mesh);
             Equal(0ul, world.GetUserId(cube), "user id at creation");
+            Equal(BodyType.Deformable, world.GetBodyType(cube), "its type");
+            bool refused = false;
+            try { world.SetBodyType(cube, BodyType.Rigid); }
+            catch (LfemException e) { refused = e.Status == Status.InvalidArgument; }
+            Check(refused, "a deformable body keeps its type");
             world.SetUserId(cube, 0xFEDCBA9876543210ul);
             Equal(0xFEDCBA9876543210ul, world.GetUserId(cube), "user id");
             const double dt = 1.0 / 60;

@@ -329,6 +329,17 @@ class World:
         native.lfem_body_get_user_data(self.handle, _body(body), ctypes.byref(out))
         return out.value
 
+    def set_type(self, body: Body, body_type: BodyType) -> None:
+        """Change the body's type between RIGID, KINEMATIC and STATIC (the pose carries over; a
+        deformable body keeps its type)."""
+        native.lfem_body_set_type(self.handle, _body(body), int(body_type))
+
+    def body_type(self, body: Body) -> BodyType:
+        """The body's type."""
+        out = ctypes.c_int()
+        native.lfem_body_get_type(self.handle, _body(body), ctypes.byref(out))
+        return BodyType(out.value)
+
     def user_id(self, body: Body) -> int:
         """The body's opaque 64-bit id (0 at creation; kept by checkpoints)."""
         out = ctypes.c_uint64()

@@ -788,6 +788,9 @@ class SkinsAndQueries(unittest.TestCase):
             world.add_mesh(cube, mesh)
             mesh.close()
             self.assertEqual(world.user_id(cube), 0)
+            self.assertEqual(world.body_type(cube), lfem.BodyType.DEFORMABLE)
+            with self.assertRaises(lfem.InvalidArgumentError):
+                world.set_type(cube, lfem.BodyType.RIGID)
             world.set_user_id(cube, 2**64 - 1)
             self.assertEqual(world.user_id(cube), 2**64 - 1)
             with self.assertRaises(ValueError):

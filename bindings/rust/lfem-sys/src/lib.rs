@@ -575,6 +575,8 @@ extern "C" {
         point: *const c_double,
         force: *const c_double,
     ) -> lfem_status;
+    pub fn lfem_body_set_type(world: *mut lfem_world, body: lfem_body, body_type: lfem_body_type) -> lfem_status;
+    pub fn lfem_body_get_type(world: *const lfem_world, body: lfem_body, out: *mut lfem_body_type) -> lfem_status;
     pub fn lfem_body_set_user_id(world: *mut lfem_world, body: lfem_body, user_id: u64) -> lfem_status;
     pub fn lfem_body_get_user_id(world: *const lfem_world, body: lfem_body, out: *mut u64) -> lfem_status;
     pub fn lfem_body_closest_point(

@@ -312,6 +312,26 @@ pub enum BodyType {
     Rigid,
 }
 
+impl BodyType {
+    fn raw(self) -> sys::lfem_body_type {
+        match self {
+            BodyType::Deformable => sys::LFEM_BODY_DEFORMABLE,
+            BodyType::Static => sys::LFEM_BODY_STATIC,
+            BodyType::Kinematic => sys::LFEM_BODY_KINEMATIC,
+            BodyType::Rigid => sys::LFEM_BODY_RIGID,
+        }
+    }
+
+    fn from_raw(t: sys::lfem_body_type) -> BodyType {
+        match t {
+            sys::LFEM_BODY_STATIC => BodyType::Static,
+            sys::LFEM_BODY_KINEMATIC => BodyType::Kinematic,
+            sys::LFEM_BODY_RIGID => BodyType::Rigid,
+            _ => BodyType::Deformable,
+        }
+    }
+}
+
 /// The material model of a deformable body.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Model {
@@ -368,12 +388,7 @@ impl Default for BodyDef {
         // SAFETY: returns a value.
         let d = unsafe { sys::lfem_body_def_default() };
         BodyDef {
-            body_type: match d.type_ {
-                sys::LFEM_BODY_STATIC => BodyType::Static,
-                sys::LFEM_BODY_KINEMATIC => BodyType::Kinematic,
-                sys::LFEM_BODY_RIGID => BodyType::Rigid,
-                _ => BodyType::Deformable,
-            },
+            body_type: BodyType::from_raw(d.type_),
             model: match d.model {
                 sys::LFEM_MODEL_COROTATIONAL => Model::Corotational,
                 sys::LFEM_MODEL_NEO_HOOKEAN => Model::NeoHookean,
@@ -401,12 +416,7 @@ impl Default for BodyDef {
 impl BodyDef {
     fn to_raw(self) -> sys::lfem_body_def {
         sys::lfem_body_def {
-            type_: match self.body_type {
-                BodyType::Deformable => sys::LFEM_BODY_DEFORMABLE,
-                BodyType::Static => sys::LFEM_BODY_STATIC,
-                BodyType::Kinematic => sys::LFEM_BODY_KINEMATIC,
-                BodyType::Rigid => sys::LFEM_BODY_RIGID,
-            },
+            type_: self.body_type.raw(),
             model: match self.model {
                 Model::Paper => sys::LFEM_MODEL_PAPER,
                 Model::Corotational => sys::LFEM_MODEL_COROTATIONAL,
@@ -1339,6 +1349,21 @@ impl World {
     pub fn apply_force(&mut self, body: Body, point: [f64; 3], force: [f64; 3]) -> Result<()> {
         // SAFETY: live world; 3 doubles each.
         check(unsafe { sys::lfem_body_apply_force(self.ptr_mut(), body.raw(), point.as_ptr(), force.as_ptr()) })
+    }
+
+    /// Change the body's type between rigid, kinematic and static (the pose carries over; a
+    /// deformable body keeps its type).
+    pub fn set_type(&mut self, body: Body, body_type: BodyType) -> Result<()> {
+        // SAFETY: live world.
+        check(unsafe { sys::lfem_body_set_type(self.ptr_mut(), body.raw(), body_type.raw()) })
+    }
+
+    /// The body's type.
+    pub fn body_type(&self, body: Body) -> Result<BodyType> {
+        let mut out: sys::lfem_body_type = sys::LFEM_BODY_DEFORMABLE;
+        // SAFETY: live world; one enum written on success.
+        check(unsafe { sys::lfem_body_get_type(self.ptr(), body.raw(), &mut out) })?;
+        Ok(BodyType::from_raw(out))
     }
 
     /// An opaque 64-bit number kept on the body (an entity id); checkpoints keep it.

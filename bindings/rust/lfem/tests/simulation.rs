@@ -801,6 +801,8 @@ fn a_force_acts_for_one_call_and_a_user_id_is_kept() {
     let cube = world.create_body(&BodyDef::default()).unwrap();
     world.add_mesh(cube, &Mesh::new_box([0.2, 0.2, 0.2], [2, 2, 2]).unwrap()).unwrap();
     assert_eq!(world.user_id(cube).unwrap(), 0);
+    assert_eq!(world.body_type(cube).unwrap(), BodyType::Deformable);
+    assert_eq!(world.set_type(cube, BodyType::Rigid).unwrap_err().status(), Status::InvalidArgument);
     world.set_user_id(cube, u64::MAX).unwrap();
     assert_eq!(world.user_id(cube).unwrap(), u64::MAX);
     let dt = 1.0 / 60.0;
