@@ -555,6 +555,20 @@ LFEM_API lfem_status lfem_world_cast_ray(const lfem_world* world, const double o
                                          const double direction[3], double max_distance,
                                          lfem_query_filter filter, lfem_ray_hit* out, int* hit);
 
+/** A sphere of radius (m, finite, >= 0) swept along the ray (origin, direction, max_distance as
+ * lfem_world_cast_ray): the first place it touches a surface the filter sees, a boundary
+ * triangle at its current position or a shape. out->distance: how far its centre went along the
+ * unit ray; out->point: the point of the surface it touches (on the triangle, with its
+ * barycentric weights; or on the shape); out->normal: unit, from that point towards the
+ * sphere's centre. A sphere that starts touching or overlapping something hits it at distance
+ * 0. Radius 0 is a ray that also meets edges it grazes. *hit = 1 and *out set on a hit, else
+ * *hit = 0 and *out untouched. Found by conservative advancement on each candidate (the
+ * distance to a convex piece less the radius, stepped until it is within 1e-12 m): exact head
+ * on, converging at a grazing touch. */
+LFEM_API lfem_status lfem_world_cast_sphere(const lfem_world* world, const double origin[3],
+                                            const double direction[3], double radius, double max_distance,
+                                            lfem_query_filter filter, lfem_ray_hit* out, int* hit);
+
 /** The point of the body's surface (its boundary triangles where its nodes are now) nearest to
  * `point` (m): into out_point; *triangle (nullable) its triangle in lfem_body_get_boundary_triangles
  * order (the first among equally near ones), *distance (nullable) how far (m; a point inside the

@@ -1111,6 +1111,18 @@ namespace Lfem
         /// <summary>The nearest crossing of the ray origin + t direction / |direction|, t in
         /// [0, maxDistance] (m; double.PositiveInfinity for no limit), with the surface of a body
         /// the filter sees; false when it meets nothing (hit then default).</summary>
+        /// <summary>A sphere of radius swept along the ray: where it first touches a surface the
+        /// filter sees (Distance its centre's travel, Point the point touched, Normal from it
+        /// towards the centre).</summary>
+        public bool CastSphere(Vec3 origin, Vec3 direction, double radius, double maxDistance, QueryFilter filter, out RayHit hit)
+        {
+            int found;
+            RayHit h = default(RayHit);
+            LfemException.Check(Native.lfem_world_cast_sphere(handle, ref origin, ref direction, radius, maxDistance, filter, ref h, out found));
+            hit = h;
+            return found == 1;
+        }
+
         public bool CastRay(Vec3 origin, Vec3 direction, double maxDistance, QueryFilter filter, out RayHit hit)
         {
             int found;
@@ -1428,6 +1440,7 @@ namespace Lfem
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_body_get_skin_vertices_f32(WorldHandle world, Body body, uint skin, IntPtr positions, uint positionStride, IntPtr normals, uint normalStride, uint vertexCapacity);
 
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern QueryFilter lfem_query_filter_default();
+        [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_cast_sphere(WorldHandle world, ref Vec3 origin, ref Vec3 direction, double radius, double maxDistance, QueryFilter filter, ref RayHit hit, out int found);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_cast_ray(WorldHandle world, ref Vec3 origin, ref Vec3 direction, double maxDistance, QueryFilter filter, ref RayHit hit, out int found);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_cast_ray_all(WorldHandle world, ref Vec3 origin, ref Vec3 direction, double maxDistance, QueryFilter filter, [Out] RayHit[] hits, uint capacity, out uint count);
         [DllImport(Lib, CallingConvention = Cdecl)] public static extern Status lfem_world_overlap_capsule(WorldHandle world, ref Vec3 a, ref Vec3 b, double radius, QueryFilter filter, [Out] Overlap[] found, uint capacity, out uint count);

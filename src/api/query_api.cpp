@@ -82,6 +82,22 @@ LFEM_API lfem_status lfem_world_cast_ray(const lfem_world* world, const double o
     });
 }
 
+LFEM_API lfem_status lfem_world_cast_sphere(const lfem_world* world, const double origin[3],
+                                            const double direction[3], double radius, double max_distance,
+                                            lfem_query_filter filter, lfem_ray_hit* out, int* hit) {
+    return guard(__func__, [&] {
+        const World& w = world_of(world);
+        const QueryRay ray = checked_ray(origin, direction, max_distance);
+        require(std::isfinite(radius) && radius >= 0.0, "radius must be finite and >= 0 m");
+        require_pointer(out, "out");
+        require_pointer(hit, "hit");
+        RayHit h;
+        const bool found = w.cast_sphere(ray, radius, filter_of(filter), h);
+        if (found) *out = hit_as_c(w, h);
+        *hit = found ? 1 : 0;
+    });
+}
+
 LFEM_API lfem_status lfem_world_cast_ray_all(const lfem_world* world, const double origin[3],
                                              const double direction[3], double max_distance,
                                              lfem_query_filter filter, lfem_ray_hit* out, uint32_t capacity,

@@ -63,9 +63,11 @@ public:
     // item of a leaf whose box the ray meets before the current t_max, the nearest boxes
     // first. visit returns the bound for what follows (the same t_max to see everything, the
     // distance of a hit found to look only for nearer ones). Every box it passes is counted in
-    // *boxes (nullable).
+    // *boxes (nullable). With grow > 0 every box is taken grown by it on every side (a sphere of
+    // that radius swept along the ray meets what is in it only inside those).
     template <class Visit>
-    void cast(const RaySlabs& ray, double t_max, const Visit& visit, uint64_t* boxes = nullptr) const {
+    void cast(const RaySlabs& ray, double t_max, const Visit& visit, uint64_t* boxes = nullptr,
+              double grow = 0.0) const {
         if (nodes_.empty()) return;
         struct Entry {
             uint32_t node;
@@ -74,7 +76,8 @@ public:
         Entry stack[128];
         int top = 0;
         double t0, t1;
-        if (!ray_interval(nodes_[0].box, ray, 0.0, t_max, t0, t1)) return;
+        auto box = [&](uint32_t node) { return grow > 0.0 ? grown(nodes_[node].box, grow) : nodes_[node].box; };
+        if (!ray_interval(box(0), ray, 0.0, t_max, t0, t1)) return;
         stack[top++] = {0, t0};
         while (top > 0) {
             const Entry e = stack[--top];
@@ -86,8 +89,8 @@ public:
                 continue;
             }
             double ta = 0, tb = 0, exit;
-            const bool a = ray_interval(nodes_[n.first].box, ray, 0.0, t_max, ta, exit);
-            const bool b = ray_interval(nodes_[n.first + 1].box, ray, 0.0, t_max, tb, exit);
+            const bool a = ray_interval(box(n.first), ray, 0.0, t_max, ta, exit);
+            const bool b = ray_interval(box(n.first + 1), ray, 0.0, t_max, tb, exit);
             // The nearer child goes on top, so it is taken first.
             if (a && b) {
                 const bool a_first = ta <= tb;

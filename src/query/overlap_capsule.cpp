@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "common/closest_point.h"
-#include "query/gjk.h"
 #include "query/query_scene.h"
+#include "query/ray_shape.h"
 
 namespace lfem {
 namespace {
@@ -50,24 +50,6 @@ double least_along(const QueryCapsule& c, const Nearest& nearest, Vec3& point, V
         }
     }
     return best;
-}
-
-// The distance from q to a posed solid shape (negative inside; 0 inside a convex hull, whose
-// surface GJK does not look for) and its nearest point.
-double shape_nearest(const RigidShape& shape, const ShapePose& pose, const Vec3& q, Vec3& p) {
-    if (shape.type == ShapeType::convex_hull) {
-        std::vector<Vec3> points(shape.points.size() / 3);
-        const Mat3 R = pose.rotation.normalized().toRotationMatrix();
-        for (std::size_t i = 0; i < points.size(); ++i) points[i] = pose.center + R * Vec3(&shape.points[3 * i]);
-        const Vec3 v = convex_separation(ConvexPoints{&q, 1}, ConvexPoints{points.data(), uint32_t(points.size())});
-        p = q - v;
-        return v.norm();
-    }
-    double d = 0.0;
-    Vec3 normal;
-    shape_signed_distance(shape, pose, q, HUGE_VAL, d, normal);  // closed forms: any distance
-    p = q - d * normal;
-    return d;
 }
 
 }  // namespace
@@ -111,7 +93,7 @@ void QueryScene::overlap_capsule(const QueryWorld& world, const QueryCapsule& c,
             counts_.primitives += 1;
             const ShapePose pose = ShapePose::load(b.shape_pose + 7 * std::size_t(j));
             Vec3 p, core;
-            const double d = least_along(c, [&](const Vec3& q, Vec3& at) { return shape_nearest(b.shapes[j], pose, q, at); },
+            const double d = least_along(c, [&](const Vec3& q, Vec3& at) { return shape_distance(b.shapes[j], pose, q, at); },
                                          p, core);
             if (d < o.distance) o.distance = d, o.triangle = UINT32_MAX, o.shape = j, o.point = p;
         }

@@ -115,6 +115,11 @@ public:
     // Every crossing, in hit_before order.
     void cast_ray_all(const QueryWorld& world, const QueryRay& ray, const QueryFilter& filter,
                       std::vector<RayHit>& out);
+    // A sphere of `radius` swept along the ray: the first place it touches a surface the filter
+    // sees (its distance along the ray, the point touched, the normal there out of the surface
+    // towards the sphere's centre); false when none within max_distance.
+    bool cast_sphere(const QueryWorld& world, const QueryRay& ray, double radius, const QueryFilter& filter,
+                     RayHit& out);
     // The slots of the bodies the filter sees whose geometry overlaps the box (touching
     // counts): a boundary triangle or a shape that meets it, or a body of tets around it; in
     // slot order.
@@ -142,7 +147,7 @@ private:
     // visit(slot, t_max) -> t_max for the bodies whose box the ray meets, nearest first
     // (bodies with a plane first of all).
     template <class Visit>
-    void for_bodies_on_ray(const QueryRay& ray, const Visit& visit);
+    void for_bodies_on_ray(const QueryRay& ray, const Visit& visit, double grow = 0.0);
     // Every crossing of the ray with body b's triangles and shapes before t_max, to add(hit)
     // which returns the new t_max.
     template <class Add>

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/closest_point.h"
 #include "common/ray_triangle.h"
 #include "query/query_scene.h"
 #include "query/ray_shape.h"
@@ -33,7 +34,7 @@ bool ray_triangle(const QueryBody& b, uint32_t t, const QueryRay& ray, double t_
 }  // namespace
 
 template <class Visit>
-void QueryScene::for_bodies_on_ray(const QueryRay& ray, const Visit& visit) {
+void QueryScene::for_bodies_on_ray(const QueryRay& ray, const Visit& visit, double grow) {
     double t_max = ray.max_distance;
     for (uint32_t slot : unbounded_) t_max = visit(slot, t_max);
     const double d[3] = {ray.dir[0], ray.dir[1], ray.dir[2]}, o[3] = {ray.origin[0], ray.origin[1], ray.origin[2]};
@@ -41,8 +42,9 @@ void QueryScene::for_bodies_on_ray(const QueryRay& ray, const Visit& visit) {
     tree_.cast(slabs, t_max, [&](uint32_t item, double bound) {
         double enter, exit;  // a leaf holds a few bodies: each one's own box first
         const uint32_t slot = bounded_[item];
-        return ray_interval(slots_[slot].box, slabs, 0.0, bound, enter, exit) ? visit(slot, bound) : bound;
-    });
+        const Aabb box = grow > 0.0 ? grown(slots_[slot].box, grow) : slots_[slot].box;
+        return ray_interval(box, slabs, 0.0, bound, enter, exit) ? visit(slot, bound) : bound;
+    }, nullptr, grow);
 }
 
 template <class Add>
@@ -111,6 +113,85 @@ void QueryScene::cast_ray_all(const QueryWorld& world, const QueryRay& ray, cons
         });
     });
     std::sort(out.begin(), out.end(), hit_before);
+}
+
+namespace {
+
+// The first t in [0, t_max] at which the point origin + t dir comes within radius of a convex
+// piece, whose distance and nearest point `nearest(p, q)` gives (0 or less inside): that
+// distance less the radius is convex along the ray and changes by at most |dt| (a unit
+// direction), so stepping by it never passes its first zero (conservative advancement: one
+// step head on, a few dozen at a grazing touch); moving away from the piece while still out of
+// reach, the sphere never touches it. True with t, the point touched and the normal there.
+template <class Nearest>
+bool sweep_to(const QueryRay& ray, double radius, double t_max, const Nearest& nearest, double& t, Vec3& point,
+              Vec3& normal) {
+    const double tolerance = 1e-12 * (radius + 1.0);
+    t = 0.0;
+    for (int step = 0; step < 200 && t <= t_max; ++step) {
+        const Vec3 p = ray.origin + t * ray.dir;
+        Vec3 q;
+        const double d = nearest(p, q);
+        const double gap = d - radius;
+        if (gap <= tolerance) {
+            point = q;
+            const Vec3 out = p - q;
+            normal = out.norm() > 0.0 ? Vec3(out / out.norm()) : Vec3(-ray.dir);  // started inside
+            return true;
+        }
+        if (d > 0.0 && ray.dir.dot(p - q) >= 0.0) return false;  // moving away
+        t += gap;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool QueryScene::cast_sphere(const QueryWorld& world, const QueryRay& ray, double radius, const QueryFilter& filter,
+                             RayHit& out) {
+    in_use_ = true;
+    counts_.queries += 1;
+    bool found = false;
+    RayHit best;
+    auto consider = [&](RayHit& hit, double t_max) {
+        if (!found || hit_before(hit, best)) best = hit, found = true;
+        return std::min(t_max, best.distance);
+    };
+    const double d[3] = {ray.dir[0], ray.dir[1], ray.dir[2]}, o[3] = {ray.origin[0], ray.origin[1], ray.origin[2]};
+    for_bodies_on_ray(ray, [&](uint32_t slot, double t_max) {
+        QueryBody b;
+        if (!world.body(slot, b) || !filter.sees(b)) return t_max;
+        counts_.bodies += 1;
+        if (b.triangle_count > 0)
+            tree_of(slot, b).tree().cast(RaySlabs(o, d), t_max, [&](uint32_t t, double bound) {
+                counts_.primitives += 1;
+                const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
+                const Vec3 A = node(b.x, tri[0]), B = node(b.x, tri[1]), C = node(b.x, tri[2]);
+                double w[3] = {1, 0, 0};
+                RayHit hit;
+                if (!sweep_to(ray, radius, bound, [&](const Vec3& p, Vec3& q) {
+                        q = closest_on_triangle(p, A, B, C, w);
+                        return (p - q).norm();
+                    }, hit.distance, hit.point, hit.normal))
+                    return bound;
+                hit.slot = slot, hit.triangle = t, hit.shape = UINT32_MAX;
+                hit.t1 = w[2], hit.t2 = w[1];  // the point is w0 a + w1 b + w2 c
+                return t_max = consider(hit, bound);
+            }, nullptr, radius);
+        for (uint32_t j = 0; j < b.shape_count; ++j) {
+            counts_.primitives += 1;
+            const ShapePose pose = ShapePose::load(b.shape_pose + 7 * std::size_t(j));
+            RayHit hit;
+            if (!sweep_to(ray, radius, t_max, [&](const Vec3& p, Vec3& q) { return shape_distance(b.shapes[j], pose, p, q); },
+                          hit.distance, hit.point, hit.normal))
+                continue;
+            hit.slot = slot, hit.shape = j;
+            t_max = consider(hit, t_max);
+        }
+        return t_max;
+    }, radius);
+    if (found) out = best;
+    return found;
 }
 
 }  // namespace lfem

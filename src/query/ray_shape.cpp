@@ -189,4 +189,20 @@ bool shape_overlaps_box(const RigidShape& s, const ShapePose& pose, const Aabb& 
     }
 }
 
+double shape_distance(const RigidShape& shape, const ShapePose& pose, const Vec3& q, Vec3& p) {
+    if (shape.type == ShapeType::convex_hull) {
+        std::vector<Vec3> points(shape.points.size() / 3);
+        const Mat3 R = pose.rotation.normalized().toRotationMatrix();
+        for (std::size_t i = 0; i < points.size(); ++i) points[i] = pose.center + R * Vec3(&shape.points[3 * i]);
+        const Vec3 v = convex_separation(ConvexPoints{&q, 1}, ConvexPoints{points.data(), uint32_t(points.size())});
+        p = q - v;
+        return v.norm();
+    }
+    double d = 0.0;
+    Vec3 normal;
+    shape_signed_distance(shape, pose, q, HUGE_VAL, d, normal);  // closed forms: any distance
+    p = q - d * normal;
+    return d;
+}
+
 }  // namespace lfem

@@ -24,6 +24,10 @@ bool line_through_shape(const RigidShape& shape, const ShapePose& pose, const Ve
 // Whether the solid shape overlaps the box (touching counts, to 1e-12 of their size).
 bool shape_overlaps_box(const RigidShape& shape, const ShapePose& pose, const Aabb& box);
 
+// The distance from q to a posed solid shape (negative inside; 0 inside a convex hull, whose
+// surface GJK does not look for) and its nearest point (q itself inside a hull).
+double shape_distance(const RigidShape& shape, const ShapePose& pose, const Vec3& q, Vec3& nearest);
+
 // The eight corners of a box.
 void box_corners(const Aabb& box, Vec3 corners[8]);
 

@@ -69,6 +69,12 @@ void World::overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<
     queries_.scene.overlap_box(view, box, filter, slots);
 }
 
+bool World::cast_sphere(const QueryRay& ray, double radius, const QueryFilter& filter, RayHit& out) const {
+    const BodiesForQueries view(bodies_);
+    queries_.scene.prepare(view, queries_.revision, nullptr);
+    return queries_.scene.cast_sphere(view, ray, radius, filter, out);
+}
+
 void World::overlap_capsule(const QueryCapsule& capsule, const QueryFilter& filter, std::vector<Overlap>& out) const {
     const BodiesForQueries view(bodies_);
     queries_.scene.prepare(view, queries_.revision, nullptr);

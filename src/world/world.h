@@ -216,6 +216,7 @@ public:
     void cast_ray_all(const QueryRay& ray, const QueryFilter& filter, std::vector<RayHit>& out) const;
     void overlap_box(const Aabb& box, const QueryFilter& filter, std::vector<uint32_t>& slots) const;
     void overlap_capsule(const QueryCapsule& capsule, const QueryFilter& filter, std::vector<Overlap>& out) const;
+    bool cast_sphere(const QueryRay& ray, double radius, const QueryFilter& filter, RayHit& out) const;
     const QueryCounts& query_counts() const { return queries_.scene.counts(); }
     // The point of the body's boundary triangles nearest to a point (a body with triangles).
     SurfacePoint closest_surface_point(const Body& body, const double point[3]) const;

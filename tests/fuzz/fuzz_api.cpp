@@ -770,7 +770,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             Buffer<uint32_t> tri(3 * std::size_t(capacity));
             uint32_t sizes[2] = {0xA5A5A5A5u, 0xA5A5A5A5u};
             lfem_status st;
-            const uint32_t which = in.below(5);
+            const uint32_t which = in.below(6);
             switch (which) {
                 case 0:
                     st = lfem_body_get_skin_vertices(w, b, skin, arg(s, 0, p.data()), f & 1 ? nrm.data() : nullptr,
@@ -813,7 +813,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             return st;
         }
         case 17: {
-            name = "world_cast_ray(_all)/overlap_box/_sphere/_capsule";
+            name = "world_cast_ray(_all)/_sphere/overlap_box/_sphere/_capsule";
             const double a[3] = {in.number(-2, 2), in.number(-2, 2), in.number(-2, 2)};
             const double b[3] = {in.number(-2, 2), in.number(-2, 2), in.number(-2, 2)};
             lfem_query_filter f = lfem_query_filter_default();
@@ -849,6 +849,17 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
                         for (uint32_t i = 0; i < count; ++i)
                             expect(lfem_body_is_valid(w, found.v[i]), "a box found a body that is not valid:", name);
                     break;
+                case 5: {  // a sphere of radius 0.1 cast from a along b (the limit read as for a ray)
+                    int hit = 2;
+                    st = lfem_world_cast_sphere(w, arg(s, 0, a), arg(s, 1, b), 0.1, in.number(0, 5), f,
+                                                arg(s, 2, hits.data()), arg(s, 3, &hit));
+                    if (st == LFEM_OK) {
+                        expect(hit == 0 || hit == 1, "cast_sphere's hit is neither 0 nor 1:", name);
+                        expect(hit == 1 || hits.untouched(), "a sphere that hit nothing wrote a hit:", name);
+                        if (hit == 1) expect(hits.v[0].distance >= 0, "a sphere cast hit behind its origin:", name);
+                    }
+                    break;
+                }
                 default: {  // 3: a sphere at a, 4: a capsule from a to b; the radius read as a ray's limit
                     const double radius = in.number(0, 5);
                     lfem_overlap* out = arg(s, 2, capacity ? overlaps.data() : nullptr);

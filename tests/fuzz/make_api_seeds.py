@@ -378,6 +378,9 @@ class Program:
     def overlap_capsule(self, a, b, radius, capacity, filt=None, flags=0):
         self._query(4, a, b, capacity, filt, radius, flags)
 
+    def sphere_cast(self, origin, direction, max_distance, filt=None, flags=0):
+        self._query(5, origin, direction, 0, filt, max_distance, flags)
+
     def release(self, body_index, nodes):
         self.fix(body_index, nodes, call=RELEASE_NODES)
 
@@ -744,6 +747,8 @@ p.overlap_sphere((0.0, 0.0, 0.15), 0.1, capacity=4)
 p.overlap_sphere((0.0, 0.0, 0.15), 0.1, capacity=0)                  # the count alone
 p.overlap_capsule((-0.5, 0.0, 0.15), (0.5, 0.0, 0.2), 0.05, capacity=4)
 p.overlap_capsule((-0.5, 0.0, 0.15), (0.5, 0.0, 0.2), 0.05, capacity=4, flags=null_arg(1))
+p.sphere_cast((0.0, 0.0, 1.0), (0.0, 0.0, -1.0), 2.0)
+p.sphere_cast((0.0, 0.0, 1.0), (0.0, 0.0, -1.0), 0.1)                # short of everything
 p.world_getter(2)             # the profile counts the queries
 seed('skin_and_rays', p)
 

@@ -201,3 +201,84 @@ TEST(Overlaps, ASphereMeetsAHullAtItsNearestPoint) {
     EXPECT_NEAR(o[0].distance, 0.1, kGjk);
     EXPECT_TRUE(overlap_sphere(world, off, 0.1 - 1e-9).empty());
 }
+
+namespace {
+
+bool cast_sphere(lfem_world* w, const double* o, const double* d, double r, double max_distance, lfem_ray_hit& hit) {
+    int found = 7;
+    EXPECT_EQ(lfem_world_cast_sphere(w, o, d, r, max_distance, lfem_query_filter_default(), &hit, &found), LFEM_OK)
+        << lfem_last_error();
+    EXPECT_TRUE(found == 0 || found == 1);
+    return found == 1;
+}
+
+}  // namespace
+
+// A sphere swept along a ray (lfem_world_cast_sphere) stops where it first touches: head on a
+// static sphere at the sum of the radii, off centre where the centres are that far apart, on a
+// cube's face and on its edge where the closed forms put it; it misses what it passes beside
+// and what lies beyond max_distance; one that starts overlapping hits at 0.
+TEST(SphereCasts, StopWhereTheSphereFirstTouches) {
+    World world(no_gravity());
+    const lfem_body s = static_body(world);
+    lfem_shape_def d = lfem_shape_def_default();
+    d.type = LFEM_SHAPE_SPHERE, d.radius = 0.5, d.center[0] = 2.0;
+    add_shape(world, s, d);
+    Mesh m;
+    make_box_mesh(m, 0.2, 0.2, 0.2, 2, 2, 2, 0.0, 5.0, 0.0);  // [0, 0.2] x [5, 5.2] x [0, 0.2]
+    const lfem_body cube = add_body(world, lfem_body_def_default(), m);
+    lfem_ray_hit hit{};
+    const double x_dir[3] = {1, 0, 0}, down[3] = {0, 0, -2};
+    // Head on: 2 - 0.5 - 0.1; exact (one step of the advancement).
+    const double o1[3] = {0, 0, 0};
+    ASSERT_TRUE(cast_sphere(world, o1, x_dir, 0.1, HUGE_VAL, hit));
+    EXPECT_TRUE(same_body(hit.body, s));
+    EXPECT_EQ(hit.shape, 0u);
+    EXPECT_NEAR(hit.distance, 1.4, kExact);
+    expect_near3(hit.point, 1.5, 0, 0, kExact, "head on");
+    expect_near3(hit.normal, -1, 0, 0, kExact, "head on");
+    // 0.3 off the line of centres: (t - 2)^2 + 0.09 = 0.6^2. The advancement converges on a
+    // slanted approach to its stopping gap (1e-12 m) over the cosine of the angle: 1e-11.
+    const double o2[3] = {0, 0.3, 0};
+    ASSERT_TRUE(cast_sphere(world, o2, x_dir, 0.1, HUGE_VAL, hit));
+    const double t = 2 - std::sqrt(0.27), c[3] = {t - 2, 0.3, 0};
+    EXPECT_NEAR(hit.distance, t, 1e-11);
+    expect_near3(hit.point, 2 + c[0] * 0.5 / 0.6, c[1] * 0.5 / 0.6, 0, 1e-11, "off centre");
+    expect_near3(hit.normal, c[0] / 0.6, c[1] / 0.6, 0, 1e-11, "off centre");
+    // Down onto the cube's top face at (0.1, 5.1): 1 - 0.2 - 0.05.
+    const double o3[3] = {0.1, 5.1, 1.0};
+    ASSERT_TRUE(cast_sphere(world, o3, down, 0.05, HUGE_VAL, hit));
+    EXPECT_TRUE(same_body(hit.body, cube));
+    EXPECT_NE(hit.triangle, UINT32_MAX);
+    EXPECT_NEAR(hit.distance, 0.75, kExact);
+    expect_near3(hit.point, 0.1, 5.1, 0.2, kExact, "the top face");
+    expect_near3(hit.normal, 0, 0, 1, kExact, "the top face");
+    // Down past the side x = 0.2 at x = 0.23: it catches the top edge when its centre is 0.04
+    // above it: t = 1 - 0.24, normal (0.03, 0, 0.04) / 0.05.
+    const double o4[3] = {0.23, 5.1, 1.0};
+    ASSERT_TRUE(cast_sphere(world, o4, down, 0.05, HUGE_VAL, hit));
+    EXPECT_NEAR(hit.distance, 0.76, 1e-11);
+    expect_near3(hit.point, 0.2, 5.1, 0.2, 1e-11, "the edge");
+    expect_near3(hit.normal, 0.6, 0, 0.8, 1e-10, "the edge");
+    // Beside it (0.06 from the side) it misses; short of the face it misses; overlapping, 0.
+    const double o5[3] = {0.26, 5.1, 1.0};
+    EXPECT_FALSE(cast_sphere(world, o5, down, 0.05, HUGE_VAL, hit));
+    EXPECT_FALSE(cast_sphere(world, o3, down, 0.05, 0.7, hit));
+    const double o6[3] = {0.1, 5.1, 0.22};
+    ASSERT_TRUE(cast_sphere(world, o6, down, 0.05, HUGE_VAL, hit));
+    EXPECT_EQ(hit.distance, 0.0);
+    // Bad input: refused, the output untouched.
+    int found = 7;
+    hit.distance = 9;
+    const double zero[3] = {0, 0, 0};
+    EXPECT_EQ(lfem_world_cast_sphere(world, o1, x_dir, -1, 1, lfem_query_filter_default(), &hit, &found),
+              LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_world_cast_sphere(world, o1, x_dir, NAN, 1, lfem_query_filter_default(), &hit, &found),
+              LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_world_cast_sphere(world, o1, zero, 0.1, 1, lfem_query_filter_default(), &hit, &found),
+              LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(lfem_world_cast_sphere(world, o1, x_dir, 0.1, 1, lfem_query_filter_default(), nullptr, &found),
+              LFEM_INVALID_ARGUMENT);
+    EXPECT_EQ(found, 7);
+    EXPECT_EQ(hit.distance, 9.0);
+}

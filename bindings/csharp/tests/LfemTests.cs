@@ -910,6 +910,12 @@ public static class LfemTests
             Close(0.2, o[0].Point.Z, 1e-12, "its top face");
             Close(0.05, o[0].Distance, 1e-12, "0.05 away");
             Equal(0, world.OverlapSphere(new Vec3(2, 0, 0.8), 0.29, filter).Length, "out of reach");
+            // A sphere of 0.1 cast along -x from x = 4 at the static sphere: it stops 4 - 2 - 0.5
+            // - 0.1 away, touching it at x = 2.5.
+            RayHit sh;
+            Check(world.CastSphere(new Vec3(4, 0, 0), new Vec3(-1, 0, 0), 0.1, double.PositiveInfinity, filter, out sh), "sphere cast hits");
+            Close(1.4, sh.Distance, 1e-12, "sphere cast distance");
+            Close(2.5, sh.Point.X, 1e-12, "the point touched");
             Equal(1u, filter.CategoryBits, "default category");
             Equal(0xFFFFFFFFu, filter.MaskBits, "default mask");
             RayHit hit;

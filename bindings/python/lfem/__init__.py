@@ -733,6 +733,19 @@ class World:
                                    ctypes.byref(hit))
         return out if hit.value == 1 else None
 
+    def cast_sphere(self, origin: npt.ArrayLike, direction: npt.ArrayLike, radius: float,
+                    max_distance: float = math.inf,
+                    filter: Optional[QueryFilter] = None) -> Optional[RayHit]:
+        """A sphere of radius swept along the ray: where it first touches a surface the filter
+        sees (distance: its centre's travel; point: the point touched; normal: from it towards
+        the centre), or None."""
+        o, d, m, flt = self._ray(origin, direction, max_distance, filter)
+        out, hit = RayHit(), ctypes.c_int()
+        native.lfem_world_cast_sphere(self.handle, _dptr(o), _dptr(d),
+                                      _convert.real(radius, "radius"), m, flt, ctypes.byref(out),
+                                      ctypes.byref(hit))
+        return out if hit.value == 1 else None
+
     def cast_ray_all(self, origin: npt.ArrayLike, direction: npt.ArrayLike,
                      max_distance: float = math.inf,
                      filter: Optional[QueryFilter] = None) -> np.ndarray:

@@ -139,6 +139,8 @@ _declare("lfem_body_get_skin_vertices_f32", _st, _vp, Body, _u32, _fp, _u32, _fp
 _declare("lfem_query_filter_default", QueryFilter)
 _declare("lfem_world_cast_ray", _st, _vp, _dp, _dp, _dbl, QueryFilter, _p(RayHit),
          _p(ctypes.c_int))
+_declare("lfem_world_cast_sphere", _st, _vp, _dp, _dp, _dbl, _dbl, QueryFilter, _p(RayHit),
+         _p(ctypes.c_int))
 _declare("lfem_world_cast_ray_all", _st, _vp, _dp, _dp, _dbl, QueryFilter, _vp, _u32, _up)
 _declare("lfem_world_overlap_capsule", _st, _vp, _dp, _dp, _dbl, QueryFilter, _vp, _u32, _up)
 _declare("lfem_world_overlap_box", _st, _vp, _dp, _dp, QueryFilter, _vp, _u32, _up)

@@ -830,6 +830,12 @@ class SkinsAndQueries(unittest.TestCase):
             self.assertAlmostEqual(o[0].point[2], 0.2, delta=1e-12)
             self.assertAlmostEqual(o[0].distance, 0.05, delta=1e-12)
             self.assertEqual(world.overlap_sphere((2, 0, 0.8), 0.29), [])
+            # A sphere of 0.1 cast along -x from x = 4 at the static sphere: it stops 4 - 2 - 0.5
+            # - 0.1 away, touching it at x = 2.5.
+            h = world.cast_sphere((4, 0, 0), (-1, 0, 0), 0.1)
+            self.assertIsNotNone(h)
+            self.assertAlmostEqual(h.distance, 1.4, delta=1e-12)
+            self.assertAlmostEqual(h.point[0], 2.5, delta=1e-12)
             with self.assertRaises(lfem.InvalidArgumentError):
                 world.overlap_sphere((2, 0, 0.8), -1.0)
             hit = world.cast_ray((0, 0, 0.3), (3, 0, 0))

@@ -697,6 +697,16 @@ extern "C" {
         out: *mut lfem_ray_hit,
         hit: *mut c_int,
     ) -> lfem_status;
+    pub fn lfem_world_cast_sphere(
+        world: *const lfem_world,
+        origin: *const c_double,
+        direction: *const c_double,
+        radius: c_double,
+        max_distance: c_double,
+        filter: lfem_query_filter,
+        out: *mut lfem_ray_hit,
+        hit: *mut c_int,
+    ) -> lfem_status;
     pub fn lfem_world_cast_ray_all(
         world: *const lfem_world,
         origin: *const c_double,

@@ -1672,6 +1672,35 @@ impl World {
         Ok(if hit == 1 { Some(out) } else { None })
     }
 
+    /// A sphere of `radius` swept along the ray: where it first touches a surface the filter
+    /// sees (`distance` its centre's travel, `point` the point touched, `normal` from it towards
+    /// the centre), or `None` (lfem_world_cast_sphere).
+    pub fn cast_sphere(
+        &self,
+        origin: [f64; 3],
+        direction: [f64; 3],
+        radius: f64,
+        max_distance: f64,
+        filter: QueryFilter,
+    ) -> Result<Option<RayHit>> {
+        let mut out = RayHit::default();
+        let mut hit = 0;
+        // SAFETY: 3 + 3 doubles; RayHit has the layout of lfem_ray_hit.
+        check(unsafe {
+            sys::lfem_world_cast_sphere(
+                self.ptr(),
+                origin.as_ptr(),
+                direction.as_ptr(),
+                radius,
+                max_distance,
+                filter.raw(),
+                &mut out as *mut RayHit as *mut sys::lfem_ray_hit,
+                &mut hit,
+            )
+        })?;
+        Ok(if hit == 1 { Some(out) } else { None })
+    }
+
     /// Every crossing along the ray, nearest first (lfem_world_cast_ray_all).
     pub fn cast_ray_all(&self, origin: [f64; 3], direction: [f64; 3], max_distance: f64, filter: QueryFilter) -> Result<Vec<RayHit>> {
         let call = |out: &mut [RayHit], count: &mut u32| {

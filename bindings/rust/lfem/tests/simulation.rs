@@ -632,6 +632,10 @@ fn rays_and_boxes_find_what_is_there() {
     assert_eq!(o[0].body, cube);
     assert!(close(o[0].point[2], 0.2, 1e-12) && close(o[0].distance, 0.05, 1e-12), "{:?}", o[0]);
     assert!(world.overlap_sphere([2.0, 0.0, 0.8], 0.29, filter).unwrap().is_empty());
+    // A sphere of 0.1 cast along -x from x = 4 at the static sphere: it stops 4 - 2 - 0.5 - 0.1
+    // away, touching it at x = 2.5.
+    let h = world.cast_sphere([4.0, 0.0, 0.0], [-1.0, 0.0, 0.0], 0.1, f64::INFINITY, filter).unwrap().unwrap();
+    assert!(close(h.distance, 1.4, 1e-12) && close(h.point[0], 2.5, 1e-12), "{:?}", h);
     assert_eq!(world.overlap_sphere([2.0, 0.0, 0.8], -1.0, filter).unwrap_err().status(), Status::InvalidArgument);
     let hit = world.cast_ray([0.0, 0.0, 0.3], [2.0, 0.0, 0.0], f64::INFINITY, filter).unwrap().unwrap();
     assert_eq!(hit.body, ground);
