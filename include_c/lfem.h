@@ -242,9 +242,10 @@ LFEM_API lfem_status lfem_body_set_friction(lfem_world* world, lfem_body body, d
 LFEM_API lfem_status lfem_body_set_damping(lfem_world* world, lfem_body body, double damping);
 /** A deformable body's Young's modulus (Pa, > 0) and Poisson's ratio (in (-1, 0.5)), as at
  * creation: its elastic forces at its current shape and its stable step follow (the step of the
- * next call with them), the change of strain energy is the caller's work, the body wakes. Not
- * under mass scaling (lfem_world_def.mass_scaling_step: the added masses were fitted to the
- * material): LFEM_INVALID_ARGUMENT. */
+ * next call with them), the change of strain energy is the caller's work, the body wakes. Under
+ * mass scaling (lfem_world_def.mass_scaling_step) its added masses are fitted to the new
+ * material as a body made of it would have them (its velocities kept: the change of kinetic
+ * energy is the caller's work too). */
 LFEM_API lfem_status lfem_body_set_material(lfem_world* world, lfem_body body, double young_modulus,
                                             double poisson_ratio);
 /** See lfem_body_set_friction. */

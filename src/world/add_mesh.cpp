@@ -87,6 +87,36 @@ void append_reference_tets(BodyReference& ref, uint32_t old_tets, bool composite
     }
 }
 
+}  // namespace
+
+// A deformable body's stable step and, under mass scaling, the mass that the tets which would
+// need a shorter step than the requested one get (all the body's, from their physical masses
+// again: the stable limit is then at least mass_scaling_step / step_safety); then the total
+// mass and the reference centre of mass. For a new mesh and a new material alike.
+void fit_step_and_masses(const Body& body, const WorldDef& def, BodyReference& ref, ThreadPool* pool) {
+    const uint32_t n = ref.node_count();
+    if (body.is_deformable() && def.mass_scaling_step > 0.0) {
+        std::vector<double> physical(n, 0.0);
+        add_lumped_mass(ref.tets.data(), ref.volume.data(), 0, ref.tet_count(), body.def.density, physical.data(),
+                        ref.nodes_per_tet);
+        ElementMesh mesh = element_mesh(ref);
+        mesh.mass = physical;
+        const double omega_target = 2.0 * def.step_safety / def.mass_scaling_step;
+        ref.stable_step =
+            2.0 / scale_masses_for_step(mesh, body.lame(), body.def.density, omega_target, ref.mass.data(), pool).omega_max;
+        ref.added_mass = 0.0;
+        for (uint32_t i = 0; i < n; ++i) ref.added_mass += ref.mass[i] - physical[i];
+    } else if (body.is_deformable()) {
+        ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame(), pool).omega_max;
+    }
+    ref.total_mass = 0.0;
+    for (double m : ref.mass) ref.total_mass += m;
+    const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
+    for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
+}
+
+namespace {
+
 // The body's reference with the new mesh appended, in the order of node_ordering.h (locality
 // of the element loop): everything from here on sees the reordered mesh, the caller its own
 // numbering. The reordered copies go as soon as they are appended (peak memory).
@@ -113,27 +143,8 @@ BodyReference append_reference(const Body& body, const double* positions, uint32
     // double, summed, or its moments about the origin, may not be (found by fuzz_api).
     require_finite_mass(ref.mass, ref.X);
     derive_reference_data(body, ref);
-    if (body.is_deformable() && def.mass_scaling_step > 0.0) {
-        // Mass for the tets that would need a shorter step than the requested one (all the
-        // body's, from their physical masses again): the stable limit is then at least
-        // mass_scaling_step / step_safety.
-        std::vector<double> physical(n, 0.0);
-        add_lumped_mass(ref.tets.data(), ref.volume.data(), 0, ref.tet_count(), body.def.density, physical.data(),
-                        nodes_per_tet);
-        ElementMesh mesh = element_mesh(ref);
-        mesh.mass = physical;
-        const double omega_target = 2.0 * def.step_safety / def.mass_scaling_step;
-        ref.stable_step =
-            2.0 / scale_masses_for_step(mesh, body.lame(), body.def.density, omega_target, ref.mass.data(), pool).omega_max;
-        ref.added_mass = 0.0;
-        for (uint32_t i = 0; i < n; ++i) ref.added_mass += ref.mass[i] - physical[i];
-    } else if (body.is_deformable()) {
-        ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame(), pool).omega_max;
-    }
-    ref.total_mass = 0.0;
-    for (double m : ref.mass) ref.total_mass += m;
-    const Vec3 C = center_of_mass(ref.mass.data(), ref.X.data(), n);
-    for (int k = 0; k < 3; ++k) ref.com[k] = C[k];
+    fit_step_and_masses(body, def, ref, pool);
+    const Vec3 C(ref.com);
     if (body.is_rigid()) {
         // The inertia of the lumped masses about the centre of mass, in the reference frame.
         const Mat3 I = inertia_tensor(ref.mass.data(), ref.X.data(), n, C);

@@ -158,6 +158,9 @@ inline ElementColouring colour_tets(const BodyReference& ref) {
 // The data derived from a body's reference (not saved in checkpoints): the element colouring,
 // the surface's node-triangle lists and, for a static body, the tree of its triangles.
 void derive_reference_data(const Body& body, BodyReference& ref);
+// The stable step, the masses (fitted to it under mass scaling), the total mass and the
+// reference centre of mass of a body's tets (add_mesh.cpp).
+void fit_step_and_masses(const Body& body, const WorldDef& def, BodyReference& ref, ThreadPool* pool);
 
 // ---- views for the kernels ---------------------------------------------------------------
 

@@ -4,6 +4,7 @@
 // filter change what it touched as well (its support may no longer hold it).
 #include "common/error.h"
 #include "fem/stable_step.h"
+#include "rigid/global_rotation.h"
 #include "world/world.h"
 
 namespace lfem {
@@ -21,32 +22,47 @@ void World::set_damping(BodyHandle handle, double damping) {
 }
 
 // A new material: the elastic forces at the nodes as they are, and the stable step that follows
-// (the Lanczos estimate of the body's highest frequency, as when its mesh was added). The
-// change of strain energy at the same shape is the caller's work.
+// (the Lanczos estimate of the body's highest frequency, as when its mesh was added). Under mass
+// scaling the added masses are fitted to the new material as they were to the old one (the
+// velocities kept: the mass changes, and so its momentum and kinetic energy). The change of
+// strain and kinetic energy at the same shape and velocities is the caller's work.
 void World::set_material(BodyHandle handle, double young_modulus, double poisson_ratio) {
     Body& body = bodies_.get(handle);
     if (!body.is_deformable()) throw Error(Status::invalid_argument, "a material belongs to a deformable body");
-    if (def_.mass_scaling_step > 0.0 && body.has_mesh())
-        throw Error(Status::invalid_argument, "under mass scaling a body keeps its material (its added masses were "
-                                              "fitted to it)");
-    const BodyDef was = body.def;
-    BodyState state = body.state;  // the candidate: all allocation before any change
-    double stable_step = body.ref.stable_step;
-    body.def.young_modulus = young_modulus, body.def.poisson_ratio = poisson_ratio;  // read by the kernels below
-    try {
-        if (body.has_mesh()) {
-            stable_step = 2.0 / estimate_stable_step(element_mesh(body.ref), body.lame(), pool_.get()).omega_max;
-            update_elastic_forces(body, state, pool_.get());
+    Body candidate;  // the new def and masses: all allocation before any change
+    candidate.def = body.def;
+    candidate.def.young_modulus = young_modulus, candidate.def.poisson_ratio = poisson_ratio;
+    candidate.ref = body.ref;
+    BodyState state = body.state;
+    std::vector<double> v;
+    double kinetic_before = 0.0, kinetic_after = 0.0;
+    if (body.has_mesh()) {
+        const uint32_t n = body.ref.node_count();
+        v.resize(3 * std::size_t(n));
+        synchronized_velocities(body, v.data());
+        fit_step_and_masses(candidate, def_, candidate.ref, pool_.get());
+        for (uint32_t i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) {
+                const double vk = v[3 * std::size_t(i) + k];
+                kinetic_before += 0.5 * body.ref.mass[i] * vk * vk;
+                kinetic_after += 0.5 * candidate.ref.mass[i] * vk * vk;
+            }
+        update_elastic_forces(candidate, state, pool_.get());
+        if (candidate.is_paper()) {  // eq. (2)'s angular momentum with the masses it now has
+            const Vec3 c = center_of_mass(candidate.ref.mass.data(), state.x.data(), n);
+            const Vec3 L = angular_momentum(candidate.ref.mass.data(), state.x.data(), v.data(), n, c);
+            for (int k = 0; k < 3; ++k) state.global.angular_momentum[k] = L[k];
         }
-        wake(handle.index);
-    } catch (...) {
-        body.def = was;
-        throw;
     }
+    wake(handle.index);
     // Nothing fails from here.
-    state_.counters.external_work += state.strain_energy - body.state.strain_energy;
+    state_.counters.external_work += state.strain_energy - body.state.strain_energy + kinetic_after - kinetic_before;
+    body.def = candidate.def;
     body.state = std::move(state);
-    body.ref.stable_step = stable_step;
+    body.ref.mass.swap(candidate.ref.mass);
+    body.ref.stable_step = candidate.ref.stable_step, body.ref.added_mass = candidate.ref.added_mass;
+    body.ref.total_mass = candidate.ref.total_mass;
+    for (int k = 0; k < 3; ++k) body.ref.com[k] = candidate.ref.com[k];
 }
 
 void World::set_sleep_allowed(BodyHandle handle, bool allowed) {
