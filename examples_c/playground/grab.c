@@ -53,7 +53,19 @@ int pg_grab_begin(pg_grab* grab, pg_room* room, const double origin[3], const do
     PG_TRY(lfem_world_cast_ray(room->world, origin, direction, HUGE_VAL, sees, &hit, &found));
     if (!found || hit.triangle == UINT32_MAX) return 0; /* nothing, or a shape: a wall, the floor */
     const pg_body* pb = pg_room_find(room, hit.body);
-    if (!pb || !pb->deformable) return 0;
+    if (!pb) return 0;
+    if (!pb->deformable) { /* the crate: kinematic while held, moved at the hand's velocity */
+        PG_TRY(lfem_body_set_type(room->world, hit.body, LFEM_BODY_KINEMATIC));
+        const double still[3] = {0, 0, 0};
+        PG_TRY(lfem_body_set_kinematic_velocity(room->world, hit.body, still, still));
+        grab->active = grab->rigid = 1;
+        grab->body = hit.body;
+        grab->node_count = 0;
+        memcpy(grab->point, hit.point, sizeof grab->point);
+        v3_set(grab->last_move, 0, 0, 0);
+        memcpy(grab->plane_normal, forward, sizeof grab->plane_normal);
+        return 1;
+    }
     uint32_t node_count = 0;
     PG_TRY(lfem_body_get_node_count(room->world, hit.body, &node_count));
     uint32_t* nodes = (uint32_t*)malloc(sizeof(uint32_t) * node_count);
@@ -68,6 +80,7 @@ int pg_grab_begin(pg_grab* grab, pg_room* room, const double origin[3], const do
     free(nodes);
     PG_TRY(s);
     grab->active = 1;
+    grab->rigid = 0;
     grab->body = hit.body;
     grab->node_count = (uint32_t)held;
     memcpy(grab->point, hit.point, sizeof grab->point);
@@ -76,8 +89,22 @@ int pg_grab_begin(pg_grab* grab, pg_room* room, const double origin[3], const do
     return 1;
 }
 
+/* The lowest point of a body's nodes (m), into *z. */
+static int lowest(const lfem_world* world, lfem_body body, double* z) {
+    uint32_t n = 0;
+    PG_TRY(lfem_body_get_node_count(world, body, &n));
+    double* x = (double*)malloc(sizeof(double) * 3 * n);
+    if (!x) return -1;
+    const lfem_status s = lfem_body_get_positions(world, body, x, n);
+    *z = HUGE_VAL;
+    for (uint32_t i = 0; i < n; ++i) *z = fmin(*z, x[3 * i + 2]);
+    free(x);
+    PG_TRY(s);
+    return 0;
+}
+
 int pg_grab_drag(pg_grab* grab, pg_room* room, const double origin[3], const double direction[3],
-                 double max_move) {
+                 double max_move, double dt) {
     if (!grab->active) return 0;
     const double along = v3_dot(direction, grab->plane_normal);
     if (along < 1e-3) return 0; /* the cursor's ray runs (nearly) in the plane: stay */
@@ -92,8 +119,20 @@ int pg_grab_drag(pg_grab* grab, pg_room* room, const double origin[3], const dou
     const double length = kFollow * v3_length(move);
     if (length > 0) v3_add_scaled(grab->point, fmin(length, max_move) / v3_length(move), move, target);
     if (target[2] < 0.02) target[2] = 0.02; /* never drag nodes into the floor */
-    double frame[7] = {target[0], target[1], target[2], 1, 0, 0, 0};
-    PG_TRY(lfem_attachment_set_frame(room->world, grab->attachment, frame));
+    if (grab->rigid) {
+        /* A kinematic body passes through the static floor: its lowest node stays above it. */
+        double low = 0;
+        if (lowest(room->world, grab->body, &low) != 0) return -1;
+        if (low + target[2] - grab->point[2] < 0.002) target[2] = grab->point[2] + 0.002 - low;
+        double v[3];
+        const double still[3] = {0, 0, 0};
+        v3_sub(target, grab->point, v);
+        for (int k = 0; k < 3; ++k) v[k] /= dt;
+        PG_TRY(lfem_body_set_kinematic_velocity(room->world, grab->body, v, still));
+    } else {
+        double frame[7] = {target[0], target[1], target[2], 1, 0, 0, 0};
+        PG_TRY(lfem_attachment_set_frame(room->world, grab->attachment, frame));
+    }
     v3_sub(target, grab->point, grab->last_move);
     memcpy(grab->point, target, sizeof grab->point);
     return 0;
@@ -102,7 +141,9 @@ int pg_grab_drag(pg_grab* grab, pg_room* room, const double origin[3], const dou
 int pg_grab_release(pg_grab* grab, pg_room* room, double velocity[3]) {
     if (!grab->active) return 0;
     grab->active = 0;
-    if (lfem_attachment_is_valid(room->world, grab->attachment))
+    if (grab->rigid) /* rigid again, at the velocity it was carried with (the throw) */
+        PG_TRY(lfem_body_set_type(room->world, grab->body, LFEM_BODY_RIGID));
+    else if (lfem_attachment_is_valid(room->world, grab->attachment))
         PG_TRY(lfem_attachment_destroy(room->world, grab->attachment));
     if (velocity) {
         double momentum[3], mass = 0;

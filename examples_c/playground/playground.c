@@ -1,9 +1,11 @@
 /* playground: an interactive lfem scene in a window (SDL2 + OpenGL). Soft jelly bodies, a
- * rigid crate and static shapes in a room; grab a soft body with the mouse and throw it.
+ * rigid crate with a soft tail held to it by springs, and static shapes in a room; grab a soft
+ * body or the crate with the mouse and throw it.
  *
  *   playground [--threads N]                    play (see the HUD for the controls)
  *   playground --headless N out.png [--blank]   N frames offscreen (under xvfb-run), a
- *                                                scripted grab and throw, the last frame
+ *                                                scripted grab and throw, a reset, the crate
+ *                                                lifted with its tail, the last frame
  *                                                written as out.png, the HUD's figures printed
  *
  * The physics runs as a game's does: lfem_world_step(world, 1/60) once per 60 Hz tick of a
@@ -86,7 +88,7 @@ static int tick(app* a) {
     if (a->grab.active) {
         double origin[3], direction[3];
         camera_ray(&a->camera, a->mouse[0], a->mouse[1], origin, direction);
-        if (pg_grab_drag(&a->grab, &a->room, origin, direction, kMaxMove) != 0) return -1;
+        if (pg_grab_drag(&a->grab, &a->room, origin, direction, kMaxMove, kTick) != 0) return -1;
     }
     lfem_world_stats ws;
     const double t0 = now_seconds();
@@ -119,6 +121,9 @@ static int draw_frame(app* a, int hud) {
  * lifts it for kLiftFrames ticks, swings it right for kSwingFrames and lets go; at kResetFrame
  * the room is reset (teleports), and every body must then be where it was built, at rest. */
 enum { kPressFrame = 40, kLiftFrames = 30, kSwingFrames = 20, kResetFrame = 105 };
+/* Then the crate is grabbed (made kinematic) and lifted for kCrateLift ticks and let go: the soft
+ * tail held to it by springs must come along. */
+enum { kCratePress = 107, kCrateLift = 8 };
 
 static int check_reset(app* a, int frame) {
     if (reset(a) != 0) return -1;
@@ -152,9 +157,40 @@ static int body_centre(const pg_room* room, lfem_body body, double centre[3]) {
 /* 0 to 1 with zero speed at both ends, as a hand moves. */
 static double ease(double u) { return u * u * (3 - 2 * u); }
 
+/* The crate's part of the script. */
+static int crate_script(app* a, int frame) {
+    static double start_y, crate0[3], tail0[3];
+    const lfem_body crate = a->room.bodies[4].body, tail = a->room.bodies[5].body;
+    if (frame == kCratePress) {
+        if (body_centre(&a->room, crate, crate0) != 0 || body_centre(&a->room, tail, tail0) != 0 ||
+            !camera_project(&a->camera, crate0, &a->mouse[0], &a->mouse[1]))
+            return -1;
+        start_y = a->mouse[1];
+        if (press(a, a->mouse[0], a->mouse[1]) != 0) return -1;
+        printf("grab: frame %d: %s\n", frame, a->grab.active && a->grab.rigid ? "the crate, made kinematic" : "not the crate");
+        return a->grab.active && a->grab.rigid ? 0 : -1;
+    }
+    const int k = frame - kCratePress;
+    if (k > 0 && k <= kCrateLift) a->mouse[1] = start_y - 0.2 * a->camera.height * ease((double)k / kCrateLift);
+    if (k != kCrateLift + 1) return 0;
+    if (release(a) != 0) return -1;
+    lfem_body_type type = LFEM_BODY_KINEMATIC;
+    double crate1[3], tail1[3];
+    if (lfem_body_get_type(a->room.world, crate, &type) != LFEM_OK || body_centre(&a->room, crate, crate1) != 0 ||
+        body_centre(&a->room, tail, tail1) != 0)
+        return -1;
+    const double rose = crate1[2] - crate0[2], tail_rose = tail1[2] - tail0[2];
+    printf("crate: frame %d, lifted %.3f m and let go (%s again); the tail held to it rose %.3f m\n", frame, rose,
+           type == LFEM_BODY_RIGID ? "rigid" : "not rigid", tail_rose);
+    /* The hand lifts it by tens of centimetres in 8 ticks; a tail the springs did not carry
+     * would lie on the floor (0 m): a tenth of the crate's rise tells the two apart. */
+    return rose > 0.02 && tail_rose > 0.1 * rose && type == LFEM_BODY_RIGID ? 0 : -1;
+}
+
 static int script(app* a, int frame) {
     static double start[2];
     if (frame == kResetFrame) return check_reset(a, frame);
+    if (frame >= kCratePress) return crate_script(a, frame);
     const double lift = 0.30 * a->camera.height, swing = 0.22 * a->camera.width;
     if (frame == kPressFrame) {
         double centre[3];

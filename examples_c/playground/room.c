@@ -172,7 +172,21 @@ static int build_bodies(pg_room* room) {
     crate.friction = 0.5;
     const double crate_at[3] = {0.9, -0.6, 0.02}, crate_size[3] = {0.35, 0.35, 0.35};
     const uint32_t crate_cells[3] = {2, 2, 2};
-    return add_box_body(room, &crate, crate_at, crate_size, crate_cells, 0.02, 6, 0.65, 0.50, 0.35);
+    if (add_box_body(room, &crate, crate_at, crate_size, crate_cells, 0.02, 6, 0.65, 0.50, 0.35) != 0) return -1;
+    /* A soft tail beside the crate, held to it by four points inside its near end on springs
+     * (an attachment at points, compliant, to a rigid body): drag the crate and it follows. */
+    const double tail_at[3] = {1.27, -0.485, 0.02}, tail_size[3] = {0.45, 0.12, 0.12};
+    const uint32_t tail_cells[3] = {6, 2, 2};
+    if (add_box_body(room, &jelly, tail_at, tail_size, tail_cells, 0.04, 8, 0.30, 0.55, 0.90) != 0) return -1;
+    const double points[12] = {1.285, -0.46, 0.05, 1.285, -0.39, 0.05, 1.285, -0.46, 0.11, 1.285, -0.39, 0.11};
+    lfem_attachment_def hold = lfem_attachment_def_default();
+    hold.body = room->bodies[room->body_count - 1].body;
+    hold.target = room->bodies[room->body_count - 2].body;
+    hold.points = points, hold.point_count = 4;
+    hold.stiffness = 2000, hold.damping = 10;
+    lfem_attachment held;
+    PG_TRY(lfem_attachment_create(room->world, &hold, &held));
+    return 0;
 }
 
 /* Each body's nodes as built, for pg_room_reset. */
