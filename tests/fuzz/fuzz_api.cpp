@@ -770,8 +770,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             Buffer<uint32_t> tri(3 * std::size_t(capacity));
             uint32_t sizes[2] = {0xA5A5A5A5u, 0xA5A5A5A5u};
             lfem_status st;
-            const uint32_t which = in.below(6);
-            switch (which) {
+            switch (in.below(5)) {
                 case 0:
                     st = lfem_body_get_skin_vertices(w, b, skin, arg(s, 0, p.data()), f & 1 ? nrm.data() : nullptr,
                                                      capacity);
@@ -824,7 +823,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             Buffer<lfem_overlap> overlaps(capacity);
             uint32_t count = 0xA5A5A5A5u;
             lfem_status st;
-            const uint32_t which = in.below(5);
+            const uint32_t which = in.below(6);
             switch (which) {
                 case 0: {
                     int hit = 2;
