@@ -193,6 +193,12 @@ void World::build_links(double fraction, double h) {
         const bool body_target = a.target != kFrameTarget;
         const bool rigid = body_target && bodies_.slot(a.target).is_rigid();
         const double kappa = a.stiffness > 0.0 ? a.stiffness + a.damping / h : 0.0;
+        // The held body's x^n: its predictor's record when it is stepped; a sleeping body (or
+        // one not stepped since a checkpoint was loaded) stands where it is.
+        const Body& body = bodies_.slot(a.body);
+        const std::vector<double>& recorded = pipeline_.bodies[a.body].start.x;
+        const double* held_start =
+            !body.state.asleep && recorded.size() == body.state.x.size() ? recorded.data() : body.state.x.data();
         for (uint32_t k = 0; k < a.point_count(); ++k) {
             LinkRecord l;
             l.body_a = a.body;
@@ -209,7 +215,7 @@ void World::build_links(double fraction, double h) {
             if (kappa > 0.0) {
                 l.compliance = 1.0 / kappa;
                 l.start_share = a.damping / h / kappa;
-                const Vec3 r0 = weighted(l.held, pipeline_.bodies[a.body].start.x.data()) - Vec3(&a.target_end[3 * std::size_t(k)]);
+                const Vec3 r0 = weighted(l.held, held_start) - Vec3(&a.target_end[3 * std::size_t(k)]);
                 for (int d = 0; d < 3; ++d) l.r0[d] = r0[d];
             }
             links.push_back(l);
@@ -222,7 +228,7 @@ void World::build_links(double fraction, double h) {
 Vec3 World::link_target_end(const LinkRecord& l) const {
     const Vec3 t(l.target);
     if (l.target_nodes.count > 0) return weighted(l.target_nodes, bodies_.slot(l.body_b).state.x.data());
-    if (l.body_b == UINT32_MAX) return t;
+    if (l.body_b == UINT32_MAX || bodies_.slot(l.body_b).state.asleep) return t;  // (a sleeping body: no correction)
     const RigidResponse& r = pipeline_.bodies[l.body_b].rigid;
     return t + r.dc + r.dtheta.cross(t - r.center);
 }

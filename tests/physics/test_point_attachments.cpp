@@ -331,3 +331,46 @@ TEST(PointAttachments, BadInputIsRefusedAndChangesNothing) {
     EXPECT_EQ(fingerprint(w, {cube, other}), before);
     ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);  // and no attachment acts: both fall freely
 }
+
+// A body held by a spring that fell asleep, saved and loaded: the loaded world has stepped
+// nothing yet, and its first call builds the spring's link from where the sleeping body stands
+// (not from a predictor's record it does not have); it stays asleep and unmoved, bit for bit.
+TEST(PointAttachments, ASleepingSpringHeldBodyLoadsAndSteps) {
+    if (!LFEM_WITH_IO) GTEST_SKIP() << "built without checkpoint files (LFEM_WITH_IO=OFF)";
+    lfem_world_def wd = lfem_world_def_default();
+    wd.enable_sleep = 1;
+    World w(wd);
+    Mesh m;
+    const lfem_body cube = stiff_cube(w, m, -0.1, 40.0);
+    Hold h;
+    h.points = {0.0, 0.0, -0.01};
+    h.stiffness = 2000, h.damping = 2.0 * std::sqrt(2000.0 * 1.1);
+    attach(w, cube, h);
+    int calls = 0;
+    while (lfem_body_is_awake(w, cube) == 1 && calls < 600) {
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK) << lfem_last_error();
+        ++calls;
+    }
+    ASSERT_EQ(lfem_body_is_awake(w, cube), 0) << "not asleep after " << calls << " calls";
+    const std::string path = ::testing::TempDir() + "lfem_sleeping_spring.ckpt";
+    ASSERT_EQ(lfem_world_save(w, path.c_str()), LFEM_OK) << lfem_last_error();
+    lfem_world* loaded = nullptr;
+    ASSERT_EQ(lfem_world_load(path.c_str(), &loaded), LFEM_OK) << lfem_last_error();
+    std::remove(path.c_str());
+    const std::vector<double> x0 = positions(loaded, cube);
+    for (int i = 0; i < 3; ++i) {
+        ASSERT_EQ(lfem_world_step(loaded, 1.0 / 60), LFEM_OK) << lfem_last_error();
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    }
+    EXPECT_EQ(positions(loaded, cube), x0);
+    EXPECT_EQ(lfem_body_is_awake(loaded, cube), 0);
+    // Woken, the loaded world steps on as the saved one.
+    ASSERT_EQ(lfem_body_wake(loaded, cube), LFEM_OK);
+    ASSERT_EQ(lfem_body_wake(w, cube), LFEM_OK);
+    for (int i = 0; i < 3; ++i) {
+        ASSERT_EQ(lfem_world_step(loaded, 1.0 / 60), LFEM_OK) << lfem_last_error();
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60), LFEM_OK);
+    }
+    EXPECT_EQ(fingerprint(w, {cube}), fingerprint(loaded, {cube}));
+    lfem_world_destroy(loaded);
+}
