@@ -58,6 +58,24 @@ double start_as(BodyKind type, BodyReference& ref, BodyState& state, Vec3& V, Ve
 
 }  // namespace
 
+// The offsets of the attachments held in this body's frame, from its frame (c_was, q_was) to the
+// one it has now (a static body's is turned to the identity about its centre): the points they
+// hold to stay where they are.
+void World::reframe_attachments(uint32_t slot, const Vec3& c_was, const Quat& q_was) {
+    const Body& body = bodies_.slot(slot);
+    const Vec3 c(body.state.global.center);
+    const Mat3 R_was = q_was.toRotationMatrix();
+    const Mat3 Rt = load_quaternion(body.state.global.rotation).normalized().toRotationMatrix().transpose();
+    for (Attachment& a : state_.attachments.slots) {
+        if (a.generation == 0 || a.target != slot || a.target_nodes_per_point > 0) continue;
+        for (std::size_t k = 0; k < a.offsets.size(); k += 3) {
+            const Vec3 p = c_was + R_was * Vec3(&a.offsets[k]);
+            const Vec3 local = Rt * (p - c);
+            for (int d = 0; d < 3; ++d) a.offsets[k + d] = local[d];
+        }
+    }
+}
+
 void World::set_type(BodyHandle handle, BodyKind type) {
     Body& body = bodies_.get(handle);
     if (body.def.type == type) return;
@@ -84,6 +102,8 @@ void World::set_type(BodyHandle handle, BodyKind type) {
     candidate.def.type = type;
     BodyReference ref = body.ref;
     BodyState state = body.state;
+    const Vec3 c_was(body.state.global.center);
+    const Quat q_was = load_quaternion(body.state.global.rotation).normalized();
     const double kinetic_after = start_as(type, ref, state, V, omega);
     for (int k = 0; k < 3; ++k) candidate.def.linear_velocity[k] = V[k], candidate.def.angular_velocity[k] = omega[k];
     derive_reference_data(candidate, ref);  // a static body's tree and face normals, or none
@@ -93,6 +113,7 @@ void World::set_type(BodyHandle handle, BodyKind type) {
     body.def = candidate.def;
     body.ref = std::move(ref);
     body.state = std::move(state);
+    reframe_attachments(handle.index, c_was, q_was);
     state_.counters.external_work += kinetic_after - kinetic_before;
     state_.counters.scan_overlaps = true;
     body.geometry_revision += 1;  // the contact candidates and the queries' boxes are made anew

@@ -270,6 +270,7 @@ private:
     void finish_attachment_frames();
     void drop_call_forces();
     void drop_attachments_of(uint32_t slot);
+    void reframe_attachments(uint32_t slot, const Vec3& c_was, const Quat& q_was);
     // teleport.cpp
     void place_deformable(BodyHandle body, const double* x, const Quat& turn);
     void end_contacts_of(uint32_t slot);
