@@ -242,8 +242,11 @@ void World::take_link_forces(double h) {
         Vec3 total = Vec3::Zero();
         for (uint32_t k = 0; k < a.point_count(); ++k, ++next) {
             const LinkRecord& l = pipeline_.links[next];
-            const Vec3 end = link_target_end(l);
-            for (int d = 0; d < 3; ++d) a.lambda[3 * std::size_t(k) + d] = l.lambda[d], a.target_end[3 * std::size_t(k) + d] = end[d];
+            for (int d = 0; d < 3; ++d) a.lambda[3 * std::size_t(k) + d] = l.lambda[d];
+            if (l.start_share > 0.0) {  // only a damper reads where its target was left
+                const Vec3 end = link_target_end(l);
+                for (int d = 0; d < 3; ++d) a.target_end[3 * std::size_t(k) + d] = end[d];
+            }
             total += Vec3(l.lambda);
         }
         for (int d = 0; d < 3; ++d) a.force[d] = total[d];

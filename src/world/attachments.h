@@ -34,7 +34,8 @@ struct Attachment {
                                      // (unused for a deformable target)
     std::vector<double> lambda;      // 3 per point: the last multipliers (N), the next warm start
     std::vector<double> target_end;  // 3 per point: the target point where the last sub-step
-                                     // left it (the damper's start of the next)
+                                     // left it (the damper's start of the next; kept only for
+                                     // a damped spring)
     double stiffness = 0;            // N/m per point and axis; 0: rigid
     double damping = 0;              // N s/m per point and axis (with a stiffness)
     double frame_start[7] = {0, 0, 0, 1, 0, 0, 0};  // the caller's frame (centre, quaternion
