@@ -1,6 +1,35 @@
 #include "contact/constraint_pair.h"
 
 namespace lfem {
+namespace {
+
+// The inverse effective mass along the normal of side [first, end) of q, added to H term by
+// term (the order of the sums is the order of the points). Two weights on one rigid body add
+// up before squaring: the exact block is (sum w_k J_k) M^-1 (sum w_k J_k)^T; with the centre
+// and arm of a weighted point of a rigid body, it is the response at that point.
+// `sign`: the side's sign (+1 for body_a's, -1 for body_b's), which makes its weights positive.
+void add_side_response(ConstraintPair& q, int first, int end, const RigidResponse* rigid, double sign) {
+    if (rigid) {
+        Vec3 arm = Vec3::Zero();
+        for (int v = first; v < end; ++v) arm += (sign * q.w[v]) * q.point[v].arm();
+        q.H += rigid_response(*rigid, arm, q.n);
+        return;
+    }
+    for (int v = first; v < end; ++v) q.H += q.w[v] * q.w[v] * q.point[v].response(q.n);
+}
+
+// body_b's side as one immovable point (a shape's surface point, or the weighted point of a
+// static triangle or edge), at index i.
+void set_fixed_point(ConstraintPair& q, int i, double* end, const double* start) {
+    q.point[i] = PointRef{};
+    q.point[i].x = end;  // never written: its move is 0
+    q.point[i].x0 = start;
+    q.w[i] = -1.0;
+    q.points = uint8_t(i + 1);
+    q.fixed = true;
+}
+
+}  // namespace
 
 ConstraintPair make_constraint_pair(const ContactBody& a, const ContactBody& b, const ContactRecord& r,
                                     double* fixed) {
@@ -10,66 +39,65 @@ ConstraintPair make_constraint_pair(const ContactBody& a, const ContactBody& b, 
     q.lambda_n = r.lambda_n;
     q.lambda_t = Vec3(r.lambda_t);
     q.sliding = r.sliding;
-    q.point[0] = point_of(a, r.node);
-    q.N[0] = 1.0 - r.t1 - r.t2;
-    q.N[1] = r.t2;
-    q.N[2] = r.t1;
-    q.H = q.point[0].response(q.n);
+    // body_a's side: the node, or an edge's or a face's nodes with their weights.
+    if (r.kind == ContactKind::node_face) {
+        q.point[0] = point_of(a, r.node);
+        q.w[0] = 1.0;
+        q.a_points = 1;
+    } else {
+        q.a_points = r.kind == ContactKind::edge_edge ? 2 : 3;
+        for (int i = 0; i < q.a_points; ++i) q.point[i] = point_of(a, r.nodes_a[i]), q.w[i] = r.weights_a[i];
+    }
+    const int na = q.a_points;
+    const double N[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
+    const int nb = r.kind == ContactKind::edge_edge ? 2 : 3;
+    q.H = 0.0;
+    add_side_response(q, 0, na, a.rigid, 1.0);
     if (r.shape != UINT32_MAX) {
         // A rigid shape: one immovable point, the touched surface point, moving with the
         // shape from its start to its end position (friction slips relative to it). The record
         // lends it (its point_end, point_start), and outlives the solve.
-        q.N[0] = 1.0, q.N[1] = q.N[2] = 0.0;
-        q.point[1].x = const_cast<double*>(r.point_end);  // never written: its move is 0
-        q.point[1].x0 = r.point_start;
-        q.points = 2;
+        set_fixed_point(q, na, const_cast<double*>(r.point_end), r.point_start);
     } else if (!is_movable(b)) {
-        // A triangle of a static or kinematic body (or of a sleeping one): the solve cannot
-        // move it, so its point sum N_k x_k is taken once, not in every sweep, and the pair is
-        // a node against one immovable point, as against a shape.
+        // A triangle (or an edge) of a static or kinematic body (or of a sleeping one): the
+        // solve cannot move it, so its point sum N_k x_k is taken once, not in every sweep, and
+        // the pair is against one immovable point, as against a shape.
         Vec3 end = Vec3::Zero(), start = Vec3::Zero();
-        for (int v = 0; v < 3; ++v) {
-            end += q.N[v] * Vec3(b.x + 3 * std::size_t(r.triangle[v]));
-            start += q.N[v] * Vec3(b.x_start + 3 * std::size_t(r.triangle[v]));
+        for (int v = 0; v < nb; ++v) {
+            end += N[v] * Vec3(b.x + 3 * std::size_t(r.triangle[v]));
+            start += N[v] * Vec3(b.x_start + 3 * std::size_t(r.triangle[v]));
         }
         for (int k = 0; k < 3; ++k) fixed[k] = end[k], fixed[3 + k] = start[k];
-        q.N[0] = 1.0, q.N[1] = q.N[2] = 0.0;
-        q.point[1].x = fixed;
-        q.point[1].x0 = fixed + 3;
-        q.points = 2;
+        set_fixed_point(q, na, fixed, fixed + 3);
     } else {
-        for (int v = 0; v < 3; ++v) {
-            q.point[v + 1] = point_of(b, r.triangle[v]);
-            q.H += q.N[v] * q.N[v] * q.point[v + 1].response(q.n);
-        }
-        // Two weights on one rigid body add up before squaring: the exact block is
-        // (sum N_k J_k) M^-1 (sum N_k J_k)^T; with the centre and arm of a barycentric
-        // point of a rigid triangle, it is the response at that point.
-        if (b.rigid) {
-            Vec3 arm = Vec3::Zero();
-            for (int v = 0; v < 3; ++v) arm += q.N[v] * q.point[v + 1].arm();
-            q.H = q.point[0].response(q.n) + rigid_response(*b.rigid, arm, q.n);
-        }
+        for (int v = 0; v < nb; ++v) q.point[na + v] = point_of(b, r.triangle[v]), q.w[na + v] = -N[v];
+        q.points = uint8_t(na + nb);
+        add_side_response(q, na, na + nb, b.rigid, -1.0);
     }
-    q.rigid = a.rigid != nullptr || (q.points == 4 && b.rigid != nullptr);
-    q.start = Vec3(q.point[0].x0);
-    Vec3 predicted(q.point[0].x);  // x*: a rigid point's x is its prediction
+    q.rigid = a.rigid != nullptr || (!q.fixed && b.rigid != nullptr);
+    q.start = q.w[0] * Vec3(q.point[0].x0);
+    Vec3 predicted = q.w[0] * Vec3(q.point[0].x);  // x*: a rigid point's x is its prediction
     for (int v = 1; v < q.points; ++v) {
-        q.start -= q.N[v - 1] * Vec3(q.point[v].x0);
-        predicted -= q.N[v - 1] * Vec3(q.point[v].x);
+        q.start += q.w[v] * Vec3(q.point[v].x0);
+        predicted += q.w[v] * Vec3(q.point[v].x);
     }
     q.approach = q.n.dot(q.start - predicted);
-    q.move[0] = q.point[0].rigid ? 0.0 : q.point[0].w;
-    for (int v = 1; v < q.points; ++v) q.move[v] = q.point[v].rigid ? 0.0 : q.N[v - 1] * q.point[v].w;
+    for (int v = 0; v < q.points; ++v) q.move[v] = q.point[v].rigid ? 0.0 : q.w[v] * q.point[v].w;
     q.mu = pair_friction(a.friction, b.friction);
     return q;
 }
 
 double apply_general(ConstraintPair& q, const Vec3& d) {
-    double largest = q.point[0].push(d);
-    for (int v = 1; v < q.points; ++v)
-        if (q.N[v - 1] != 0.0) largest = std::max(largest, q.point[v].push(-q.N[v - 1] * d));
+    double largest = 0.0;
+    for (int v = 0; v < q.points; ++v)
+        if (q.w[v] != 0.0) largest = std::max(largest, q.point[v].push(q.w[v] * d));
     return largest;
+}
+
+Vec3 side_a_point(const ConstraintPair& q) {
+    Vec3 p = q.w[0] * q.point[0].position();
+    for (int v = 1; v < q.a_points; ++v) p += q.w[v] * q.point[v].position();
+    return p;
 }
 
 // The node's distance from the plane of the triangle where its corners are now. The constraint
@@ -78,10 +106,11 @@ double apply_general(ConstraintPair& q, const Vec3& d) {
 // leaves the node off its new plane by the turn times the node's distance from the corner. The
 // next step allows the pair that depth and makes it up (detect_node_triangle.cpp,
 // kept_offset); measured along the old normal, the miss grew unseen, step after step, until the
-// node was deeper than the pair had been left and was dropped. A shape's surface point or an
-// immovable triangle's: along the normal (gap_after).
+// node was deeper than the pair had been left and was dropped. A shape's surface point, an
+// immovable triangle's, and the features (an edge's point, a face's against a shape): along the
+// normal (gap_after).
 double plane_gap(const ConstraintPair& q, double gap_after) {
-    if (q.fixed()) return gap_after;  // a plane that does not turn: the gap along the normal
+    if (q.fixed || q.a_points != 1 || q.points != 4) return gap_after;
     const Vec3 a = q.point[1].position();
     const Vec3 plane = (q.point[2].position() - a).cross(q.point[3].position() - a);
     const double area2 = plane.norm();

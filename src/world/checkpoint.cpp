@@ -24,7 +24,7 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 12; // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 13; // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
@@ -34,7 +34,8 @@ constexpr uint32_t kFormatVersion = 12; // 2: thread_count in the def, float tet
                                         // definitions field by field, no Lame parameters
                                         // (derived from the body's def); 11: a body's
                                         // report_contacts; 12: forces for the next
-                                        // call, a body's user id
+                                        // call, a body's user id; 13: the contacts'
+                                        // kinds (edges, faces against shapes)
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -46,7 +47,7 @@ static_assert(sizeof(BodyReference) == 720,  // colouring, node-triangle lists, 
 static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
 static_assert(sizeof(Attachment) == 360, "Attachment changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
-static_assert(sizeof(ContactRecord) == 184, "ContactRecord changed: update the checkpoint");
+static_assert(sizeof(ContactRecord) == 224, "ContactRecord changed: update the checkpoint");
 static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
 static_assert(sizeof(Skin) == 80, "Skin changed: update the checkpoint");
 #endif
@@ -150,7 +151,7 @@ template <class A, class C>
 void contact_fields(A& a, C& c) {
     a(c.body_a), a(c.node), a(c.body_b), a(c.triangle), a(c.shape), a(c.point_start);
     a(c.point_end), a(c.t1), a(c.t2), a(c.normal), a(c.lambda_n), a(c.lambda_t), a(c.offset);
-    a(c.gap_after), a(c.plane_gap), a(c.sliding), a(c.gentle);
+    a(c.gap_after), a(c.plane_gap), a(c.sliding), a(c.gentle), a(c.kind), a(c.nodes_a), a(c.weights_a);
 }
 
 template <class A, class S>
@@ -308,11 +309,15 @@ void check_image(const WorldImage& im, const std::string& path) {
         if (!ok) fail(path, "a contact names a missing body");
         const Body& a = im.bodies[c.body_a];
         const Body& b = im.bodies[c.body_b];
-        bool in_range = c.node < a.ref.node_count();
+        const bool feature = c.kind == ContactKind::edge_edge || c.kind == ContactKind::face_shape;
+        bool in_range = feature ? c.node == kFeatureNode : c.kind == ContactKind::node_face && c.node < a.ref.node_count();
+        if (feature)
+            for (uint32_t v : c.nodes_a) in_range = in_range && v < a.ref.node_count();
         if (c.shape == UINT32_MAX)
             for (uint32_t v : c.triangle) in_range = in_range && v < b.ref.node_count();
         else
             in_range = in_range && c.shape < b.shapes.size();
+        in_range = in_range && (c.kind == ContactKind::face_shape) == (feature && c.shape != UINT32_MAX);
         if (!in_range) fail(path, "a contact index is out of range");
     }
     auto live = [&](uint32_t slot, uint32_t generation) {
