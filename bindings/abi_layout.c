@@ -158,7 +158,8 @@ CHECK_OFFSET(lfem_contact, position, 48);
 CHECK_OFFSET(lfem_contact, normal, 72);
 CHECK_OFFSET(lfem_contact, force, 96);
 CHECK_OFFSET(lfem_contact, sliding, 120);
-CHECK_OFFSET(lfem_contact, padding, 121);
+CHECK_OFFSET(lfem_contact, kind, 121);
+CHECK_OFFSET(lfem_contact, padding, 122);
 CHECK_OFFSET(lfem_contact, shape, 124);
 
 CHECK_SIZE(lfem_attachment_def, 128);

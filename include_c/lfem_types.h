@@ -31,7 +31,7 @@ extern "C" {
 #endif
 
 #define LFEM_VERSION_MAJOR 0 /**< this header's version; lfem_version() gives the library's */
-#define LFEM_VERSION_MINOR 3 /**< this header's minor version */
+#define LFEM_VERSION_MINOR 4 /**< this header's minor version */
 #define LFEM_VERSION_PATCH 0 /**< this header's patch version */
 
 /* ---------------------------------------------------------------------------------------- */
@@ -432,12 +432,23 @@ LFEM_API lfem_shape_def lfem_shape_def_default(void);
 /** \addtogroup contacts Contacts
  * @{ */
 
+/** What a contact record joins (lfem_contact::kind). */
+typedef enum lfem_contact_kind {
+    LFEM_CONTACT_NODE_FACE = 0,  /**< a node of body_a against a triangle of body_b */
+    LFEM_CONTACT_NODE_SHAPE = 1, /**< a node of body_a against a rigid shape of body_b */
+    LFEM_CONTACT_FACE_SHAPE = 2  /**< a rigid shape of body_b poking into a boundary triangle of
+                                      body_a between its nodes: `node` is the triangle's first
+                                      corner, `position` the shape's point, `normal` out of the
+                                      shape, `force` on the face's point (its three nodes share
+                                      it); triangle[] is UINT32_MAX as for a node on a shape */
+} lfem_contact_kind;
+
 /** One active node-to-triangle contact of the last step (src/DESIGN.md section 5, eqs. 4 to 7). The contact
  * point on body_b's triangle (a, b, c) is (1 - t1 - t2) a + t2 b + t1 c with (t1, t2) =
  * barycentric. */
 typedef struct lfem_contact {
-    lfem_body body_a;        /**< the body that owns the node */
-    lfem_body body_b;        /**< the body that owns the triangle */
+    lfem_body body_a;        /**< the body that owns the node (the face) */
+    lfem_body body_b;        /**< the body that owns the triangle (the shape) */
     uint32_t node;           /**< node index in body_a */
     uint32_t triangle[3];    /**< node indices a, b, c in body_b (for a body of 10-node tets,
                                   one of the 4 flat triangles of a 6-node face) */
@@ -448,7 +459,8 @@ typedef struct lfem_contact {
                                   triangle's nodes receive its opposite, split by barycentric
                                   weights */
     uint8_t sliding;         /**< 1 when friction is on the Coulomb cone (slipping), else 0 */
-    uint8_t padding[3];      /**< unused, 0 */
+    uint8_t kind;            /**< an lfem_contact_kind: what the record joins */
+    uint8_t padding[2];      /**< unused, 0 */
     uint32_t shape;          /**< index of body_b's shape (lfem_body_add_shape) when the node
                                   touches a shape; UINT32_MAX when it touches a triangle. For a
                                   shape, triangle[] is UINT32_MAX and barycentric is 0 */

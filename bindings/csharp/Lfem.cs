@@ -358,8 +358,9 @@ namespace Lfem
         public Vec3 Normal;           // unit, out of BodyB's surface
         public Vec3 Force;            // N, on the node
         public byte Sliding;          // 1 when friction is on the Coulomb cone
+        public byte Kind;             // 0 node-face, 1 node-shape, 2 face-shape (lfem_contact_kind)
 #pragma warning disable 0169 // C padding
-        private byte padding0, padding1, padding2;
+        private byte padding1, padding2;
 #pragma warning restore 0169
         public uint Shape;            // index of BodyB's rigid shape, or NoShape for a triangle
 
@@ -439,7 +440,7 @@ namespace Lfem
     /// <summary>Version and status names of the loaded library.</summary>
     public static class Library
     {
-        public const int VersionMajor = 0, VersionMinor = 3, VersionPatch = 0;
+        public const int VersionMajor = 0, VersionMinor = 4, VersionPatch = 0;
 
         /// <summary>(major &lt;&lt; 16) | (minor &lt;&lt; 8) | patch of the library loaded.</summary>
         public static uint Version { get { return Native.lfem_version(); } }

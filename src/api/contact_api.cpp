@@ -11,6 +11,13 @@ using namespace lfem::api;
 
 namespace {
 
+lfem_contact_kind kind_of(const ContactRecord& c) {
+    switch (c.kind) {
+        case ContactKind::face_shape: return LFEM_CONTACT_FACE_SHAPE;
+        default: return c.shape != UINT32_MAX ? LFEM_CONTACT_NODE_SHAPE : LFEM_CONTACT_NODE_FACE;
+    }
+}
+
 // The C record of a contact (handles, the caller's node numbers, contact point, force).
 lfem_contact contact_as_c(const World& w, const ContactRecord& c) {
     lfem_contact out{};
@@ -18,8 +25,10 @@ lfem_contact contact_as_c(const World& w, const ContactRecord& c) {
     const Body& b = w.bodies().slot(c.body_b);
     out.body_a = to_c(w.bodies().handle_of(c.body_a));
     out.body_b = to_c(w.bodies().handle_of(c.body_b));
-    out.node = a.numbering().api_node(c.node);
+    // A feature reports the first node of body_a's edge or face.
+    out.node = a.numbering().api_node(c.feature() ? c.nodes_a[0] : c.node);
     out.shape = c.shape;
+    out.kind = uint8_t(kind_of(c));
     const double wt[3] = {1.0 - c.t1 - c.t2, c.t2, c.t1};
     for (int k = 0; k < 3; ++k) {
         out.triangle[k] = c.shape != UINT32_MAX ? c.triangle[k] : b.numbering().api_node(c.triangle[k]);
@@ -61,7 +70,10 @@ LFEM_API lfem_status lfem_world_query_contacts(const lfem_world* world, lfem_con
         // promised (body_a, node) in its own numbering. A node's contacts with several bodies
         // keep their order (body_b, then shape). No std::stable_sort: its scratch buffer comes
         // from a nothrow new.
-        auto key = [](const lfem_contact& c) { return std::make_tuple(c.body_a.index, c.node, c.body_b.index, c.shape); };
+        auto key = [](const lfem_contact& c) {
+            return std::make_tuple(c.body_a.index, c.node, c.body_b.index, c.shape, c.kind, c.triangle[0], c.triangle[1],
+                                   c.triangle[2]);
+        };
         std::sort(out, out + active, [&](const lfem_contact& p, const lfem_contact& q) { return key(p) < key(q); });
     });
 }

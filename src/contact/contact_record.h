@@ -1,14 +1,13 @@
 // An active constraint of the forward increment Lagrange multiplier method: a point of body
 // `body_a` against a point of body `body_b`, each a weighted sum of a few nodes (eq. 6's
-// barycentric weights), with the multiplier (the contact force, newtons). Three kinds:
+// barycentric weights), with the multiplier (the contact force, newtons). Two kinds:
 //  - node_face: node `node` of body_a against triangle `triangle` of body_b, or against rigid
 //    shape `shape` of body_b (the paper's node-to-triangle constraint);
-//  - edge_edge: the point of body_a's boundary edge nodes_a[0..1] (weights weights_a) against
-//    the point of body_b's edge triangle[0..1] (weights 1 - t2, t2; t1 = 0): crossed edges;
-//  - face_shape: the point of body_a's triangle nodes_a (weights weights_a) against the
-//    deepest point of rigid shape `shape` of body_b: a shape poking between the nodes.
-// The last two are the features: `node` is kFeatureNode, so they sort after every node of
-// body_a and never meet a node's lookups (warm_start.h).
+//  - face_shape: the point of body_a's boundary triangle nodes_a (weights weights_a) against
+//    the point of rigid shape `shape` of body_b nearest to it: a shape poking between the
+//    nodes (face_shape.h).
+// The second is a feature: its `node` is kFeatureNode, so it sorts after every node of body_a
+// and never meets a node's lookups (warm_start.h).
 #pragma once
 
 #include <algorithm>
@@ -17,9 +16,9 @@
 
 namespace lfem {
 
-enum class ContactKind : uint8_t { node_face = 0, edge_edge = 1, face_shape = 2 };
+enum class ContactKind : uint8_t { node_face = 0, face_shape = 1 };
 
-// The `node` of a feature record (edge_edge, face_shape).
+// The `node` of a feature record (face_shape).
 constexpr uint32_t kFeatureNode = UINT32_MAX;
 
 struct ContactRecord {
@@ -38,9 +37,11 @@ struct ContactRecord {
                                          //   penetration)
     double plane_gap = 0;                // m, the node's distance from the triangle's plane
                                          //   after the solve: the depth the next step finds
-    uint32_t nodes_a[3] = {0, 0, 0};     // features: body_a's nodes (an edge's two, a face's three)
+    uint32_t nodes_a[3] = {0, 0, 0};     // features: body_a's nodes (a face's three)
     double weights_a[3] = {0, 0, 0};     //   and their weights (summing to 1)
     ContactKind kind = ContactKind::node_face;
+    uint8_t end = 0;                     // face_shape: which of the shape's points under the face
+                                         //   (face_shape.h, points_under)
     bool sliding = false;
     bool gentle = false;                 // the offset is an overlap of bodies as they were
                                          //   added: let out at 1e-3 of an edge a step

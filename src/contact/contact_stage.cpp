@@ -26,8 +26,10 @@ FallenIn ContactStage::detect(const std::vector<ContactRecord>& previous, bool s
     // The list's deepest kept offset: taken after the last sub-step's solve, else (an attempt's
     // first sub-step) from the list.
     const double max_offset = kept_offset_known_ ? kept_offset_ : deepest_kept_offset(previous);
-    return detect_node_triangle(bodies_.bodies(), previous, max_offset, scan_overlaps, detection_, detected_,
-                                detected_runs_, profile, pool);
+    const FallenIn fallen = detect_node_triangle(bodies_.bodies(), previous, max_offset, scan_overlaps, detection_,
+                                                 detected_, detected_runs_, profile, pool);
+    detect_features(bodies_.bodies(), detection_.candidates, previous, features_, detected_, detected_runs_, profile);
+    return fallen;
 }
 
 // Every detected pair is kept, also those at zero force: the next step warm-starts from all of

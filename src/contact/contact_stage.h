@@ -13,6 +13,7 @@
 #include "common/thread_pool.h"
 #include "contact/contact_bodies.h"
 #include "contact/contact_record.h"
+#include "contact/detect_features.h"
 #include "contact/detect_node_triangle.h"
 #include "contact/link_constraint.h"
 #include "contact/solve_contact_multipliers.h"
@@ -65,6 +66,7 @@ private:
     double kept_offset_ = 0;
     bool kept_offset_known_ = false;
     DetectionScratch detection_;
+    FeatureScratch features_;
     ContactSolveScratch solve_scratch_;
 };
 

@@ -82,16 +82,6 @@ bool some_face_faces(const ContactBody& a, uint32_t p, const Vec3& n) {
     return false;
 }
 
-// The triangle of b across edge (u, v) from triangle t, or UINT32_MAX at an open border.
-uint32_t across_edge(const ContactBody& b, uint32_t t, uint32_t u, uint32_t v) {
-    for (uint32_t j = b.node_triangle_begin[u]; j < b.node_triangle_begin[u + 1]; ++j) {
-        const uint32_t o = b.node_triangles[j];
-        const uint32_t* other = &b.triangles[3 * std::size_t(o)];
-        if (o != t && (other[0] == v || other[1] == v || other[2] == v)) return o;
-    }
-    return UINT32_MAX;
-}
-
 // Does point x lie inside tet e of b (at x^n, by its corners) by more than 1e-3 of its height,
 // and is e none of node p's own (when a is b)?
 bool in_element(const ContactBody& a, uint32_t p, const ContactBody& b, uint32_t e, const Vec3& x) {
@@ -110,6 +100,15 @@ bool in_element(const ContactBody& a, uint32_t p, const ContactBody& b, uint32_t
 }
 
 }  // namespace
+
+uint32_t across_edge(const ContactBody& b, uint32_t t, uint32_t u, uint32_t v) {
+    for (uint32_t j = b.node_triangle_begin[u]; j < b.node_triangle_begin[u + 1]; ++j) {
+        const uint32_t o = b.node_triangles[j];
+        const uint32_t* other = &b.triangles[3 * std::size_t(o)];
+        if (o != t && (other[0] == v || other[1] == v || other[2] == v)) return o;
+    }
+    return UINT32_MAX;
+}
 
 bool inside_near(const ContactBody& a, uint32_t p, const ContactBody& b, const uint32_t* tri, const Vec3& x) {
     if (!b.node_elements) return false;

@@ -23,6 +23,9 @@ inline bool shares_node(const uint32_t* u, const uint32_t* v) {
     return false;
 }
 
+// The boundary triangle of b across edge (u, v) from triangle t, or UINT32_MAX at an open border.
+uint32_t across_edge(const ContactBody& b, uint32_t t, uint32_t u, uint32_t v);
+
 // Are u and v the same triangle (the same three nodes, in the same order)?
 inline bool same_triangle(const uint32_t* u, const uint32_t* v) { return u[0] == v[0] && u[1] == v[1] && u[2] == v[2]; }
 

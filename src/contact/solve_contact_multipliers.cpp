@@ -25,14 +25,13 @@ double last_velocity(const ContactBody& b, uint32_t i, int k, double h) {
 // which under a resting load is mostly the sag that contact undoes.
 double pair_motion(const ContactBody& a, const ContactBody& b, const ContactRecord& r, double h) {
     const double w[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
-    const int na = r.kind == ContactKind::edge_edge ? 2 : 3;
     double motion = 0.0;
     for (int d = 0; d < 3; ++d) {
         double rel = 0.0;  // a static body's: 0
         if (a.moves && !r.feature())
             rel = last_velocity(a, r.node, d, h);
         else if (a.moves)
-            for (int v = 0; v < na; ++v) rel += r.weights_a[v] * last_velocity(a, r.nodes_a[v], d, h);
+            for (int v = 0; v < 3; ++v) rel += r.weights_a[v] * last_velocity(a, r.nodes_a[v], d, h);
         if (r.shape != UINT32_MAX)
             rel -= (r.point_end[d] - r.point_start[d]) / h;  // the shape's surface moves rigidly
         else if (b.moves)

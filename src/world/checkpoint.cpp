@@ -151,7 +151,7 @@ template <class A, class C>
 void contact_fields(A& a, C& c) {
     a(c.body_a), a(c.node), a(c.body_b), a(c.triangle), a(c.shape), a(c.point_start);
     a(c.point_end), a(c.t1), a(c.t2), a(c.normal), a(c.lambda_n), a(c.lambda_t), a(c.offset);
-    a(c.gap_after), a(c.plane_gap), a(c.sliding), a(c.gentle), a(c.kind), a(c.nodes_a), a(c.weights_a);
+    a(c.gap_after), a(c.plane_gap), a(c.sliding), a(c.gentle), a(c.kind), a(c.end), a(c.nodes_a), a(c.weights_a);
 }
 
 template <class A, class S>
@@ -309,7 +309,7 @@ void check_image(const WorldImage& im, const std::string& path) {
         if (!ok) fail(path, "a contact names a missing body");
         const Body& a = im.bodies[c.body_a];
         const Body& b = im.bodies[c.body_b];
-        const bool feature = c.kind == ContactKind::edge_edge || c.kind == ContactKind::face_shape;
+        const bool feature = c.kind == ContactKind::face_shape;
         bool in_range = feature ? c.node == kFeatureNode : c.kind == ContactKind::node_face && c.node < a.ref.node_count();
         if (feature)
             for (uint32_t v : c.nodes_a) in_range = in_range && v < a.ref.node_count();
@@ -317,7 +317,7 @@ void check_image(const WorldImage& im, const std::string& path) {
             for (uint32_t v : c.triangle) in_range = in_range && v < b.ref.node_count();
         else
             in_range = in_range && c.shape < b.shapes.size();
-        in_range = in_range && (c.kind == ContactKind::face_shape) == (feature && c.shape != UINT32_MAX);
+        in_range = in_range && (!feature || c.shape != UINT32_MAX) && c.end < 2;
         if (!in_range) fail(path, "a contact index is out of range");
     }
     auto live = [&](uint32_t slot, uint32_t generation) {

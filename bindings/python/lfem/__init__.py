@@ -823,7 +823,7 @@ class World:
     def contacts(self, out: Optional[np.ndarray] = None) -> np.ndarray:
         """The active contacts of the last step as a numpy structured array of CONTACT_DTYPE
         (fields body_a, body_b, node, triangle, barycentric, position, normal, force, sliding,
-        shape), filled by lfem directly. With out= (a CONTACT_DTYPE array), the contacts go to
+        kind, shape), filled by lfem directly. With out= (a CONTACT_DTYPE array), the contacts go to
         its front and out[:count] is returned; BUFFER_TOO_SMALL (nothing copied) when it is too
         short."""
         if out is None:

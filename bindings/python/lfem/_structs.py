@@ -364,7 +364,8 @@ class Contact(ctypes.Structure):
         ("normal", _d3),
         ("force", _d3),
         ("sliding", ctypes.c_uint8),
-        ("_padding", ctypes.c_uint8 * 3),
+        ("kind", ctypes.c_uint8),
+        ("_padding", ctypes.c_uint8 * 2),
         ("shape", ctypes.c_uint32),  # index of body_b's shape, or NO_SHAPE for a triangle
     ]
 
@@ -410,13 +411,13 @@ class Overlap(ctypes.Structure):
 _BODY_DTYPE = np.dtype([("index", "<u4"), ("generation", "<u4")])
 
 _CONTACT_FIELDS = ["body_a", "body_b", "node", "triangle", "barycentric", "position", "normal",
-                   "force", "sliding", "shape"]
+                   "force", "sliding", "kind", "shape"]
 
 #: The numpy dtype of lfem_contact (same offsets and size as Contact).
 CONTACT_DTYPE = np.dtype({
     "names": _CONTACT_FIELDS,
     "formats": [_BODY_DTYPE, _BODY_DTYPE, np.uint32, (np.uint32, 3), (np.float64, 2),
-                (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8, np.uint32],
+                (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8, np.uint8, np.uint32],
     "offsets": [getattr(Contact, name).offset for name in _CONTACT_FIELDS],
     "itemsize": ctypes.sizeof(Contact),
 })

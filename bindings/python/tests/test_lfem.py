@@ -90,7 +90,8 @@ class Layout(unittest.TestCase):
             "enable_sleep": 116, "self_contact": 117, "composite_tets": 118})
         self.check(lfem.Contact, 128, {
             "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
-            "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124})
+            "position": 48, "normal": 72, "force": 96, "sliding": 120, "kind": 121,
+                    "shape": 124})
         self.check(lfem.ShapeDef, 120, {
             "_type": 0, "_point_count": 4, "center": 8, "rotation": 32, "half_extents": 64,
             "radius": 88, "half_length": 96, "_points": 104, "_internal_value": 112})
@@ -99,7 +100,8 @@ class Layout(unittest.TestCase):
         dt = lfem.CONTACT_DTYPE
         self.assertEqual(dt.itemsize, 128)
         expected = {"body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
-                    "position": 48, "normal": 72, "force": 96, "sliding": 120, "shape": 124}
+                    "position": 48, "normal": 72, "force": 96, "sliding": 120, "kind": 121,
+                    "shape": 124}
         for name, offset in expected.items():
             self.assertEqual(dt.fields[name][1], offset, name)
         self.assertEqual(dt["normal"].shape, (3,))

@@ -11,7 +11,7 @@ use std::mem::size_of;
 use std::os::raw::{c_char, c_double, c_int, c_void};
 
 pub const LFEM_VERSION_MAJOR: u32 = 0;
-pub const LFEM_VERSION_MINOR: u32 = 3;
+pub const LFEM_VERSION_MINOR: u32 = 4;
 pub const LFEM_VERSION_PATCH: u32 = 0;
 
 // ---- enums: 32-bit integers in C; kept as integers here (an unknown value is not UB) ---------
@@ -311,7 +311,8 @@ pub struct lfem_contact {
     pub normal: [c_double; 3],
     pub force: [c_double; 3],
     pub sliding: u8,
-    pub padding: [u8; 3],
+    pub kind: u8,
+    pub padding: [u8; 2],
     /// Index of body_b's shape, or u32::MAX when the node touches a triangle.
     pub shape: u32,
 }

@@ -136,6 +136,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_contact, normal), 72);
     assert_eq!(offset!(lfem_contact, force), 96);
     assert_eq!(offset!(lfem_contact, sliding), 120);
+    assert_eq!(offset!(lfem_contact, kind), 121);
     assert_eq!(offset!(lfem_contact, shape), 124);
 
     assert_eq!(offset!(lfem_shape_def, point_count), 4);

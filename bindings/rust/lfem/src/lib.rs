@@ -546,7 +546,9 @@ pub struct Contact {
     pub force: [f64; 3],
     /// 1 when friction is on the Coulomb cone, else 0 (see [`Contact::is_sliding`]).
     pub sliding: u8,
-    padding: [u8; 3],
+    /// What the record joins: 0 node-face, 1 node-shape, 2 face-shape (`lfem_contact_kind`).
+    pub kind: u8,
+    padding: [u8; 2],
     /// Index of body_b's rigid shape the node touches, or `u32::MAX` for a triangle (then
     /// `triangle` and `barycentric` are meaningful; for a shape they are `u32::MAX` and 0).
     pub shape: u32,
@@ -564,7 +566,8 @@ impl Default for Contact {
             normal: [0.0; 3],
             force: [0.0; 3],
             sliding: 0,
-            padding: [0; 3],
+            kind: 0,
+            padding: [0; 2],
             shape: u32::MAX,
         }
     }

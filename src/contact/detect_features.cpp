@@ -1,0 +1,227 @@
+#include "contact/detect_features.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <tuple>
+
+#include "contact/detection_tolerances.h"
+#include "contact/face_shape.h"
+#include "contact/node_face.h"
+#include "contact/warm_start.h"
+
+namespace lfem {
+namespace {
+
+// A face needs its own constraint against a shape only where the shape's point under it lies
+// deeper than the face's nodes see the shape (their weighted distances) by more than 0.5 % of
+// the face's edge length: a rod or a stud between the nodes; not a box's face lying under the
+// face (the nodes hold it, as on a floor), nor a shape touching the face at its nodes. With no
+// threshold (or a tiny one), a soft block balanced on a sphere's crown or on a rod, both at its
+// nodes, rocked at 1e-3 to 1e-2 m/s under damping that stops it within 0.1 s: one contact held
+// at the crown node and others around it in the faces made the block pivot from one to the
+// next. The shape may then lie up to 0.5 % of an edge inside the face between the nodes, half
+// the 1 % the face constraints are there to keep. A face that had a constraint against the
+// shape nearby at the last step keeps one while the shape lies deeper than the nodes see it at
+// all, so that the constraint does not come and go at the threshold.
+constexpr double kFaceSag = 5e-3;
+// A shape's point within a tenth of an edge of a node (a barycentric weight above 0.9) is that
+// node's to hold: a soft bar folding over a thin rod right under a column of its nodes had face
+// constraints 2 mm beside the column, pushing the faces out along the rod's normals, which
+// slid the column off the rod's crown and let the bar fall through it (the nodes alone hold
+// it). The shape may then lie between the node and the face's point, at most (0.1 l)^2 / 2r
+// deep for a rod of radius r: 1 % of the edge for r = l / 2.
+constexpr double kNodeDomain = 0.9;
+
+// Whether a face constraint is needed (the rule above): `held`, a constraint of the same shape
+// and body lay within an edge of the point at the last step.
+bool nodes_miss(const FaceShapeHit& hit, bool held, double l) {
+    const double nearest_node = std::max({hit.weights[0], hit.weights[1], hit.weights[2]});
+    if (nearest_node > kNodeDomain) return false;
+    return held ? hit.unseen > 0.0 : hit.unseen > kFaceSag * l;
+}
+
+// Whether one of the shape's last records (s.previous_places) lies within `reach` of point p.
+bool held_near(const FeatureScratch& s, const Vec3& p, double reach) {
+    bool found = false;
+    s.previous_places.near(p.data(), reach, [&](uint32_t, double) { found = true; });
+    return found;
+}
+
+auto key_of(const ContactRecord& r) {
+    return std::make_tuple(r.body_a, r.body_b, uint8_t(r.kind), r.shape, r.nodes_a[0], r.nodes_a[1], r.nodes_a[2],
+                           r.end);
+}
+
+// The last list's record of the same feature, or nullptr.
+const ContactRecord* last_of(const FeatureScratch& s, const ContactRecord& r) {
+    const auto it = std::lower_bound(s.previous.begin(), s.previous.end(), &r,
+                                     [](const ContactRecord* x, const ContactRecord* y) { return feature_less(*x, *y); });
+    return it != s.previous.end() && key_of(**it) == key_of(r) ? *it : nullptr;
+}
+
+// The overlap a record lets out gradually (its target gap is -offset), as for a node
+// (make_record, node_face.cpp): none for a pair held at the last step (`last`, not letting out
+// an overlap itself), which has only the solve's residual to make up, at once; else 20 % of the
+// overlap it started the step with, at most 1e-2 of an edge l.
+double overlap_kept(double start_gap, const ContactRecord* last, double l) {
+    if (start_gap >= 0.0 || (last && last->offset <= 0.0)) return 0.0;
+    const double overlap = -start_gap;
+    return overlap - std::min(kOverlapRecovery * overlap, kFallenRecovery * l);
+}
+
+// Where the last list's records of shape k of body o against faces of body a lie in s.previous.
+std::pair<std::size_t, std::size_t> previous_of_shape(const FeatureScratch& s, uint32_t a, uint32_t o, uint32_t k) {
+    ContactRecord lo;
+    lo.body_a = a, lo.body_b = o, lo.kind = ContactKind::face_shape, lo.shape = k;
+    lo.nodes_a[0] = lo.nodes_a[1] = lo.nodes_a[2] = 0;
+    lo.end = 0;
+    const auto less = [](const ContactRecord* x, const ContactRecord* y) { return feature_less(*x, *y); };
+    const std::size_t from = std::size_t(std::lower_bound(s.previous.begin(), s.previous.end(), &lo, less) - s.previous.begin());
+    std::size_t to = from;
+    while (to < s.previous.size() && s.previous[to]->body_a == a && s.previous[to]->body_b == o &&
+           s.previous[to]->kind == ContactKind::face_shape && s.previous[to]->shape == k)
+        ++to;
+    return {from, to};
+}
+
+// A shape's face records warm-start from the last ones of the same face; those met on another
+// face than last step's, by place: as a body rocks on a shape, the deepest point under its faces
+// moves from one triangle to the next. Each new record (s.found[first ..], its start gap in
+// s.start_gaps) found on a face that had none takes the multipliers of the nearest last record
+// within `reach` (the face's edge length) that no face kept, shared equally among the new
+// records that take the same one (the load they carry stays the load it carried), and is held
+// as that one was.
+void warm_start_by_place(FeatureScratch& s, std::size_t from, std::size_t to, std::size_t first, double reach) {
+    const std::size_t count = s.found.size() - first;
+    s.match.assign(count, UINT32_MAX);
+    s.shares.assign(to - from, 0);
+    // The same face: the last records are in key order, as the new ones are (faces ascending).
+    for (std::size_t i = 0, j = from; i < count && j < to;) {
+        if (feature_less(s.found[first + i], *s.previous[j])) ++i;
+        else if (feature_less(*s.previous[j], s.found[first + i])) ++j;
+        else s.match[i] = uint32_t(j - from), s.shares[j - from] = UINT32_MAX, ++i, ++j;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        if (s.match[i] != UINT32_MAX) continue;
+        double best = HUGE_VAL;
+        uint32_t nearest = UINT32_MAX;
+        s.previous_places.near(s.found[first + i].point_end, reach, [&](uint32_t j, double d2) {
+            if (s.shares[j] == UINT32_MAX) return;  // kept by its own face
+            if (d2 < best || (d2 == best && j < nearest)) best = d2, nearest = j;
+        });
+        if (nearest != UINT32_MAX) s.match[i] = nearest, s.shares[nearest] += 1;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const uint32_t m = s.match[i];
+        ContactRecord& r = s.found[first + i];
+        const ContactRecord* last = m == UINT32_MAX ? nullptr : s.previous[from + m];
+        r.offset = overlap_kept(s.start_gaps[first + i], last, reach);
+        if (!last) continue;
+        const double share = s.shares[m] == UINT32_MAX ? 1.0 : 1.0 / s.shares[m];
+        r.lambda_n = share * last->lambda_n;
+        for (int d = 0; d < 3; ++d) r.lambda_t[d] = share * last->lambda_t[d];
+    }
+}
+
+// Every face of a moving body under every shape of static and kinematic bodies.
+void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s) {
+    for (uint32_t oi : c.shape_bodies) {
+        const ContactBody& o = bodies[oi];
+        for (uint32_t k = 0; k < o.shape_count; ++k) {
+            if (o.shapes[k].type == ShapeType::plane) continue;  // no point between a face's nodes
+            const double radius = shape_bounding_radius(o.shapes[k]);
+            Aabb box = empty_box();
+            for (const double* pose : {o.shape_pose + 7 * std::size_t(k), o.shape_pose_start + 7 * std::size_t(k)})
+                join(box, Aabb{{pose[0] - radius, pose[1] - radius, pose[2] - radius},
+                               {pose[0] + radius, pose[1] + radius, pose[2] + radius}});
+            s.near.clear();
+            c.body_grid.query(box, s.near);
+            for (uint32_t ai : s.near) {
+                const ContactBody& a = bodies[ai];
+                if (ai == oi || !a.moves || !is_movable(a) || a.triangle_count == 0 || !bodies_may_touch(a, o)) continue;
+                const double band = kCaptureBand * a.edge_length;
+                s.triangles.clear();
+                c.tree_of(bodies, ai).query(grown(box, band + 2.0 * c.budget[ai]), a.x, a.triangles, c.budget[ai],
+                                            [&](uint32_t t) { s.triangles.push_back(t); });
+                std::sort(s.triangles.begin(), s.triangles.end());
+                const std::size_t first = s.found.size();
+                const auto [from, to] = previous_of_shape(s, a.slot, o.slot, k);
+                // Allowed as deep as the shape's deepest kept offset under this body.
+                double kept = 0.0;
+                s.previous_places.clear();
+                for (std::size_t j = from; j < to; ++j) {
+                    kept = std::max(kept, s.previous[j]->kept_offset());
+                    s.previous_places.add(s.previous[j]->point_end, uint32_t(j - from));
+                }
+                s.previous_places.sort();
+                for (uint32_t t : s.triangles)
+                    for (int end = 0; end < 2; ++end) {
+                        ContactRecord r;
+                        r.body_a = a.slot, r.node = kFeatureNode, r.body_b = o.slot, r.shape = k;
+                        r.kind = ContactKind::face_shape;
+                        r.end = uint8_t(end);
+                        r.triangle[0] = r.triangle[1] = r.triangle[2] = UINT32_MAX;  // a shape's, as a node's
+                        for (int v = 0; v < 3; ++v) r.nodes_a[v] = a.triangles[3 * std::size_t(t) + v];
+                        // A pair stuck at the last step (active, not sliding, no overlap kept) keeps
+                        // the face's material point it stuck at, as a node stuck to a face does
+                        // (make_record, node_face.cpp): taken anew every step, the stuck point
+                        // crept by the predictor's tangential motion, and a block crept off a
+                        // sphere's crown at 4e-4 m/s under damping that should have stopped it.
+                        const ContactRecord* last = last_of(s, r);
+                        const bool stuck = last && last->active() && !last->sliding && last->offset <= 0.0;
+                        FaceShapeHit hit;
+                        if (!test_face_shape(a, t, o, k, band, end, stuck ? last->weights_a : nullptr, hit)) continue;
+                        // Not deeper at the start than the pair was left (a thin part's far face is
+                        // no way out), but a face held against the shape nearby at the last step may
+                        // start as deep as the turn of the face takes its point in a step (1e-2 of
+                        // an edge, as a node held at a face that bends round it, node_face.cpp).
+                        const bool held = held_near(s, hit.point_end, a.edge_length);
+                        const double allowance =
+                            allowed_depth(kept, a.edge_length) + (held ? kFallenRecovery * a.edge_length : 0.0);
+                        if (!(hit.start_gap > -allowance) || !nodes_miss(hit, held, a.edge_length)) continue;
+                        for (int d = 0; d < 3; ++d) {
+                            r.weights_a[d] = hit.weights[d], r.normal[d] = hit.normal[d];
+                            r.point_end[d] = hit.point_end[d], r.point_start[d] = hit.point_start[d];
+                        }
+                        s.found.push_back(r);
+                        s.start_gaps.push_back(hit.start_gap);
+                    }
+                warm_start_by_place(s, from, to, first, a.edge_length);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+bool feature_less(const ContactRecord& x, const ContactRecord& y) { return key_of(x) < key_of(y); }
+
+void detect_features(const std::vector<ContactBody>& bodies, const ContactCandidates& c,
+                     const std::vector<ContactRecord>& previous, FeatureScratch& s, std::vector<ContactRecord>& list,
+                     std::vector<RecordRun>& runs, Profile& profile) {
+    if (!c.valid) return;
+    // Part of the sub-step's narrow phase: its time is added there, not its call.
+    PhaseTimer timer(profile.narrow_phase, 0);
+    s.previous.clear();
+    for (const ContactRecord& r : previous)
+        if (r.feature()) s.previous.push_back(&r);
+    s.found.clear();
+    s.start_gaps.clear();
+    shapes_against_faces(bodies, c, s);
+    if (s.found.empty()) return;
+    std::sort(s.found.begin(), s.found.end(), feature_less);
+    // The list's order (body_a, node, body_b): the features after the nodes of their body_a.
+    auto order = [](const ContactRecord& x, const ContactRecord& y) {
+        return x.body_a != y.body_a ? x.body_a < y.body_a : x.node != y.node ? x.node < y.node : x.body_b < y.body_b;
+    };
+    s.merged.clear();
+    std::merge(list.begin(), list.end(), s.found.begin(), s.found.end(), std::back_inserter(s.merged), order);
+    list.swap(s.merged);
+    runs.clear();
+    for (uint32_t j = 0; j < list.size(); ++j)
+        if (runs.empty() || runs.back().body_a != list[j].body_a || runs.back().body_b != list[j].body_b)
+            runs.push_back(RecordRun{j, list[j].body_a, list[j].body_b});
+}
+
+}  // namespace lfem
