@@ -162,6 +162,7 @@ TEST(Features, ASoftCubeRestsOnFourStuds) {
 // checkpoint: a world saved while a cube rests on studs between its nodes and loaded again
 // continues bitwise as the one that was not saved.
 TEST(Features, FaceContactsContinueBitwiseAfterACheckpoint) {
+    if (!LFEM_WITH_IO) GTEST_SKIP() << "built without checkpoint files (LFEM_WITH_IO=OFF)";
     World w;
     const double c = 0.1 / 3.0;
     static_shapes(w, {stud(-c, -c, 0.01), stud(-c, c, 0.01), stud(c, -c, 0.01), stud(c, c, 0.01)});
