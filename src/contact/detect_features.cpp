@@ -130,11 +130,27 @@ void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactC
         const ContactBody& o = bodies[oi];
         for (uint32_t k = 0; k < o.shape_count; ++k) {
             if (o.shapes[k].type == ShapeType::plane) continue;  // no point between a face's nodes
-            const double radius = shape_bounding_radius(o.shapes[k]);
+            const RigidShape& shape = o.shapes[k];
+            const ShapePose end = ShapePose::load(o.shape_pose + 7 * std::size_t(k));
+            const ShapePose start = ShapePose::load(o.shape_pose_start + 7 * std::size_t(k));
+            // Where to look: the shape's own box over the step, or for a box, the boxes of its
+            // twelve edges: a face lying on a box's face is held by its nodes (a body on a box
+            // floor), so only faces near the box's edges can need more, and a large floor's
+            // faces are not searched under every body on it every sub-step.
+            s.regions.clear();
+            if (shape.type == ShapeType::box) {
+                box_edge_boxes(shape, end, s.regions);
+                const std::size_t half = s.regions.size();
+                box_edge_boxes(shape, start, s.regions);
+                for (std::size_t i = 0; i < half; ++i) join(s.regions[i], s.regions[half + i]);
+                s.regions.resize(half);
+            } else {
+                Aabb whole = shape_box(shape, end);
+                join(whole, shape_box(shape, start));
+                s.regions.push_back(whole);
+            }
             Aabb box = empty_box();
-            for (const double* pose : {o.shape_pose + 7 * std::size_t(k), o.shape_pose_start + 7 * std::size_t(k)})
-                join(box, Aabb{{pose[0] - radius, pose[1] - radius, pose[2] - radius},
-                               {pose[0] + radius, pose[1] + radius, pose[2] + radius}});
+            for (const Aabb& r : s.regions) join(box, r);
             s.near.clear();
             c.body_grid.query(box, s.near);
             for (uint32_t ai : s.near) {
@@ -142,9 +158,11 @@ void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactC
                 if (ai == oi || !a.moves || !is_movable(a) || a.triangle_count == 0 || !bodies_may_touch(a, o)) continue;
                 const double band = kCaptureBand * a.edge_length;
                 s.triangles.clear();
-                c.tree_of(bodies, ai).query(grown(box, band + 2.0 * c.budget[ai]), a.x, a.triangles, c.budget[ai],
-                                            [&](uint32_t t) { s.triangles.push_back(t); });
+                for (const Aabb& region : s.regions)
+                    c.tree_of(bodies, ai).query(grown(region, band + 2.0 * c.budget[ai]), a.x, a.triangles, c.budget[ai],
+                                                [&](uint32_t t) { s.triangles.push_back(t); });
                 std::sort(s.triangles.begin(), s.triangles.end());
+                s.triangles.erase(std::unique(s.triangles.begin(), s.triangles.end()), s.triangles.end());
                 const std::size_t first = s.found.size();
                 const auto [from, to] = previous_of_shape(s, a.slot, o.slot, k);
                 // Allowed as deep as the shape's deepest kept offset under this body.

@@ -56,6 +56,7 @@ struct FeatureScratch {
     std::vector<const ContactRecord*> previous;  // the last list's feature records, in order
     std::vector<uint32_t> near;                   // bodies near a shape
     std::vector<uint32_t> triangles;              // of one body near a shape
+    std::vector<Aabb> regions;                    // where a shape's points under faces may be
     std::vector<uint32_t> match, shares;          // warm start by place (detect_features.cpp)
 };
 

@@ -128,7 +128,63 @@ bool ball_point(const Vec3& c, double r, const Prism& prism, Vec3& point) {
     return true;
 }
 
+// A flat-sided shape whose nearest points to the three nodes p lie on one of its faces (the same
+// normal): that face spans the whole triangle under it (it is convex), and the nodes hold the
+// triangle above it, as on a floor. Decided before the search under the face.
+bool on_one_flat_face(const RigidShape& shape, const ShapePose& pose, const Vec3 p[3], double reach) {
+    if (shape.type != ShapeType::box && shape.type != ShapeType::convex_hull) return false;
+    Vec3 normals[3];
+    for (int v = 0; v < 3; ++v) {
+        double d = 0.0;
+        if (!shape_signed_distance(shape, pose, p[v], reach, d, normals[v])) return false;
+    }
+    return normals[0].dot(normals[1]) > 1.0 - 1e-12 && normals[0].dot(normals[2]) > 1.0 - 1e-12;
+}
+
 }  // namespace
+
+Aabb shape_box(const RigidShape& shape, const ShapePose& pose) {
+    Aabb box = empty_box();
+    const Mat3 r = pose.rotation.toRotationMatrix();
+    const auto add = [&](const Vec3& local, double grow) {
+        const Vec3 x = pose.center + r * local;
+        for (int d = 0; d < 3; ++d) box.lo[d] = std::min(box.lo[d], x[d] - grow), box.hi[d] = std::max(box.hi[d], x[d] + grow);
+    };
+    switch (shape.type) {
+        case ShapeType::sphere: add(Vec3::Zero(), shape.radius); break;
+        case ShapeType::capsule:
+            add(Vec3(0.0, 0.0, -shape.half_length), shape.radius);
+            add(Vec3(0.0, 0.0, shape.half_length), shape.radius);
+            break;
+        case ShapeType::box: {
+            const Vec3 h(shape.half_extents[0], shape.half_extents[1], shape.half_extents[2]);
+            const Vec3 extent = r.cwiseAbs() * h;
+            for (int d = 0; d < 3; ++d) box.lo[d] = pose.center[d] - extent[d], box.hi[d] = pose.center[d] + extent[d];
+            break;
+        }
+        case ShapeType::convex_hull:
+            for (std::size_t i = 0; i + 2 < shape.points.size(); i += 3)
+                add(Vec3(shape.points[i], shape.points[i + 1], shape.points[i + 2]), 0.0);
+            break;
+        default: break;  // a plane
+    }
+    return box;
+}
+
+void box_edge_boxes(const RigidShape& shape, const ShapePose& pose, std::vector<Aabb>& out) {
+    const double* h = shape.half_extents;
+    const auto corner = [&](int i) {
+        return Vec3(pose.center + pose.rotation * Vec3(i & 1 ? h[0] : -h[0], i & 2 ? h[1] : -h[1], i & 4 ? h[2] : -h[2]));
+    };
+    for (int i = 0; i < 8; ++i)
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            if (i & bit) continue;
+            const Vec3 a = corner(i), b = corner(i | bit);
+            Aabb e;
+            for (int d = 0; d < 3; ++d) e.lo[d] = std::min(a[d], b[d]), e.hi[d] = std::max(a[d], b[d]);
+            out.push_back(e);
+        }
+}
 
 // Two ends under a face closer than a third of its size (sqrt of twice its area) are one point.
 constexpr double kEndSeparation = 1.0 / 3.0;
@@ -198,6 +254,7 @@ bool test_face_shape(const ContactBody& a, uint32_t t, const ContactBody& o, uin
     // Far in front of the face, or wholly behind its plane: nothing to find under it.
     const double centre_height = n.dot(pose.center - p[0]), reach = shape_bounding_radius(shape);
     if (centre_height > reach + band || centre_height < -reach) return false;
+    if (on_one_flat_face(shape, pose, p, band + reach)) return false;
     Vec3 points[2], cores[2];
     const double sep = kEndSeparation * std::sqrt(area2);
     if (points_under(shape, pose, p[0], p[1], p[2], n, band, sep, points, cores) <= end) return false;

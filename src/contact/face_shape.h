@@ -6,12 +6,20 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
+#include "common/box.h"
 #include "common/math.h"
 #include "contact/contact_body.h"
 #include "contact/rigid_shape.h"
 
 namespace lfem {
+
+// The world box of a posed shape (empty for a plane, which has no points between a face's nodes).
+Aabb shape_box(const RigidShape& shape, const ShapePose& pose);
+
+// The world boxes of a posed box shape's twelve edges, appended to out.
+void box_edge_boxes(const RigidShape& shape, const ShapePose& pose, std::vector<Aabb>& out);
 
 // The points of the posed shape under triangle (p0, p1, p2), whose unit outward normal is n,
 // that a constraint must hold the face above: those whose projection onto the triangle's plane
