@@ -13,6 +13,7 @@
 #include <algorithm>
 
 #include <cstdint>
+#include <vector>
 
 namespace lfem {
 
@@ -62,5 +63,18 @@ inline uint64_t body_pair_key(uint32_t a, uint32_t b) { return a < b ? uint64_t(
 struct RecordRun {
     uint32_t first = 0, body_a = 0, body_b = 0;
 };
+
+// The contact list's order: body_a, node, body_b (a feature's node, kFeatureNode, after all).
+inline bool list_order(const ContactRecord& x, const ContactRecord& y) {
+    return x.body_a != y.body_a ? x.body_a < y.body_a : x.node != y.node ? x.node < y.node : x.body_b < y.body_b;
+}
+
+// The runs of records[0 .. count), appended to runs (first: the index within records).
+inline void append_runs(const ContactRecord* records, uint32_t count, std::vector<RecordRun>& runs) {
+    const std::size_t start = runs.size();
+    for (uint32_t j = 0; j < count; ++j)
+        if (runs.size() == start || runs.back().body_a != records[j].body_a || runs.back().body_b != records[j].body_b)
+            runs.push_back(RecordRun{j, records[j].body_a, records[j].body_b});
+}
 
 }  // namespace lfem

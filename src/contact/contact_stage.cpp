@@ -50,11 +50,9 @@ ContactOutcome ContactStage::solve(std::vector<LinkRecord>& links, const Contact
     if (frozen_.empty()) {
         list.swap(detected_);
     } else {
-        auto order = [](const ContactRecord& x, const ContactRecord& y) {
-            return x.body_a != y.body_a ? x.body_a < y.body_a : x.node != y.node ? x.node < y.node : x.body_b < y.body_b;
-        };
         list.clear();
-        std::merge(detected_.begin(), detected_.end(), frozen_.begin(), frozen_.end(), std::back_inserter(list), order);
+        std::merge(detected_.begin(), detected_.end(), frozen_.begin(), frozen_.end(), std::back_inserter(list),
+                   list_order);
     }
     for (const ContactRecord& r : frozen_) kept_offset_ = std::max(kept_offset_, r.kept_offset());
     kept_offset_known_ = true;

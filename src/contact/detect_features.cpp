@@ -189,7 +189,9 @@ void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactC
                         const ContactRecord* last = last_of(s, r);
                         const bool stuck = last && last->active() && !last->sliding && last->offset <= 0.0;
                         FaceShapeHit hit;
-                        if (!test_face_shape(a, t, o, k, band, end, stuck ? last->weights_a : nullptr, hit)) continue;
+                        const bool found = test_face_shape(a, t, o, k, band, end, stuck ? last->weights_a : nullptr, hit);
+                        if (end + 1 >= hit.ends) end = 2;  // no second point: this face is done
+                        if (!found) continue;
                         // Not deeper at the start than the pair was left (a thin part's far face is
                         // no way out), but a face held against the shape nearby at the last step may
                         // start as deep as the turn of the face takes its point in a step (1e-2 of
@@ -229,17 +231,12 @@ void detect_features(const std::vector<ContactBody>& bodies, const ContactCandid
     shapes_against_faces(bodies, c, s);
     if (s.found.empty()) return;
     std::sort(s.found.begin(), s.found.end(), feature_less);
-    // The list's order (body_a, node, body_b): the features after the nodes of their body_a.
-    auto order = [](const ContactRecord& x, const ContactRecord& y) {
-        return x.body_a != y.body_a ? x.body_a < y.body_a : x.node != y.node ? x.node < y.node : x.body_b < y.body_b;
-    };
+    // In the list's order: the features after the nodes of their body_a.
     s.merged.clear();
-    std::merge(list.begin(), list.end(), s.found.begin(), s.found.end(), std::back_inserter(s.merged), order);
+    std::merge(list.begin(), list.end(), s.found.begin(), s.found.end(), std::back_inserter(s.merged), list_order);
     list.swap(s.merged);
     runs.clear();
-    for (uint32_t j = 0; j < list.size(); ++j)
-        if (runs.empty() || runs.back().body_a != list[j].body_a || runs.back().body_b != list[j].body_b)
-            runs.push_back(RecordRun{j, list[j].body_a, list[j].body_b});
+    append_runs(list.data(), uint32_t(list.size()), runs);
 }
 
 }  // namespace lfem

@@ -390,11 +390,7 @@ FallenIn join_blocks(DetectionScratch& s, uint32_t blocks, std::vector<ContactRe
         DetectionBlock& block = s.blocks[b];
         std::copy(block.records.begin(), block.records.end(), out.begin() + std::ptrdiff_t(s.block_begin[b]));
         block.runs.clear();
-        for (uint32_t j = 0; j < block.records.size(); ++j) {
-            const ContactRecord& r = block.records[j];
-            if (block.runs.empty() || block.runs.back().body_a != r.body_a || block.runs.back().body_b != r.body_b)
-                block.runs.push_back(RecordRun{j, r.body_a, r.body_b});
-        }
+        append_runs(block.records.data(), uint32_t(block.records.size()), block.runs);
     });
     runs.clear();
     for (uint32_t b = 0; b < blocks; ++b)

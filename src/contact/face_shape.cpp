@@ -242,6 +242,7 @@ int points_under(const RigidShape& shape, const ShapePose& pose, const Vec3& p0,
 
 bool test_face_shape(const ContactBody& a, uint32_t t, const ContactBody& o, uint32_t k, double band, int end,
                      const double* held, FaceShapeHit& hit) {
+    hit.ends = 0;
     const uint32_t* tri = &a.triangles[3 * std::size_t(t)];
     const Vec3 p[3] = {Vec3(a.x + 3 * std::size_t(tri[0])), Vec3(a.x + 3 * std::size_t(tri[1])),
                        Vec3(a.x + 3 * std::size_t(tri[2]))};
@@ -257,7 +258,8 @@ bool test_face_shape(const ContactBody& a, uint32_t t, const ContactBody& o, uin
     if (on_one_flat_face(shape, pose, p, band + reach)) return false;
     Vec3 points[2], cores[2];
     const double sep = kEndSeparation * std::sqrt(area2);
-    if (points_under(shape, pose, p[0], p[1], p[2], n, band, sep, points, cores) <= end) return false;
+    hit.ends = points_under(shape, pose, p[0], p[1], p[2], n, band, sep, points, cores);
+    if (hit.ends <= end) return false;
     Vec3 point = points[end], core = cores[end];
     double w[3];
     // A sphere or a capsule: the constraint joins the face's point nearest to the core (the

@@ -47,6 +47,8 @@ struct FaceShapeHit {
     double gap = 0, start_gap = 0;  // the face's point's distance from the shape's along the normal,
                                     // at x* and at x^n (m)
     double unseen = 0;              // the nodes' weighted distance from the shape, less gap (m)
+    int ends = 0;                   // how many points of the shape lie under the face (0 when
+                                    // it was turned away before looking)
 };
 bool test_face_shape(const ContactBody& a, uint32_t t, const ContactBody& o, uint32_t k, double band, int end,
                      const double* held, FaceShapeHit& hit);
