@@ -436,11 +436,19 @@ LFEM_API lfem_shape_def lfem_shape_def_default(void);
 typedef enum lfem_contact_kind {
     LFEM_CONTACT_NODE_FACE = 0,  /**< a node of body_a against a triangle of body_b */
     LFEM_CONTACT_NODE_SHAPE = 1, /**< a node of body_a against a rigid shape of body_b */
-    LFEM_CONTACT_FACE_SHAPE = 2  /**< a rigid shape of body_b poking into a boundary triangle of
+    LFEM_CONTACT_FACE_SHAPE = 2, /**< a rigid shape of body_b poking into a boundary triangle of
                                       body_a between its nodes: `node` is the triangle's first
                                       corner, `position` the shape's point, `normal` out of the
                                       shape, `force` on the face's point (its three nodes share
                                       it); triangle[] is UINT32_MAX as for a node on a shape */
+    LFEM_CONTACT_EDGE_EDGE = 3   /**< a sharp boundary edge of body_a (of its rest shape: faces
+                                      meeting at more than 15 degrees, or a border) crossing one
+                                      of body_b between their nodes: `node` is the first node of
+                                      body_a's edge, triangle[0] and triangle[1] body_b's edge
+                                      (triangle[2] repeats triangle[1]), `position` the point of
+                                      body_b's edge at weights 1 - t2, t2 (barycentric = (0, t2)),
+                                      `normal` out of body_b, across both edges, `force` on the
+                                      point of body_a's edge (its two nodes share it) */
 } lfem_contact_kind;
 
 /** One active node-to-triangle contact of the last step (src/DESIGN.md section 5, eqs. 4 to 7). The contact

@@ -14,6 +14,7 @@ namespace {
 lfem_contact_kind kind_of(const ContactRecord& c) {
     switch (c.kind) {
         case ContactKind::face_shape: return LFEM_CONTACT_FACE_SHAPE;
+        case ContactKind::edge_edge: return LFEM_CONTACT_EDGE_EDGE;
         default: return c.shape != UINT32_MAX ? LFEM_CONTACT_NODE_SHAPE : LFEM_CONTACT_NODE_FACE;
     }
 }

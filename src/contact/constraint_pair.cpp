@@ -45,12 +45,12 @@ ConstraintPair make_constraint_pair(const ContactBody& a, const ContactBody& b, 
         q.w[0] = 1.0;
         q.a_points = 1;
     } else {
-        q.a_points = 3;
+        q.a_points = r.side_nodes();
         for (int i = 0; i < q.a_points; ++i) q.point[i] = point_of(a, r.nodes_a[i]), q.w[i] = r.weights_a[i];
     }
     const int na = q.a_points;
     const double N[3] = {1.0 - r.t1 - r.t2, r.t2, r.t1};
-    const int nb = 3;
+    const int nb = r.side_nodes();
     q.H = 0.0;
     add_side_response(q, 0, na, a.rigid, 1.0);
     if (r.shape != UINT32_MAX) {

@@ -1,13 +1,16 @@
 // An active constraint of the forward increment Lagrange multiplier method: a point of body
 // `body_a` against a point of body `body_b`, each a weighted sum of a few nodes (eq. 6's
-// barycentric weights), with the multiplier (the contact force, newtons). Two kinds:
+// barycentric weights), with the multiplier (the contact force, newtons). Three kinds:
 //  - node_face: node `node` of body_a against triangle `triangle` of body_b, or against rigid
 //    shape `shape` of body_b (the paper's node-to-triangle constraint);
 //  - face_shape: the point of body_a's boundary triangle nodes_a (weights weights_a) against
 //    the point of rigid shape `shape` of body_b nearest to it: a shape poking between the
-//    nodes (face_shape.h).
-// The second is a feature: its `node` is kFeatureNode, so it sorts after every node of body_a
-// and never meets a node's lookups (warm_start.h).
+//    nodes (face_shape.h);
+//  - edge_edge: the point of body_a's boundary edge nodes_a[0..1] (weights weights_a) against
+//    the point of body_b's edge triangle[0..1] (weights 1 - t2, t2; t1 = 0): crossed edges
+//    (edge_edge.h).
+// The last two are features: their `node` is kFeatureNode, so they sort after every node of
+// body_a and never meet a node's lookups (warm_start.h).
 #pragma once
 
 #include <algorithm>
@@ -17,9 +20,9 @@
 
 namespace lfem {
 
-enum class ContactKind : uint8_t { node_face = 0, face_shape = 1 };
+enum class ContactKind : uint8_t { node_face = 0, face_shape = 1, edge_edge = 2 };
 
-// The `node` of a feature record (face_shape).
+// The `node` of a feature record (face_shape, edge_edge).
 constexpr uint32_t kFeatureNode = UINT32_MAX;
 
 struct ContactRecord {
@@ -38,7 +41,7 @@ struct ContactRecord {
                                          //   penetration)
     double plane_gap = 0;                // m, the node's distance from the triangle's plane
                                          //   after the solve: the depth the next step finds
-    uint32_t nodes_a[3] = {0, 0, 0};     // features: body_a's nodes (a face's three)
+    uint32_t nodes_a[3] = {0, 0, 0};     // features: body_a's nodes (a face's three, an edge's two)
     double weights_a[3] = {0, 0, 0};     //   and their weights (summing to 1)
     ContactKind kind = ContactKind::node_face;
     uint8_t end = 0;                     // face_shape: which of the shape's points under the face
@@ -49,6 +52,8 @@ struct ContactRecord {
 
     bool active() const { return lambda_n > 0.0; }  // carries force
     bool feature() const { return kind != ContactKind::node_face; }
+    // How many nodes a weighted point of a side sums: two on an edge, three on a triangle.
+    int side_nodes() const { return kind == ContactKind::edge_edge ? 2 : 3; }
     // How deep the solve left the pair (m, >= 0): a kept overlap or the solver's residual,
     // along the normal or from the triangle's plane, whichever is deeper (plane_gap).
     double kept_offset() const { return std::max(0.0, -std::min(gap_after, plane_gap)); }

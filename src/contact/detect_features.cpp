@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "contact/detection_tolerances.h"
+#include "contact/edge_edge.h"
 #include "contact/face_shape.h"
 #include "contact/node_face.h"
 #include "contact/warm_start.h"
@@ -50,7 +51,7 @@ bool held_near(const FeatureScratch& s, const Vec3& p, double reach) {
 
 auto key_of(const ContactRecord& r) {
     return std::make_tuple(r.body_a, r.body_b, uint8_t(r.kind), r.shape, r.nodes_a[0], r.nodes_a[1], r.nodes_a[2],
-                           r.end);
+                           r.triangle[0], r.triangle[1], r.end);
 }
 
 // The last list's record of the same feature, or nullptr.
@@ -75,6 +76,7 @@ std::pair<std::size_t, std::size_t> previous_of_shape(const FeatureScratch& s, u
     ContactRecord lo;
     lo.body_a = a, lo.body_b = o, lo.kind = ContactKind::face_shape, lo.shape = k;
     lo.nodes_a[0] = lo.nodes_a[1] = lo.nodes_a[2] = 0;
+    lo.triangle[0] = lo.triangle[1] = lo.triangle[2] = UINT32_MAX;
     lo.end = 0;
     const auto less = [](const ContactRecord* x, const ContactRecord* y) { return feature_less(*x, *y); };
     const std::size_t from = std::size_t(std::lower_bound(s.previous.begin(), s.previous.end(), &lo, less) - s.previous.begin());
@@ -213,6 +215,45 @@ void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactC
     }
 }
 
+// The candidate pairs of sharp edges that cross, or crossed and are still within the band.
+void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s) {
+    update_edge_pairs(bodies, c, s.edges);
+    for (const EdgePair& p : s.edges.pairs) {
+        const ContactBody& a = bodies[p.a];
+        const ContactBody& b = bodies[p.b];
+        if (!a.moves && !b.moves) continue;  // asleep, or static
+        const double l = contact_length(a, b), band = kCaptureBand * l;
+        // As deep as any pair may start (below), the deepest kept offset the search allowed for.
+        EdgeLines lines;
+        if (!edges_may_meet(a, p.edge_a, b, p.edge_b, triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l,
+                            lines))
+            continue;
+        const uint32_t* ea = &a.sharp_edges[4 * std::size_t(p.edge_a)];
+        const uint32_t* eb = &b.sharp_edges[4 * std::size_t(p.edge_b)];
+        ContactRecord r;
+        r.body_a = a.slot, r.node = kFeatureNode, r.body_b = b.slot, r.kind = ContactKind::edge_edge;
+        r.shape = UINT32_MAX;
+        r.nodes_a[0] = ea[0], r.nodes_a[1] = r.nodes_a[2] = ea[1];
+        r.triangle[0] = eb[0], r.triangle[1] = r.triangle[2] = eb[1];
+        const ContactRecord* last = last_of(s, r);
+        // It may start the step as deep as the faces' turn takes the edges' points in a step
+        // (as a face held against a shape, above), a held one as deep as it was left besides.
+        const double allowance = allowed_depth(last ? last->kept_offset() : 0.0, l) + kFallenRecovery * l;
+        EdgeEdgeHit hit;
+        if (!test_edge_edge(a, p.edge_a, b, p.edge_b, lines, band, allowance, hit)) continue;
+        // A new pair only where the edges cross by the end of the step; then kept while within
+        // the band (warm-started).
+        if (!last && !(hit.gap < 0.0)) continue;
+        r.weights_a[0] = 1.0 - hit.s, r.weights_a[1] = hit.s;
+        r.t2 = hit.t;
+        for (int d = 0; d < 3; ++d) r.normal[d] = hit.normal[d];
+        if (last) warm_start(*last, r);
+        r.offset = overlap_kept(hit.start_gap, last, l);
+        s.found.push_back(r);
+        s.start_gaps.push_back(hit.start_gap);
+    }
+}
+
 }  // namespace
 
 bool feature_less(const ContactRecord& x, const ContactRecord& y) { return key_of(x) < key_of(y); }
@@ -229,6 +270,7 @@ void detect_features(const std::vector<ContactBody>& bodies, const ContactCandid
     s.found.clear();
     s.start_gaps.clear();
     shapes_against_faces(bodies, c, s);
+    edges_against_edges(bodies, c, s);
     if (s.found.empty()) return;
     std::sort(s.found.begin(), s.found.end(), feature_less);
     // In the list's order: the features after the nodes of their body_a.

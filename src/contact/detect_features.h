@@ -1,10 +1,12 @@
 // The features pass of contact detection: what passes between the nodes. After the node pass
 // (detect_node_triangle.h) has held every node out of the faces and shapes it meets, this pass
-// finds a rigid shape poking into a face between its nodes (face_shape.h), between x^n and x*
-// of the sub-step, over the same candidates: the bodies near each shape and the moving bodies'
-// triangle trees the last search made (contact_candidates.h). Its records join the list after
-// the node records of their body_a (their node is kFeatureNode), ordered by shape and face, and
-// warm-start from the last list's records of the same shape (detect_features.cpp).
+// finds a rigid shape poking into a face between its nodes (face_shape.h) and two bodies' sharp
+// edges crossing (edge_edge.h), between x^n and x* of the sub-step, over the same candidates:
+// the bodies near each shape, the moving bodies' triangle trees the last search made
+// (contact_candidates.h) and the pairs of edges made after it (edge_candidates.h). Its records
+// join the list after the node records of their body_a (their node is kFeatureNode), ordered by
+// kind, shape and nodes, and warm-start from the last list's records of the same feature (a
+// shape's also by place: detect_features.cpp).
 #pragma once
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include "contact/contact_body.h"
 #include "contact/contact_candidates.h"
 #include "contact/contact_record.h"
+#include "contact/edge_candidates.h"
 
 namespace lfem {
 
@@ -58,6 +61,7 @@ struct FeatureScratch {
     std::vector<uint32_t> triangles;              // of one body near a shape
     std::vector<Aabb> regions;                    // where a shape's points under faces may be
     std::vector<uint32_t> match, shares;          // warm start by place (detect_features.cpp)
+    EdgeCandidates edges;                         // pairs of sharp edges that may cross
 };
 
 // The order of feature records of the same pair of bodies: kind, body_b's shape, body_a's

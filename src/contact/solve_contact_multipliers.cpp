@@ -31,7 +31,7 @@ double pair_motion(const ContactBody& a, const ContactBody& b, const ContactReco
         if (a.moves && !r.feature())
             rel = last_velocity(a, r.node, d, h);
         else if (a.moves)
-            for (int v = 0; v < 3; ++v) rel += r.weights_a[v] * last_velocity(a, r.nodes_a[v], d, h);
+            for (int v = 0; v < r.side_nodes(); ++v) rel += r.weights_a[v] * last_velocity(a, r.nodes_a[v], d, h);
         if (r.shape != UINT32_MAX)
             rel -= (r.point_end[d] - r.point_start[d]) / h;  // the shape's surface moves rigidly
         else if (b.moves)

@@ -109,6 +109,39 @@ void compute_node_elements(const uint32_t* tets, uint32_t tet_count, uint32_t no
         }
 }
 
+void compute_sharp_edges(const double* X, Surface& s) {
+    // Every triangle's edges by their sorted nodes, then the triangle: an edge's (one or two)
+    // triangles side by side.
+    using Key = std::array<uint32_t, 3>;
+    std::vector<Key> sides;
+    sides.reserve(s.triangles.size());
+    for (uint32_t t = 0; t < s.triangle_count(); ++t)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t i = s.triangles[3 * std::size_t(t) + v], j = s.triangles[3 * std::size_t(t) + (v + 1) % 3];
+            sides.push_back({std::min(i, j), std::max(i, j), t});
+        }
+    std::sort(sides.begin(), sides.end());
+    const auto unit_normal = [&](uint32_t t) {
+        const uint32_t* f = &s.triangles[3 * std::size_t(t)];
+        const Vec3 n = (Vec3(&X[3 * std::size_t(f[1])]) - Vec3(&X[3 * std::size_t(f[0])]))
+                           .cross(Vec3(&X[3 * std::size_t(f[2])]) - Vec3(&X[3 * std::size_t(f[0])]));
+        const double norm = n.norm();
+        return norm > 0.0 ? Vec3(n / norm) : Vec3(Vec3::Zero());
+    };
+    const double cos15 = std::cos(15.0 * 3.14159265358979323846 / 180.0);
+    s.sharp_edges.clear();
+    for (std::size_t k = 0; k < sides.size();) {
+        std::size_t end = k + 1;
+        while (end < sides.size() && sides[end][0] == sides[k][0] && sides[end][1] == sides[k][1]) ++end;
+        // A border (one triangle) or a bend (two meeting at an angle); an edge of three or more
+        // triangles (a non-manifold surface) has no outer side to turn a normal to: left out.
+        const bool border = end == k + 1;
+        if (border || (end == k + 2 && unit_normal(sides[k][2]).dot(unit_normal(sides[k + 1][2])) < cos15))
+            s.sharp_edges.insert(s.sharp_edges.end(), {sides[k][0], sides[k][1], sides[k][2], border ? UINT32_MAX : sides[k + 1][2]});
+        k = end;
+    }
+}
+
 void compute_node_triangles(uint32_t node_count, Surface& s) {
     const uint32_t triangles = s.triangle_count();
     s.node_triangle_begin.assign(std::size_t(node_count) + 1, 0);

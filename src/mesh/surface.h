@@ -29,6 +29,12 @@ struct Surface {
     // The tets around each surface node: node i's are
     // node_elements[node_element_begin[i] .. node_element_begin[i + 1]) (none for other nodes).
     std::vector<uint32_t> node_element_begin, node_elements;
+    // The sharp edges of the surface at rest, 4 per edge: its nodes u < v and the triangles it
+    // joins (the second UINT32_MAX at an open border), ascending by (u, v). Sharp: the two faces
+    // meet at more than 15 degrees (a cube's edges, not the folds of its flat faces), or the
+    // edge is a border. The edges that can cross another body's between their nodes
+    // (contact/edge_edge.h); derived like the lists above.
+    std::vector<uint32_t> sharp_edges;
 
     uint32_t triangle_count() const { return uint32_t(triangles.size() / 3); }
 };
@@ -47,6 +53,9 @@ void compute_triangle_elements(const uint32_t* tets, uint32_t tet_count, uint32_
 // The tets around each surface node.
 void compute_node_elements(const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet, uint32_t node_count,
                            Surface& surface);
+
+// The sharp edges from the triangles and the reference positions X.
+void compute_sharp_edges(const double* X, Surface& surface);
 
 // The node-triangle lists (they depend on the triangles alone).
 void compute_node_triangles(uint32_t node_count, Surface& surface);

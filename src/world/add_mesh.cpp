@@ -221,6 +221,7 @@ void derive_reference_data(const Body& body, BodyReference& ref) {
     ref.composite = body.def.composite_tets != 0;
     ref.colouring = colour_tets(ref);
     compute_node_triangles(ref.node_count(), ref.surface);
+    compute_sharp_edges(ref.X.data(), ref.surface);
     compute_triangle_elements(ref.tets.data(), ref.tet_count(), ref.nodes_per_tet, ref.surface);
     if (body.is_deformable())
         compute_node_elements(ref.tets.data(), ref.tet_count(), ref.nodes_per_tet, ref.node_count(), ref.surface);

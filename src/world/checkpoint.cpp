@@ -42,7 +42,7 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 720,  // colouring, node-triangle lists, triangle elements, tree: derived
+static_assert(sizeof(BodyReference) == 744,  // colouring, node-triangle lists, sharp edges, triangle elements, tree: derived
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
 static_assert(sizeof(Attachment) == 360, "Attachment changed: update the checkpoint");
@@ -309,7 +309,7 @@ void check_image(const WorldImage& im, const std::string& path) {
         if (!ok) fail(path, "a contact names a missing body");
         const Body& a = im.bodies[c.body_a];
         const Body& b = im.bodies[c.body_b];
-        const bool feature = c.kind == ContactKind::face_shape;
+        const bool feature = c.kind == ContactKind::face_shape || c.kind == ContactKind::edge_edge;
         bool in_range = feature ? c.node == kFeatureNode : c.kind == ContactKind::node_face && c.node < a.ref.node_count();
         if (feature)
             for (uint32_t v : c.nodes_a) in_range = in_range && v < a.ref.node_count();
@@ -317,7 +317,8 @@ void check_image(const WorldImage& im, const std::string& path) {
             for (uint32_t v : c.triangle) in_range = in_range && v < b.ref.node_count();
         else
             in_range = in_range && c.shape < b.shapes.size();
-        in_range = in_range && (!feature || c.shape != UINT32_MAX) && c.end < 2;
+        in_range = in_range && (c.kind != ContactKind::face_shape || c.shape != UINT32_MAX) &&
+                   (c.kind != ContactKind::edge_edge || c.shape == UINT32_MAX) && c.end < 2;
         if (!in_range) fail(path, "a contact index is out of range");
     }
     auto live = [&](uint32_t slot, uint32_t generation) {

@@ -1,0 +1,120 @@
+#include "contact/edge_candidates.h"
+
+#include <algorithm>
+
+#include "contact/detection_tolerances.h"
+
+namespace lfem {
+namespace {
+
+using EdgeBox = EdgeCandidates::EdgeBox;
+
+// The box of sharp edge e of body b at x*, grown by `grow`.
+Aabb edge_box(const ContactBody& b, uint32_t e, double grow) {
+    Aabb box = empty_box();
+    for (int v = 0; v < 2; ++v) {
+        const double* x = b.x + 3 * std::size_t(b.sharp_edges[4 * std::size_t(e) + v]);
+        for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], x[k]), box.hi[k] = std::max(box.hi[k], x[k]);
+    }
+    return grown(box, grow);
+}
+
+// The sharp edge of b between nodes i and j, or UINT32_MAX (the list ascends by its nodes).
+uint32_t sharp_edge_between(const ContactBody& b, uint32_t i, uint32_t j) {
+    const uint32_t u = std::min(i, j), v = std::max(i, j);
+    uint32_t lo = 0, hi = b.sharp_edge_count;
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        const uint32_t* e = &b.sharp_edges[4 * std::size_t(mid)];
+        if (e[0] < u || (e[0] == u && e[1] < v)) lo = mid + 1;
+        else hi = mid;
+    }
+    const uint32_t* e = &b.sharp_edges[4 * std::size_t(lo)];
+    return lo < b.sharp_edge_count && e[0] == u && e[1] == v ? lo : UINT32_MAX;
+}
+
+// The pairs of a's and b's sharp edges whose boxes, a's grown by `reach`, overlap: a's edges near
+// b's box, b's found through its tree under them (one query: a large floor's edges are not all
+// visited), then swept along x (sort and sweep, O(n log n + pairs)).
+void pairs_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t ai, uint32_t bi,
+                     EdgeCandidates& e) {
+    const ContactBody& a = bodies[ai];
+    const ContactBody& b = bodies[bi];
+    // Within the band of crossing, or as deep as a held pair may start (detect_features.cpp),
+    // after both have used up their budgets.
+    const double l = contact_length(a, b);
+    const double reach =
+        c.budget[ai] + c.budget[bi] + triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l;
+    e.boxes_a.clear();
+    Aabb near = empty_box();
+    for (uint32_t ea = 0; ea < a.sharp_edge_count; ++ea) {
+        const Aabb box = edge_box(a, ea, reach);
+        if (!overlaps(box, c.body_box[bi])) continue;
+        e.boxes_a.push_back({box, ea});
+        join(near, box);
+    }
+    if (e.boxes_a.empty()) return;
+    e.triangles.clear();
+    c.tree_of(bodies, bi).query(near, b.x, b.triangles, 0.0, [&](uint32_t t) { e.triangles.push_back(t); });
+    e.edges.clear();
+    for (uint32_t t : e.triangles)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
+            const uint32_t eb = sharp_edge_between(b, tri[v], tri[(v + 1) % 3]);
+            if (eb != UINT32_MAX) e.edges.push_back(eb);
+        }
+    std::sort(e.edges.begin(), e.edges.end());
+    e.edges.erase(std::unique(e.edges.begin(), e.edges.end()), e.edges.end());
+    e.boxes_b.clear();
+    for (uint32_t eb : e.edges) {
+        const Aabb box = edge_box(b, eb, 0.0);
+        if (overlaps(box, near)) e.boxes_b.push_back({box, eb});
+    }
+    const auto by_lo = [](const EdgeBox& x, const EdgeBox& y) {
+        return x.box.lo[0] != y.box.lo[0] ? x.box.lo[0] < y.box.lo[0] : x.edge < y.edge;
+    };
+    std::sort(e.boxes_a.begin(), e.boxes_a.end(), by_lo);
+    std::sort(e.boxes_b.begin(), e.boxes_b.end(), by_lo);
+    const std::size_t first = e.pairs.size();
+    // Each box meets those of the other list that start within its x-extent, once: the one of
+    // the two that starts first finds the other.
+    std::size_t i = 0, j = 0;
+    while (i < e.boxes_a.size() && j < e.boxes_b.size()) {
+        const bool a_first = e.boxes_a[i].box.lo[0] <= e.boxes_b[j].box.lo[0];
+        const EdgeBox& x = a_first ? e.boxes_a[i] : e.boxes_b[j];
+        const std::vector<EdgeBox>& others = a_first ? e.boxes_b : e.boxes_a;
+        for (std::size_t k = a_first ? j : i; k < others.size() && others[k].box.lo[0] <= x.box.hi[0]; ++k)
+            if (overlaps(x.box, others[k].box))
+                e.pairs.push_back(a_first ? EdgePair{ai, bi, x.edge, others[k].edge} : EdgePair{ai, bi, others[k].edge, x.edge});
+        a_first ? ++i : ++j;
+    }
+    std::sort(e.pairs.begin() + first, e.pairs.end(), [](const EdgePair& x, const EdgePair& y) {
+        return x.edge_a != y.edge_a ? x.edge_a < y.edge_a : x.edge_b < y.edge_b;
+    });
+}
+
+}  // namespace
+
+void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e) {
+    if (e.search == c.searches) return;
+    e.search = c.searches;
+    e.pairs.clear();
+    // The pairs of different bodies the search put within reach (each once).
+    e.body_pairs.clear();
+    for (uint32_t ai = 0; ai + 1 < c.partner_begin.size(); ++ai)
+        for (uint32_t q = c.partner_begin[ai]; q < c.partner_begin[ai + 1]; ++q) {
+            const uint32_t bi = c.partners[q];
+            if (bi == ai || bodies[ai].sharp_edge_count == 0 || bodies[bi].sharp_edge_count == 0) continue;
+            e.body_pairs.push_back(ai < bi ? uint64_t(ai) << 32 | bi : uint64_t(bi) << 32 | ai);
+        }
+    std::sort(e.body_pairs.begin(), e.body_pairs.end());
+    e.body_pairs.erase(std::unique(e.body_pairs.begin(), e.body_pairs.end()), e.body_pairs.end());
+    for (uint64_t key : e.body_pairs) {
+        const uint32_t lo = uint32_t(key >> 32), hi = uint32_t(key);
+        if (!bodies_may_touch(bodies[lo], bodies[hi])) continue;
+        const bool swap = bodies[hi].sharp_edge_count < bodies[lo].sharp_edge_count;
+        pairs_of_bodies(bodies, c, swap ? hi : lo, swap ? lo : hi, e);
+    }
+}
+
+}  // namespace lfem

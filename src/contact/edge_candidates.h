@@ -1,0 +1,45 @@
+// Which sharp edges of two bodies may cross (contact/edge_edge.h) before the candidates of the
+// node pass run out (contact_candidates.h): made after each of its searches, from the bodies
+// where the search saw them, and held while its budgets hold. Two edges are a candidate pair
+// when their boxes, grown by both bodies' budgets and the detection's band, overlap: an edge
+// stays within its box grown by its body's budget (its nodes move at most that far per axis),
+// so no pair left out can come within the band of crossing before the next search. The pairs
+// of bodies are the search's (the bodies whose faces each body's nodes may reach); a body
+// against itself is left to its nodes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/box.h"
+#include "contact/contact_body.h"
+#include "contact/contact_candidates.h"
+
+namespace lfem {
+
+// Sharp edge `edge_a` of body `a` against sharp edge `edge_b` of body `b` (indices into the
+// contact list's bodies and into their ContactBody::sharp_edges).
+struct EdgePair {
+    uint32_t a = 0, b = 0;
+    uint32_t edge_a = 0, edge_b = 0;
+};
+
+struct EdgeCandidates {
+    uint64_t search = 0;           // the search (ContactCandidates::searches) they were made after
+    std::vector<EdgePair> pairs;   // by body pair, then a's edge, then b's
+    // Scratch.
+    struct EdgeBox {
+        Aabb box;
+        uint32_t edge;
+    };
+    std::vector<uint64_t> body_pairs;
+    std::vector<uint32_t> triangles, edges;
+    std::vector<EdgeBox> boxes_a, boxes_b;
+};
+
+// The pairs again when the candidates were searched since they were made (else nothing to do).
+// Of two bodies, the one with fewer sharp edges is `a`: its edges are boxed, the other's are
+// found through its triangle tree.
+void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e);
+
+}  // namespace lfem

@@ -1,0 +1,45 @@
+// Crossed edges: a boundary edge of one body against a boundary edge of another, where the
+// nodes of neither see the other (two bars crossed edge on edge, a cube's edge across a face's
+// inner edges). The constraint joins the closest points of the two segments, (1 - s) a0 + s a1
+// and (1 - t) b0 + t b1, with those parameters as the weights on the four nodes, along their
+// common normal turned out of b (the sides the edges' faces put outside). The edges are the
+// bodies' sharp edges at rest (mesh/surface.h): a fold of a flat face's triangulation meets
+// another body with its nodes.
+#pragma once
+
+#include <cstdint>
+
+#include "common/math.h"
+#include "contact/contact_body.h"
+
+namespace lfem {
+
+// The lines of sharp edges ea of a and eb of b (ContactBody::sharp_edges) at x*, for
+// edges_may_meet and test_edge_edge.
+struct EdgeLines {
+    Vec3 p0, q0;     // a's first node, b's
+    Vec3 u, v;       // a's edge, b's (second node less first)
+    Vec3 cross;      // u x v
+    double s = 0, t = 0;  // the parameters of the lines' closest points
+};
+
+// Whether the edges may touch (the cheap part of the test, alone for most candidate pairs):
+// they cross at an angle, their lines' closest points lie inside both (node contacts take their
+// ends), and these are within `reach` of each other along the lines' common normal at x* or at
+// x^n, or changed sides in between.
+bool edges_may_meet(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, double reach,
+                    EdgeLines& lines);
+
+// Then the pair: the common normal turned out of b lies on the outer side of both edges' faces,
+// and the closest points are within the capture band at the end of the step and were no
+// deeper than `allowance` at its start (the gap along the common normal is the same for any
+// two points of the lines at x*; at x^n it is measured at the same parameters).
+struct EdgeEdgeHit {
+    double s = 0, t = 0;            // the points' parameters on a's edge and on b's
+    Vec3 normal = Vec3::Zero();     // unit, out of b
+    double gap = 0, start_gap = 0;  // along the normal, at x* and at x^n (m)
+};
+bool test_edge_edge(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, const EdgeLines& lines,
+                    double band, double allowance, EdgeEdgeHit& hit);
+
+}  // namespace lfem
