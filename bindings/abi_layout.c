@@ -129,7 +129,7 @@ CHECK_OFFSET(lfem_event, normal, 80);
 
 /* 64-bit targets (8-byte pointers), which every binding test runs on */
 CHECK_SIZE(void*, 8);
-CHECK_SIZE(lfem_body_def, 120);
+CHECK_SIZE(lfem_body_def, 128);
 CHECK_OFFSET(lfem_body_def, type, 0);
 CHECK_OFFSET(lfem_body_def, model, 4);
 CHECK_OFFSET(lfem_body_def, young_modulus, 8);
@@ -147,6 +147,7 @@ CHECK_OFFSET(lfem_body_def, enable_sleep, 116);
 CHECK_OFFSET(lfem_body_def, self_contact, 117);
 CHECK_OFFSET(lfem_body_def, composite_tets, 118);
 CHECK_OFFSET(lfem_body_def, report_contacts, 119);
+CHECK_OFFSET(lfem_body_def, edge_contacts, 120);
 
 CHECK_SIZE(lfem_contact, 128);
 CHECK_OFFSET(lfem_contact, body_a, 0);

@@ -31,7 +31,7 @@ extern "C" {
 #endif
 
 #define LFEM_VERSION_MAJOR 0 /**< this header's version; lfem_version() gives the library's */
-#define LFEM_VERSION_MINOR 4 /**< this header's minor version */
+#define LFEM_VERSION_MINOR 5 /**< this header's minor version */
 #define LFEM_VERSION_PATCH 0 /**< this header's patch version */
 
 /* ---------------------------------------------------------------------------------------- */
@@ -304,6 +304,14 @@ typedef struct lfem_body_def {
                                    touch (LFEM_EVENT_CONTACT_PERSIST: its impulse, peak force and
                                    contact count), as a game reads a resting load; default 0
                                    (begins and ends only) */
+    uint8_t edge_contacts;    /**< 1 (default) = the sharp edges of the body's surface (faces
+                                   meeting at more than 15 degrees in the mesh as added, or a
+                                   border) are held apart from those of other bodies that
+                                   also have it where they cross between nodes
+                                   (LFEM_CONTACT_EDGE_EDGE); 0 = its contacts are its nodes'
+                                   only (and shapes between them), which saves the edge pass's
+                                   detection and constraints where a scene needs none */
+    uint8_t padding[7];       /**< unused, 0 */
 } lfem_body_def;
 
 /** A definition filled with the defaults above. Always start from it. */

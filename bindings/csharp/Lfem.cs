@@ -340,6 +340,7 @@ namespace Lfem
         public byte SelfContact;      // 1 = the surface collides with itself (deformable only), default 0
         public byte CompositeTets;    // 1 = 10-node tets as the composite element, default 0
         public byte ReportContacts;   // 1 = every step reports the pairs that stay in touch, default 0
+        public byte EdgeContacts;     // 1 (default) = sharp edges crossing other bodies' are held apart
 
         /// <summary>The defaults (lfem_body_def_default).</summary>
         public static BodyDef Default { get { return Native.lfem_body_def_default(); } }
@@ -440,7 +441,7 @@ namespace Lfem
     /// <summary>Version and status names of the loaded library.</summary>
     public static class Library
     {
-        public const int VersionMajor = 0, VersionMinor = 4, VersionPatch = 0;
+        public const int VersionMajor = 0, VersionMinor = 5, VersionPatch = 0;
 
         /// <summary>(major &lt;&lt; 16) | (minor &lt;&lt; 8) | patch of the library loaded.</summary>
         public static uint Version { get { return Native.lfem_version(); } }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest bindings_outside_rust: rust/ (a program depending on lfem = "0.4") built and run with
+# ctest bindings_outside_rust: rust/ (a program depending on lfem = "0.5") built and run with
 # cargo outside the repository, against the installed lfem. The crates come as a registry would
 # give them: cargo package makes lfem-sys and lfem, and a local directory source stands in for
 # crates.io (nothing is downloaded). The build script finds the library through PKG_CONFIG_PATH;

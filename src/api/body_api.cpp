@@ -38,6 +38,7 @@ void check_body_def(const lfem_body_def& d) {
     require(d.enable_sleep <= 1, "def->enable_sleep must be 0 or 1, got " + std::to_string(int(d.enable_sleep)));
     require(d.report_contacts <= 1,
             "def->report_contacts must be 0 or 1, got " + std::to_string(int(d.report_contacts)));
+    require(d.edge_contacts <= 1, "def->edge_contacts must be 0 or 1, got " + std::to_string(int(d.edge_contacts)));
     require(d.composite_tets <= 1, "def->composite_tets must be 0 or 1, got " + std::to_string(int(d.composite_tets)));
     require(d.self_contact == 0 || d.type == LFEM_BODY_DEFORMABLE,
             "def->self_contact needs a deformable body (the others keep their shape)");
@@ -122,6 +123,7 @@ LFEM_API lfem_body_def lfem_body_def_default(void) {
     d.mask_bits = 0xFFFFFFFFu;
     d.user_data = nullptr;
     d.enable_sleep = 1;
+    d.edge_contacts = 1;
     d.internal_value = body_def_cookie;
     return d;
 }

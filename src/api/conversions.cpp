@@ -153,6 +153,7 @@ BodyDef to_body_def(const lfem_body_def& d) {
     b.self_contact = d.self_contact != 0;
     b.composite_tets = d.composite_tets != 0;
     b.report_contacts = d.report_contacts != 0;
+    b.edge_contacts = d.edge_contacts != 0;
     return b;
 }
 
@@ -175,6 +176,7 @@ lfem_body_def to_c(const BodyDef& b, uint32_t cookie) {
     d.self_contact = b.self_contact;
     d.composite_tets = b.composite_tets;
     d.report_contacts = b.report_contacts;
+    d.edge_contacts = b.edge_contacts;
     return d;
 }
 

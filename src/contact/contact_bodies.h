@@ -34,6 +34,7 @@ struct ContactBodyInput {
     double friction = 0;
     uint32_t category = 1, mask = ~0u;
     bool self_contact = false;           // deformable bodies: the surface collides with itself
+    bool edge_contacts = true;           // its sharp edges meet other bodies' (edge_edge.h)
     double load_motion = 0;              // m, see ContactBody::load_motion
     const RigidShape* shapes = nullptr;  // static and kinematic bodies
     uint32_t shape_count = 0;

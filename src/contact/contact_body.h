@@ -39,7 +39,8 @@ struct ContactBody {
     const uint32_t* node_triangle_begin = nullptr;  // per node: where its triangles start
     const uint32_t* node_triangles = nullptr;       // (+1 at the end), ascending
     const uint32_t* sharp_edges = nullptr;      // the surface's sharp edges at rest, 4 each
-    uint32_t sharp_edge_count = 0;              //   (mesh/surface.h, Surface::sharp_edges)
+    uint32_t sharp_edge_count = 0;              //   (mesh/surface.h, Surface::sharp_edges); 0
+                                                //   when the body's edge pass is off
     const uint32_t* elements = nullptr;         // the tets, element_stride nodes each (corners first)
     uint32_t element_stride = 4;
     const uint32_t* triangle_element = nullptr; // per triangle: the tet it bounds (UINT32_MAX: none)

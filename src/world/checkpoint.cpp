@@ -24,7 +24,7 @@ namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 13; // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 14; // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
@@ -35,7 +35,8 @@ constexpr uint32_t kFormatVersion = 13; // 2: thread_count in the def, float tet
                                         // (derived from the body's def); 11: a body's
                                         // report_contacts; 12: forces for the next
                                         // call, a body's user id; 13: the contacts'
-                                        // kinds (edges, faces against shapes)
+                                        // kinds (edges, faces against shapes); 14: a
+                                        // body's edge_contacts
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -172,7 +173,8 @@ template <class A, class D>
 void body_def_fields(A& a, D& d) {
     a(d.type), a(d.model), a(d.young_modulus), a(d.poisson_ratio), a(d.density), a(d.damping);
     a(d.friction), a(d.linear_velocity), a(d.angular_velocity), a(d.category_bits), a(d.mask_bits);
-    a(d.enable_sleep), a(d.self_contact), a(d.composite_tets), a(d.report_contacts), a(d.user_id);
+    a(d.enable_sleep), a(d.self_contact), a(d.composite_tets), a(d.report_contacts), a(d.user_id),
+        a(d.edge_contacts);
 }
 
 template <class A, class B>

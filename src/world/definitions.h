@@ -43,6 +43,7 @@ struct BodyDef {
     bool self_contact = false;
     bool composite_tets = false;
     bool report_contacts = false;  // every call reports its pairs that stay in touch
+    bool edge_contacts = true;     // its sharp edges meet other bodies' (contact/edge_edge.h)
 };
 
 // Generation-checked handles (body_registry.h): {0, 0} is the null handle.

@@ -178,6 +178,7 @@ void World::detect() {
         in.category = b.def.category_bits;
         in.mask = b.def.mask_bits;
         in.self_contact = b.def.self_contact;
+        in.edge_contacts = b.def.edge_contacts;
         in.load_motion = sc.load_motion;
         in.shapes = b.shapes.data();
         in.shape_count = uint32_t(b.shapes.size());

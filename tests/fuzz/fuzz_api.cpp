@@ -447,7 +447,10 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
             d.composite_tets = (f >> 3) & 1;
             d.enable_sleep = ((f >> 4) & 1) ^ 1;
             d.report_contacts = (f >> 7) & 1;
-            if (f & 32) d.self_contact = in.byte(), d.composite_tets = in.byte(), d.enable_sleep = in.byte();
+            d.edge_contacts = ((f >> 2) ^ (f >> 3) ^ 1) & 1;  // off with one of the two bits above
+            if (f & 32)
+                d.self_contact = in.byte(), d.composite_tets = in.byte(), d.enable_sleep = in.byte(),
+                d.edge_contacts = in.byte();
             if (f & 64) d.internal_value ^= 1u + in.byte();
             void* user_data = reinterpret_cast<void*>(uintptr_t(0x1000 + 8 * s.bodies.size()));
             d.user_data = user_data;
@@ -458,7 +461,7 @@ lfem_status one_call(Session& s, Input& in, const char*& name) {
                 return st;
             }
             expect(d.internal_value == made.internal_value && d.self_contact <= 1 && d.composite_tets <= 1 &&
-                       d.enable_sleep <= 1,
+                       d.enable_sleep <= 1 && d.edge_contacts <= 1,
                    "a def that must be refused was accepted:", name);
             s.bodies.push_back({b, s.epoch, user_data});
             expect(lfem_body_is_valid(w, b) == 1 && lfem_body_is_awake(w, b) == 1 && node_count_of(w, b) == 0,

@@ -362,3 +362,43 @@ TEST(Features, EdgeContactsAreBitwiseTheSameOnAnyThreadsAndAfterACheckpoint) {
         return positions(w, bars.bar);
     });
 }
+
+// The edge pass is a body option (lfem_body_def.edge_contacts, default 1): with it off on the
+// upper bar, the pair has no edge records and the bars sink into each other as they did before
+// the edge pass (by more than a third of their thickness); a value other than 0 or 1 is refused
+// with a message that names the field, and the world is left as it was.
+TEST(Features, TheEdgePassIsABodyOption) {
+    EXPECT_EQ(lfem_body_def_default().edge_contacts, 1);
+    World w;
+    Mesh lower, upper;
+    square_bar(lower, 0, 0.0);
+    square_bar(upper, 1, 2 * 0.03 * std::sqrt(2.0) + 0.002);
+    lfem_body_def sd = lfem_body_def_default();
+    sd.type = LFEM_BODY_STATIC;
+    const lfem_body base = add_body(w, sd, lower);
+    lfem_body_def d = lfem_body_def_default();
+    d.young_modulus = 1e7;
+    d.damping = 50;
+    d.edge_contacts = 2;
+    lfem_body refused{};
+    EXPECT_EQ(lfem_body_create(w, &d, &refused), LFEM_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(lfem_last_error()).find("edge_contacts"), std::string::npos) << lfem_last_error();
+    lfem_world_stats stats{};
+    ASSERT_EQ(lfem_world_get_stats(w, &stats), LFEM_OK);
+    EXPECT_EQ(stats.body_count, 1u);
+    d.edge_contacts = 0;
+    const lfem_body bar = add_body(w, d, upper);
+    const std::vector<uint32_t> under = ridge_nodes(positions(w, bar), 1, false);
+    const std::vector<uint32_t> over = ridge_nodes(positions(w, base), 0, true);
+    uint32_t edge_contacts = 0;
+    double deepest = 0;
+    for (int frame = 0; frame < 48; ++frame) {
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK) << lfem_last_error();
+        for (const lfem_contact& k : contacts_of(w)) edge_contacts += k.kind == LFEM_CONTACT_EDGE_EDGE;
+        const double gap = ridge_height_at_zero(positions(w, bar), under, 1) - ridge_height_at_zero(positions(w, base), over, 0);
+        if (std::isfinite(gap)) deepest = std::max(deepest, -gap);
+    }
+    std::printf("edge pass off: %u edge contacts, the ridges %.1f mm into each other\n", edge_contacts, 1e3 * deepest);
+    EXPECT_EQ(edge_contacts, 0u);
+    EXPECT_GT(deepest, 0.02);  // a third of the bars' 6 cm
+}

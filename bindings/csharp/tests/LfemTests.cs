@@ -111,10 +111,10 @@ public static class LfemTests
         Layout<Overlap>(48, "Body", 0, "Triangle", 8, "Shape", 12, "Point", 16, "Distance", 40);
         Layout<RayHit>(88, "Body", 0, "Triangle", 8, "Shape", 12, "Barycentric1", 16, "Barycentric2", 24, "Point", 32,
                        "Normal", 56, "Distance", 80);
-        Layout<BodyDef>(120, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
+        Layout<BodyDef>(128, "Type", 0, "Model", 4, "YoungModulus", 8, "PoissonRatio", 16, "Density", 24, "Damping", 32,
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
                         "UserData", 104, "internalValue", 112, "EnableSleep", 116, "SelfContact", 117,
-                        "CompositeTets", 118);
+                        "CompositeTets", 118, "EdgeContacts", 120);
         Layout<Contact>(128, "BodyA", 0, "BodyB", 8, "Node", 16, "TriangleA", 20, "TriangleC", 28, "Barycentric1", 32,
                         "Barycentric2", 40, "Position", 48, "Normal", 72, "Force", 96, "Sliding", 120, "Kind", 121,
                         "Shape", 124);

@@ -189,6 +189,8 @@ class BodyDef(_Definition):
         ("self_contact", ctypes.c_uint8),     # 1 = the surface collides with itself (deformable)
         ("composite_tets", ctypes.c_uint8),   # 1 = 10-node tets as the composite element
         ("report_contacts", ctypes.c_uint8),  # 1 = every step reports the pairs that stay in touch
+        ("edge_contacts", ctypes.c_uint8),    # 1 (default) = sharp edges crossing others' held apart
+        ("_padding", ctypes.c_uint8 * 7),
     ]
     _enums = ("type", "model")
     type = _enum_property("_type", BodyType)

@@ -83,11 +83,12 @@ class Layout(unittest.TestCase):
         self.assertEqual(dt.itemsize, 88)
         for name in ("body", "triangle", "shape", "barycentric", "point", "normal", "distance"):
             self.assertEqual(dt.fields[name][1], getattr(lfem.RayHit, name).offset, name)
-        self.check(lfem.BodyDef, 120, {
+        self.check(lfem.BodyDef, 128, {
             "_type": 0, "_model": 4, "young_modulus": 8, "poisson_ratio": 16, "density": 24,
             "damping": 32, "friction": 40, "linear_velocity": 48, "angular_velocity": 72,
             "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112,
-            "enable_sleep": 116, "self_contact": 117, "composite_tets": 118})
+            "enable_sleep": 116, "self_contact": 117, "composite_tets": 118,
+            "edge_contacts": 120})
         self.check(lfem.Contact, 128, {
             "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
             "position": 48, "normal": 72, "force": 96, "sliding": 120, "kind": 121,

@@ -11,7 +11,7 @@ use std::mem::size_of;
 use std::os::raw::{c_char, c_double, c_int, c_void};
 
 pub const LFEM_VERSION_MAJOR: u32 = 0;
-pub const LFEM_VERSION_MINOR: u32 = 4;
+pub const LFEM_VERSION_MINOR: u32 = 5;
 pub const LFEM_VERSION_PATCH: u32 = 0;
 
 // ---- enums: 32-bit integers in C; kept as integers here (an unknown value is not UB) ---------
@@ -297,6 +297,8 @@ pub struct lfem_body_def {
     pub self_contact: u8,
     pub composite_tets: u8,
     pub report_contacts: u8,
+    pub edge_contacts: u8,
+    pub padding: [u8; 7],
 }
 
 #[repr(C)]
@@ -390,7 +392,7 @@ const _: () = assert!(size_of::<lfem_profile>() == 240);
 const _: () = assert!(size_of::<lfem_query_filter>() == 8);
 const _: () = assert!(size_of::<lfem_ray_hit>() == 88);
 #[cfg(target_pointer_width = "64")]
-const _: () = assert!(size_of::<lfem_body_def>() == 120);
+const _: () = assert!(size_of::<lfem_body_def>() == 128);
 #[cfg(target_pointer_width = "64")]
 const _: () = assert!(size_of::<lfem_shape_def>() == 120);
 

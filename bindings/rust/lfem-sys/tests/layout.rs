@@ -20,7 +20,7 @@ fn sizes_match_c() {
     assert_eq!(size_of::<lfem_world_def>(), 96);
     assert_eq!(size_of::<lfem_world_stats>(), 184);
     assert_eq!(size_of::<lfem_warning>(), 24);
-    assert_eq!(size_of::<lfem_body_def>(), 120);
+    assert_eq!(size_of::<lfem_body_def>(), 128);
     assert_eq!(size_of::<lfem_contact>(), 128);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
     assert_eq!(size_of::<lfem_phase_time>(), 16);
@@ -106,6 +106,7 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_body_def, mask_bits), 100);
     assert_eq!(offset!(lfem_body_def, enable_sleep), 116);
     assert_eq!(offset!(lfem_body_def, self_contact), 117);
+    assert_eq!(offset!(lfem_body_def, edge_contacts), 120);
     assert_eq!(offset!(lfem_body_def, composite_tets), 118);
     assert_eq!(offset!(lfem_world_def, enable_sleep), 61);
     assert_eq!(offset!(lfem_world_def, sleep_velocity), 80);

@@ -380,6 +380,10 @@ pub struct BodyDef {
     /// Every step reports each pair of this body that stays in touch
     /// ([`EventType::ContactPersist`]), default false.
     pub report_contacts: bool,
+    /// Its sharp edges (faces meeting at more than 15 degrees, or a border) are held apart from
+    /// other bodies' where they cross between nodes (contacts of kind edge-edge), default true;
+    /// false leaves its contacts to its nodes, saving the edge pass where a scene needs none.
+    pub edge_contacts: bool,
     internal_value: u32,
 }
 
@@ -408,6 +412,7 @@ impl Default for BodyDef {
             enable_sleep: d.enable_sleep != 0,
             composite_tets: d.composite_tets != 0,
             report_contacts: d.report_contacts != 0,
+            edge_contacts: d.edge_contacts != 0,
             internal_value: d.internal_value,
         }
     }
@@ -438,6 +443,8 @@ impl BodyDef {
             self_contact: u8::from(self.self_contact),
             composite_tets: u8::from(self.composite_tets),
             report_contacts: u8::from(self.report_contacts),
+            edge_contacts: u8::from(self.edge_contacts),
+            padding: [0; 7],
         }
     }
 }
