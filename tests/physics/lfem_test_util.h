@@ -387,4 +387,19 @@ inline double mean_boundary_edge(const BodyShape& s) {
     return sum / double(s.triangles.size());
 }
 
+// The deepest of points along a's boundary edges (7 on each, between its nodes) inside b (m).
+inline double deepest_edge_point(const BodyShape& a, const BodyShape& b) {
+    double deepest = 0;
+    for (std::size_t t = 0; t < a.triangles.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const double* p = &a.x[3 * a.triangles[t + k]];
+            const double* q = &a.x[3 * a.triangles[t + (k + 1) % 3]];
+            for (int i = 1; i < 8; ++i) {
+                const double u = i / 8.0, y[3] = {p[0] + u * (q[0] - p[0]), p[1] + u * (q[1] - p[1]), p[2] + u * (q[2] - p[2])};
+                deepest = std::max(deepest, depth_inside(y, b));
+            }
+        }
+    return deepest;
+}
+
 }  // namespace lfem_test

@@ -12,6 +12,7 @@
 #include <cstdlib>
 
 #include "physics/lfem_test_util.h"
+#include "physics/thin_plates.h"
 
 using namespace lfem_test;
 
@@ -118,6 +119,16 @@ void expect_at_rest(const StackMotion& m, int cubes) {
     }
 }
 
+// The thin plates swung together at `speed`: no edge point deeper in the other than 1 % of an
+// element at any call (the issue's target).
+void expect_plates_held(double speed) {
+    const ThinPlates p = thin_plates_crossed(speed, 1);
+    require(p.calls_ok, "every call succeeds");
+    std::printf("thin plates at %.0f m/s: deepest edge point %.3f mm (%.2f %% of an element)\n", speed, 1e3 * p.deepest,
+                100 * p.deepest / p.element);
+    EXPECT_LT(p.deepest, 0.01 * p.element);
+}
+
 }  // namespace
 
 // README, Known issues: between two deformable bodies both passes (nodes of A on faces of B and
@@ -140,3 +151,14 @@ TEST(KnownIssue, FrictionalStackComesToRestAfterTheSubStepHalves) {
 TEST(KnownIssue, StackOfTwoComesToRestAfterTheSubStepHalves) {
     expect_at_rest(stack_after_the_substep_halves(2), 2);
 }
+
+// README, Known issues: two thin plates crossed edge on edge (tests/physics/thin_plates.h), the
+// soft one (E 1e6) swung down at 10 m/s. The edge pairs catch the first crossing, but as the
+// plate folds round it within a call, the held crossings run along their edges to within 2 % of
+// an end node, where a pair lets go (the node's own contacts are meant to take over), and the
+// plates lock past each other. Expected to fail (WILL_FAIL) until a crossing is handed from edge
+// to edge: today the edges lock 4.6 mm (16 % of an element) into each other; the target is 1 %.
+TEST(KnownIssue, ThinPlatesAt10MetresASecond) { expect_plates_held(10.0); }
+
+// The control: the same plates at 7 m/s, under the same bound (0.024 mm, 0.09 % of an element).
+TEST(KnownIssue, ThinPlatesAt7MetresASecond) { expect_plates_held(7.0); }
