@@ -236,6 +236,7 @@ void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCa
         r.nodes_a[0] = ea[0], r.nodes_a[1] = r.nodes_a[2] = ea[1];
         r.triangle[0] = eb[0], r.triangle[1] = r.triangle[2] = eb[1];
         const ContactRecord* last = last_of(s, r);
+        if (!last && !lines.inside) continue;
         // It may start the step as deep as the faces' turn takes the edges' points in a step
         // (as a face held against a shape, above), a held one as deep as it was left besides.
         const double allowance = allowed_depth(last ? last->kept_offset() : 0.0, l) + kFallenRecovery * l;

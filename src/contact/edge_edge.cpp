@@ -8,8 +8,10 @@
 namespace lfem {
 namespace {
 
-// Closest points inside both edges only: within 2 % of an end the node's own constraints
-// (node against face) hold it.
+// A new pair's closest points lie inside both edges: within 2 % of an end the node's own
+// constraints (node against face) hold it. A held pair's may lie up to 2 % beyond an end (its
+// points stop at the end node), so that a crossing running along an edge is held until the
+// next edge's pair, 2 % inside that edge, takes it over.
 constexpr double kEdgeEnd = 0.02;
 // Edges within 10 degrees of parallel have no well-defined common normal: the nodes of the
 // one lying along the other meet its faces instead.
@@ -48,7 +50,8 @@ bool edges_may_meet(const ContactBody& a, uint32_t ea, const ContactBody& b, uin
     const Vec3 r = p0 - q0;
     const double uv = u.dot(v), ur = u.dot(r), vr = v.dot(r), denom = uu * vv - uv * uv;
     const double s = (uv * vr - ur * vv) / denom, t = (uu * vr - uv * ur) / denom;
-    if (!(s > kEdgeEnd && s < 1.0 - kEdgeEnd && t > kEdgeEnd && t < 1.0 - kEdgeEnd)) return false;
+    if (!(s > -kEdgeEnd && s < 1.0 + kEdgeEnd && t > -kEdgeEnd && t < 1.0 + kEdgeEnd)) return false;
+    lines.inside = s > kEdgeEnd && s < 1.0 - kEdgeEnd && t > kEdgeEnd && t < 1.0 - kEdgeEnd;
     // The points' separation along the common normal (unnormalised) at x* and at x^n: on the
     // same side both times, and further apart than `reach` both times, they neither touch nor
     // crossed (most candidate pairs end here, before the faces' normals are made).
@@ -57,7 +60,7 @@ bool edges_may_meet(const ContactBody& a, uint32_t ea, const ContactBody& b, uin
     const double end = cross.dot(r), start = cross.dot(a_start - b_start), far2 = reach * reach * cross2;
     if ((end > 0.0) == (start > 0.0) && end * end > far2 && start * start > far2) return false;
     lines.p0 = p0, lines.q0 = q0, lines.u = u, lines.v = v, lines.cross = cross;
-    lines.s = s, lines.t = t;
+    lines.s = std::clamp(s, 0.0, 1.0), lines.t = std::clamp(t, 0.0, 1.0);
     return true;
 }
 

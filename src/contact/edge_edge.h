@@ -20,13 +20,15 @@ struct EdgeLines {
     Vec3 p0, q0;     // a's first node, b's
     Vec3 u, v;       // a's edge, b's (second node less first)
     Vec3 cross;      // u x v
-    double s = 0, t = 0;  // the parameters of the lines' closest points
+    double s = 0, t = 0;  // the parameters of the lines' closest points (at most an end)
+    bool inside = false;  // both well inside their edges (a new pair's condition)
 };
 
 // Whether the edges may touch (the cheap part of the test, alone for most candidate pairs):
-// they cross at an angle, their lines' closest points lie inside both (node contacts take their
-// ends), and these are within `reach` of each other along the lines' common normal at x* or at
-// x^n, or changed sides in between.
+// they cross at an angle, their lines' closest points lie within both (a new pair's well
+// inside, `inside`: node contacts take their ends; a held pair's up to just beyond an end), and
+// these are within `reach` of each other along the lines' common normal at x* or at x^n, or
+// changed sides in between.
 bool edges_may_meet(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, double reach,
                     EdgeLines& lines);
 

@@ -153,12 +153,11 @@ TEST(KnownIssue, StackOfTwoComesToRestAfterTheSubStepHalves) {
 }
 
 // README, Known issues: two thin plates crossed edge on edge (tests/physics/thin_plates.h), the
-// soft one (E 1e6) swung down at 10 m/s. The edge pairs catch the first crossing, but as the
-// plate folds round it within a call, the held crossings run along their edges to within 2 % of
-// an end node, where a pair lets go (the node's own contacts are meant to take over), and the
-// plates lock past each other. Expected to fail (WILL_FAIL) until a crossing is handed from edge
-// to edge: today the edges lock 4.6 mm (16 % of an element) into each other; the target is 1 %.
-TEST(KnownIssue, ThinPlatesAt10MetresASecond) { expect_plates_held(10.0); }
+// soft one (E 1e6, wave speed 32 m/s) swung down at 15 m/s, half its wave speed: the edges lock
+// 5.0 mm (16 % of an element) into each other, where at 10 m/s they stay within 0.053 mm. Why
+// is not yet known (at 10 m/s a crossing running off the end of an edge was let go; that is
+// fixed). Expected to fail (WILL_FAIL); the target is 1 % of an element.
+TEST(KnownIssue, ThinPlatesAt15MetresASecond) { expect_plates_held(15.0); }
 
-// The control: the same plates at 7 m/s, under the same bound (0.024 mm, 0.09 % of an element).
-TEST(KnownIssue, ThinPlatesAt7MetresASecond) { expect_plates_held(7.0); }
+// The control: the same plates at 10 m/s, under the same bound (0.053 mm, 0.19 % of an element).
+TEST(KnownIssue, ThinPlatesAt10MetresASecond) { expect_plates_held(10.0); }
