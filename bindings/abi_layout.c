@@ -149,7 +149,7 @@ CHECK_OFFSET(lfem_body_def, composite_tets, 118);
 CHECK_OFFSET(lfem_body_def, report_contacts, 119);
 CHECK_OFFSET(lfem_body_def, edge_contacts, 120);
 
-CHECK_SIZE(lfem_contact, 128);
+CHECK_SIZE(lfem_contact, 168);
 CHECK_OFFSET(lfem_contact, body_a, 0);
 CHECK_OFFSET(lfem_contact, body_b, 8);
 CHECK_OFFSET(lfem_contact, node, 16);
@@ -162,6 +162,8 @@ CHECK_OFFSET(lfem_contact, sliding, 120);
 CHECK_OFFSET(lfem_contact, kind, 121);
 CHECK_OFFSET(lfem_contact, padding, 122);
 CHECK_OFFSET(lfem_contact, shape, 124);
+CHECK_OFFSET(lfem_contact, weights_a, 128);
+CHECK_OFFSET(lfem_contact, nodes_a, 152);
 
 CHECK_SIZE(lfem_attachment_def, 128);
 CHECK_OFFSET(lfem_attachment_def, body, 0);

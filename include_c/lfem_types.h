@@ -459,9 +459,9 @@ typedef enum lfem_contact_kind {
                                       point of body_a's edge (its two nodes share it) */
 } lfem_contact_kind;
 
-/** One active node-to-triangle contact of the last step (src/DESIGN.md section 5, eqs. 4 to 7). The contact
- * point on body_b's triangle (a, b, c) is (1 - t1 - t2) a + t2 b + t1 c with (t1, t2) =
- * barycentric. */
+/** One active contact of the last step (src/DESIGN.md section 5, eqs. 4 to 7): a point of
+ * body_a (nodes_a, weights_a) against a point of body_b. On body_b's triangle (a, b, c) that
+ * point is (1 - t1 - t2) a + t2 b + t1 c with (t1, t2) = barycentric; on a shape, position. */
 typedef struct lfem_contact {
     lfem_body body_a;        /**< the body that owns the node (the face) */
     lfem_body body_b;        /**< the body that owns the triangle (the shape) */
@@ -480,6 +480,13 @@ typedef struct lfem_contact {
     uint32_t shape;          /**< index of body_b's shape (lfem_body_add_shape) when the node
                                   touches a shape; UINT32_MAX when it touches a triangle. For a
                                   shape, triangle[] is UINT32_MAX and barycentric is 0 */
+    double weights_a[3];     /**< body_a's point as a weighted sum of its nodes nodes_a[] (the
+                                  weights sum to 1): the node alone (1, 0, 0) for a node's
+                                  record, a face's three corners, an edge's two ends (then the
+                                  third is 0) */
+    uint32_t nodes_a[3];     /**< node indices in body_a (unused: UINT32_MAX); nodes_a[0] is
+                                  `node` */
+    uint32_t padding2;       /**< unused, 0 */
 } lfem_contact;
 
 /** Events of the last lfem_world_step, fetched rather than called back (as in Box2D v3), so game

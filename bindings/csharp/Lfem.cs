@@ -359,11 +359,16 @@ namespace Lfem
         public Vec3 Normal;           // unit, out of BodyB's surface
         public Vec3 Force;            // N, on the node
         public byte Sliding;          // 1 when friction is on the Coulomb cone
-        public byte Kind;             // 0 node-face, 1 node-shape, 2 face-shape (lfem_contact_kind)
+        public byte Kind;             // 0 node-face, 1 node-shape, 2 face-shape, 3 edge-edge (lfem_contact_kind)
 #pragma warning disable 0169 // C padding
         private byte padding1, padding2;
 #pragma warning restore 0169
         public uint Shape;            // index of BodyB's rigid shape, or NoShape for a triangle
+        public Vec3 WeightsA;         // BodyA's point: sum of WeightsA[k] x node NodesA[k]
+        public uint NodesA0, NodesA1, NodesA2; // node indices in BodyA (NoShape: unused)
+#pragma warning disable 0169 // C padding
+        private uint padding3;
+#pragma warning restore 0169
 
         public const uint NoShape = 0xFFFFFFFFu;
 

@@ -42,6 +42,12 @@ lfem_contact contact_as_c(const World& w, const ContactRecord& c) {
     }
     out.barycentric[0] = c.t1;
     out.barycentric[1] = c.t2;
+    // body_a's side: the node alone, or the feature's nodes with their weights.
+    const int a_nodes = !c.feature() ? 1 : c.side_nodes();
+    for (int k = 0; k < 3; ++k) {
+        out.nodes_a[k] = k < a_nodes ? a.numbering().api_node(c.feature() ? c.nodes_a[k] : c.node) : UINT32_MAX;
+        out.weights_a[k] = k >= a_nodes ? 0.0 : c.feature() ? c.weights_a[k] : 1.0;
+    }
     out.sliding = c.sliding ? 1 : 0;
     return out;
 }

@@ -82,10 +82,22 @@ Resting drop_on(const std::vector<lfem_shape_def>& shapes, uint32_t n, const std
         lfem_world_query_contacts(w, nullptr, 0, &count);
         std::vector<lfem_contact> c(count);
         EXPECT_EQ(lfem_world_query_contacts(w, c.data(), count, &count), LFEM_OK);
+        const std::vector<double> x = positions(w, cube);
         for (const lfem_contact& k : c) {
             if (k.body_a.index != cube.index || k.body_b.index != holder.index) continue;
             total += k.force[2] / measured;
-            if (k.kind == LFEM_CONTACT_FACE_SHAPE) features += k.force[2] / measured;
+            if (k.kind != LFEM_CONTACT_FACE_SHAPE) continue;
+            features += k.force[2] / measured;
+            // The face's point (its three nodes, weights summing to 1) lies on the shape's
+            // tangent plane at `position` to the solve's residual (the shape's point is the one
+            // found at detection, before friction moved the face along it).
+            double gap = 0, sum = 0;
+            for (int v = 0; v < 3; ++v) {
+                sum += k.weights_a[v];
+                for (int d = 0; d < 3; ++d) gap += k.weights_a[v] * (x[3 * k.nodes_a[v] + d] - k.position[d]) * k.normal[d];
+            }
+            EXPECT_NEAR(sum, 1.0, 1e-12);
+            EXPECT_LT(std::fabs(gap), 1e-6);
         }
     }
     Resting r{};
@@ -332,6 +344,23 @@ TEST(Features, SquareBarsCrossedEdgeOnEdgeRestOnTheirEdges) {
         EXPECT_GT(edge_contacts, 0u);
         EXPECT_LT(deepest, 0.01 * element);
         EXPECT_LT(weight_error, 1e-3);
+        // Both sides of each record: body_a's point, the weighted sum of its nodes (an edge's
+        // two, a node alone), meets body_b's (`position`) where the pair rests, to the solve's
+        // residual (1e-6 m, far below the 1 % of an element the depth bound allows).
+        for (const lfem_contact& k : contacts_of(w)) {
+            const std::vector<double> x = positions(w, k.body_a.index == bars.bar.index ? bars.bar : bars.base);
+            const int used = k.kind == LFEM_CONTACT_EDGE_EDGE ? 2 : 1;
+            EXPECT_EQ(k.nodes_a[0], k.node);
+            EXPECT_EQ(k.nodes_a[2], UINT32_MAX);
+            EXPECT_EQ(used == 1, k.nodes_a[1] == UINT32_MAX);
+            double point[3] = {0, 0, 0}, sum = 0;
+            for (int v = 0; v < used; ++v) {
+                sum += k.weights_a[v];
+                for (int d = 0; d < 3; ++d) point[d] += k.weights_a[v] * x[3 * k.nodes_a[v] + d];
+            }
+            EXPECT_NEAR(sum, 1.0, 1e-12);
+            EXPECT_LT(std::hypot(point[0] - k.position[0], point[1] - k.position[1], point[2] - k.position[2]), 1e-6);
+        }
     }
 }
 

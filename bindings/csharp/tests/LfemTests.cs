@@ -115,9 +115,9 @@ public static class LfemTests
                         "Friction", 40, "LinearVelocity", 48, "AngularVelocity", 72, "CategoryBits", 96, "MaskBits", 100,
                         "UserData", 104, "internalValue", 112, "EnableSleep", 116, "SelfContact", 117,
                         "CompositeTets", 118, "EdgeContacts", 120);
-        Layout<Contact>(128, "BodyA", 0, "BodyB", 8, "Node", 16, "TriangleA", 20, "TriangleC", 28, "Barycentric1", 32,
+        Layout<Contact>(168, "BodyA", 0, "BodyB", 8, "Node", 16, "TriangleA", 20, "TriangleC", 28, "Barycentric1", 32,
                         "Barycentric2", 40, "Position", 48, "Normal", 72, "Force", 96, "Sliding", 120, "Kind", 121,
-                        "Shape", 124);
+                        "Shape", 124, "WeightsA", 128, "NodesA0", 152, "NodesA2", 160);
         Equal(4, Marshal.SizeOf(Enum.GetUnderlyingType(typeof(ShapeType))), "sizeof(lfem_shape_type)");
         Layout<ShapeDef>(120, "Type", 0, "PointCount", 4, "Center", 8, "RotationW", 32, "RotationZ", 56, "HalfExtents", 64,
                          "Radius", 88, "HalfLength", 96, "Points", 104, "internalValue", 112);

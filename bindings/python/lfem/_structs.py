@@ -369,6 +369,9 @@ class Contact(ctypes.Structure):
         ("kind", ctypes.c_uint8),
         ("_padding", ctypes.c_uint8 * 2),
         ("shape", ctypes.c_uint32),  # index of body_b's shape, or NO_SHAPE for a triangle
+        ("weights_a", _d3),  # body_a's point: sum of weights_a[k] x node nodes_a[k]
+        ("nodes_a", ctypes.c_uint32 * 3),  # node indices in body_a (NO_SHAPE: unused)
+        ("_padding2", ctypes.c_uint32),
     ]
 
 
@@ -413,13 +416,14 @@ class Overlap(ctypes.Structure):
 _BODY_DTYPE = np.dtype([("index", "<u4"), ("generation", "<u4")])
 
 _CONTACT_FIELDS = ["body_a", "body_b", "node", "triangle", "barycentric", "position", "normal",
-                   "force", "sliding", "kind", "shape"]
+                   "force", "sliding", "kind", "shape", "weights_a", "nodes_a"]
 
 #: The numpy dtype of lfem_contact (same offsets and size as Contact).
 CONTACT_DTYPE = np.dtype({
     "names": _CONTACT_FIELDS,
     "formats": [_BODY_DTYPE, _BODY_DTYPE, np.uint32, (np.uint32, 3), (np.float64, 2),
-                (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8, np.uint8, np.uint32],
+                (np.float64, 3), (np.float64, 3), (np.float64, 3), np.uint8, np.uint8, np.uint32,
+                (np.float64, 3), (np.uint32, 3)],
     "offsets": [getattr(Contact, name).offset for name in _CONTACT_FIELDS],
     "itemsize": ctypes.sizeof(Contact),
 })

@@ -89,20 +89,20 @@ class Layout(unittest.TestCase):
             "category_bits": 96, "mask_bits": 100, "user_data": 104, "_internal_value": 112,
             "enable_sleep": 116, "self_contact": 117, "composite_tets": 118,
             "edge_contacts": 120})
-        self.check(lfem.Contact, 128, {
+        self.check(lfem.Contact, 168, {
             "body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
             "position": 48, "normal": 72, "force": 96, "sliding": 120, "kind": 121,
-                    "shape": 124})
+                    "shape": 124, "weights_a": 128, "nodes_a": 152})
         self.check(lfem.ShapeDef, 120, {
             "_type": 0, "_point_count": 4, "center": 8, "rotation": 32, "half_extents": 64,
             "radius": 88, "half_length": 96, "_points": 104, "_internal_value": 112})
 
     def test_contact_dtype_matches_c(self):
         dt = lfem.CONTACT_DTYPE
-        self.assertEqual(dt.itemsize, 128)
+        self.assertEqual(dt.itemsize, 168)
         expected = {"body_a": 0, "body_b": 8, "node": 16, "triangle": 20, "barycentric": 32,
                     "position": 48, "normal": 72, "force": 96, "sliding": 120, "kind": 121,
-                    "shape": 124}
+                    "shape": 124, "weights_a": 128, "nodes_a": 152}
         for name, offset in expected.items():
             self.assertEqual(dt.fields[name][1], offset, name)
         self.assertEqual(dt["normal"].shape, (3,))

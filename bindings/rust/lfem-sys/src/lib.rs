@@ -317,6 +317,9 @@ pub struct lfem_contact {
     pub padding: [u8; 2],
     /// Index of body_b's shape, or u32::MAX when the node touches a triangle.
     pub shape: u32,
+    pub weights_a: [c_double; 3],
+    pub nodes_a: [u32; 3],
+    pub padding2: u32,
 }
 
 #[repr(C)]
@@ -386,7 +389,7 @@ const _: () = assert!(size_of::<lfem_attachment_def>() == 128);
 const _: () = assert!(size_of::<lfem_world_stats>() == 184);
 const _: () = assert!(size_of::<lfem_warning_kind>() == 4);
 const _: () = assert!(size_of::<lfem_warning>() == 24);
-const _: () = assert!(size_of::<lfem_contact>() == 128);
+const _: () = assert!(size_of::<lfem_contact>() == 168);
 const _: () = assert!(size_of::<lfem_phase_time>() == 16);
 const _: () = assert!(size_of::<lfem_profile>() == 240);
 const _: () = assert!(size_of::<lfem_query_filter>() == 8);

@@ -21,7 +21,7 @@ fn sizes_match_c() {
     assert_eq!(size_of::<lfem_world_stats>(), 184);
     assert_eq!(size_of::<lfem_warning>(), 24);
     assert_eq!(size_of::<lfem_body_def>(), 128);
-    assert_eq!(size_of::<lfem_contact>(), 128);
+    assert_eq!(size_of::<lfem_contact>(), 168);
     assert_eq!(size_of::<lfem_shape_def>(), 120);
     assert_eq!(size_of::<lfem_phase_time>(), 16);
     assert_eq!(size_of::<lfem_profile>(), 240);
@@ -139,6 +139,8 @@ fn offsets_match_c() {
     assert_eq!(offset!(lfem_contact, sliding), 120);
     assert_eq!(offset!(lfem_contact, kind), 121);
     assert_eq!(offset!(lfem_contact, shape), 124);
+    assert_eq!(offset!(lfem_contact, weights_a), 128);
+    assert_eq!(offset!(lfem_contact, nodes_a), 152);
 
     assert_eq!(offset!(lfem_shape_def, point_count), 4);
     assert_eq!(offset!(lfem_shape_def, center), 8);

@@ -553,12 +553,19 @@ pub struct Contact {
     pub force: [f64; 3],
     /// 1 when friction is on the Coulomb cone, else 0 (see [`Contact::is_sliding`]).
     pub sliding: u8,
-    /// What the record joins: 0 node-face, 1 node-shape, 2 face-shape (`lfem_contact_kind`).
+    /// What the record joins: 0 node-face, 1 node-shape, 2 face-shape, 3 edge-edge
+    /// (`lfem_contact_kind`).
     pub kind: u8,
     padding: [u8; 2],
     /// Index of body_b's rigid shape the node touches, or `u32::MAX` for a triangle (then
     /// `triangle` and `barycentric` are meaningful; for a shape they are `u32::MAX` and 0).
     pub shape: u32,
+    /// body_a's point as a weighted sum of `nodes_a` (the node alone, a face's three corners
+    /// or an edge's two ends).
+    pub weights_a: [f64; 3],
+    /// Node indices in body_a (`u32::MAX` where unused); the first is `node`.
+    pub nodes_a: [u32; 3],
+    padding2: u32,
 }
 
 impl Default for Contact {
@@ -576,6 +583,9 @@ impl Default for Contact {
             kind: 0,
             padding: [0; 2],
             shape: u32::MAX,
+            weights_a: [0.0; 3],
+            nodes_a: [u32::MAX; 3],
+            padding2: 0,
         }
     }
 }
@@ -600,7 +610,7 @@ const _: () = assert!(size_of::<Body>() == size_of::<sys::lfem_body>());
 const _: () = assert!(align_of::<Body>() == align_of::<sys::lfem_body>());
 const _: () = assert!(size_of::<Contact>() == size_of::<sys::lfem_contact>());
 const _: () = assert!(align_of::<Contact>() == align_of::<sys::lfem_contact>());
-const _: () = assert!(size_of::<Contact>() == 128);
+const _: () = assert!(size_of::<Contact>() == 168);
 
 /// Statistics of a world (lfem_world_stats): time, energies, momenta, solver figures.
 pub type WorldStats = sys::lfem_world_stats;
