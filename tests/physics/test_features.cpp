@@ -12,6 +12,7 @@
 
 #include "physics/lfem_test_util.h"
 #include "physics/thin_plates.h"
+#include "physics/torus_mesh.h"
 
 using namespace lfem_test;
 
@@ -493,4 +494,92 @@ TEST(Features, AThinPlateSwungEdgeFirstOntoAnotherIsHeldByItsEdges) {
                     "element)\n", p == &on ? "on" : "off", 1e3 * p->deepest, 100 * p->deepest / p->element);
     EXPECT_LT(on.deepest, 0.01 * on.element);
     EXPECT_GT(off.deepest, 0.1 * off.element) << "the scene must need the edge pass";
+}
+
+// A chain of three soft rings (square section 2 cm, 2 x 2 cells, major radius 5 cm, 24 cells
+// round; E 1e6, damped) hanging from a static post (a capsule of radius 1 cm along x), each
+// ring threaded through the one above, turned a quarter turn to it, dropped 2 mm. The links
+// hold each other: after 1.5 s the post carries the chain's weight to 1e-3 (statics, averaged
+// over the last 0.25 s), and the rings hang in order, each centre a ring's inner diameter below
+// the last, as they rest on each other's bars (to 10 % of the section: the soft rings stretch;
+// a ring through another would be a section off). Where two bars cross, each one's sharp edges
+// lie across the other's curved face between its nodes (a knife edge, not an edge crossing an
+// edge): they sink about 1.2 mm (9 % of an element) into it, printed here, not asserted
+// (README, known issues).
+TEST(Features, AChainOfSoftRingsHangsFromAPost) {
+    TorusMesh ring;
+    const double R = 0.05, a = 0.02;
+    ASSERT_TRUE(make_torus(R, a, 24, ring));
+    World w;
+    lfem_shape_def post = lfem_shape_def_default();
+    post.type = LFEM_SHAPE_CAPSULE;
+    post.radius = 0.01;
+    post.half_length = 0.1;
+    post.rotation[0] = std::sqrt(0.5), post.rotation[2] = std::sqrt(0.5);  // local z along world x
+    const lfem_body holder = static_shapes(w, {post});
+    lfem_body_def d = lfem_body_def_default();
+    d.damping = 20;
+    // Ring k: in the yz plane (axis x) for even k, the xz plane (axis y) for odd k, centred on
+    // the z axis where its top bar's inner face rests 2 mm above what holds it.
+    std::vector<lfem_body> rings;
+    std::vector<double> centre_z;
+    double inner_top = post.radius + 0.002;  // where the next ring's top bar's inner face goes
+    for (int k = 0; k < 3; ++k) {
+        const double cz = inner_top - (R - a / 2);
+        std::vector<double> x(ring.x.size());
+        for (std::size_t i = 0; i < ring.x.size(); i += 3) {
+            const double X = ring.x[i], Y = ring.x[i + 1], Z = ring.x[i + 2];
+            // Cyclic permutations of the axes keep the tets' orientation.
+            x[i] = k % 2 == 0 ? Z : Y, x[i + 1] = k % 2 == 0 ? X : Z, x[i + 2] = (k % 2 == 0 ? Y : X) + cz;
+        }
+        lfem_body b{};
+        ASSERT_EQ(lfem_body_create(w, &d, &b), LFEM_OK);
+        ASSERT_EQ(lfem_body_add_mesh(w, b, x.data(), uint32_t(x.size() / 3), ring.tets.data(), uint32_t(ring.tets.size() / 4)),
+                  LFEM_OK)
+            << lfem_last_error();
+        rings.push_back(b);
+        centre_z.push_back(cz);
+        inner_top = cz - (R - a / 2) + 0.002;  // the bottom bar's inner face, 2 mm above the next
+    }
+    const auto shape_of = [&](lfem_body b) {
+        BodyShape s;
+        s.x = positions(w, b);
+        s.tets = ring.tets.data();
+        s.tet_count = uint32_t(ring.tets.size() / 4);
+        uint32_t count = 0;
+        EXPECT_EQ(lfem_body_get_boundary_triangle_count(w, b, &count), LFEM_OK);
+        s.triangles.resize(3 * std::size_t(count));
+        EXPECT_EQ(lfem_body_get_boundary_triangles(w, b, s.triangles.data(), count), LFEM_OK);
+        return s;
+    };
+    double deepest = 0, element = 0, carried = 0;
+    const int frames = 90, averaged = 15;
+    for (int frame = 0; frame < frames; ++frame) {
+        ASSERT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK) << lfem_last_error();
+        if (frame >= frames - averaged)
+            for (const lfem_contact& k : contacts_of(w))
+                if (k.body_b.index == holder.index) carried += k.force[2] / averaged;
+        if (frame % 15 != 14) continue;
+        for (int k = 0; k + 1 < 3; ++k) {
+            const BodyShape upper = shape_of(rings[k]), lower = shape_of(rings[k + 1]);
+            deepest = std::max({deepest, deepest_edge_point(upper, lower), deepest_edge_point(lower, upper)});
+            element = mean_boundary_edge(upper);
+        }
+    }
+    double mass = 0, total = 0;
+    for (lfem_body b : rings) lfem_body_get_mass(w, b, &mass), total += mass;
+    const double weight_error = std::fabs(carried / (total * 9.81) - 1.0);
+    std::vector<double> z;
+    for (lfem_body b : rings) {
+        const std::vector<double> x = positions(w, b);
+        double sum = 0;
+        for (std::size_t i = 2; i < x.size(); i += 3) sum += x[i];
+        z.push_back(sum / double(x.size() / 3));
+    }
+    std::printf("chain of three rings: post carries the weight within %.1e; centres %.4f %.4f %.4f m (spacing %.4f %.4f, "
+                "resting %.4f); deepest edge point %.3f mm (%.2f %% of an element)\n",
+                weight_error, z[0], z[1], z[2], z[0] - z[1], z[1] - z[2], 2 * (R - a / 2), 1e3 * deepest,
+                100 * deepest / element);
+    EXPECT_LT(weight_error, 1e-3);
+    for (int k = 0; k + 1 < 3; ++k) EXPECT_NEAR(z[k] - z[k + 1], 2 * (R - a / 2), 0.1 * a) << "rings " << k << ", " << k + 1;
 }
