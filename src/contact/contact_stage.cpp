@@ -28,7 +28,8 @@ FallenIn ContactStage::detect(const std::vector<ContactRecord>& previous, bool s
     const double max_offset = kept_offset_known_ ? kept_offset_ : deepest_kept_offset(previous);
     const FallenIn fallen = detect_node_triangle(bodies_.bodies(), previous, max_offset, scan_overlaps, detection_,
                                                  detected_, detected_runs_, profile, pool);
-    detect_features(bodies_.bodies(), detection_.candidates, previous, features_, detected_, detected_runs_, profile);
+    detect_features(bodies_.bodies(), detection_.candidates, previous, features_, detected_, detected_runs_, profile,
+                    pool);
     return fallen;
 }
 

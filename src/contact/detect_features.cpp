@@ -215,18 +215,25 @@ void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactC
     }
 }
 
-// The candidate pairs of sharp edges that cross, or crossed and are still within the band.
-void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s) {
-    update_edge_pairs(bodies, c, s.edges);
-    for (const EdgePair& p : s.edges.pairs) {
+// Candidate edge pairs per block of the parallel edge pass (fixed: the same blocks, and so the
+// same records in the same order, for any thread count).
+constexpr uint32_t kEdgeBlock = 1024;
+
+// The candidate pairs [first, end) of sharp edges that cross, or crossed and are still within
+// the band, appended to `found`.
+void edge_block(const std::vector<ContactBody>& bodies, const ContactCandidates& c, const FeatureScratch& s,
+                uint32_t first, uint32_t end, std::vector<ContactRecord>& found) {
+    for (uint32_t k = first; k < end; ++k) {
+        const EdgePair& p = s.edges.pairs[k];
         const ContactBody& a = bodies[p.a];
         const ContactBody& b = bodies[p.b];
         if (!a.moves && !b.moves) continue;  // asleep, or static
         const double l = contact_length(a, b), band = kCaptureBand * l;
         // As deep as any pair may start (below), the deepest kept offset the search allowed for.
         EdgeLines lines;
-        if (!edges_may_meet(a, p.edge_a, b, p.edge_b, triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l,
-                            lines))
+        if (!edges_may_meet(a, p.edge_a, &s.edges.lines[6 * std::size_t(p.line_a)], b, p.edge_b,
+                            &s.edges.lines[6 * std::size_t(p.line_b)],
+                            triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l, lines))
             continue;
         const uint32_t* ea = &a.sharp_edges[4 * std::size_t(p.edge_a)];
         const uint32_t* eb = &b.sharp_edges[4 * std::size_t(p.edge_b)];
@@ -250,9 +257,22 @@ void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCa
         for (int d = 0; d < 3; ++d) r.normal[d] = hit.normal[d];
         if (last) warm_start(*last, r);
         r.offset = overlap_kept(hit.start_gap, last, l);
-        s.found.push_back(r);
-        s.start_gaps.push_back(hit.start_gap);
+        found.push_back(r);
     }
+}
+
+// Every candidate pair, in blocks on the pool; the blocks' records join s.found in block order.
+void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s,
+                         ThreadPool* pool) {
+    update_edge_pairs(bodies, c, s.edges);
+    update_edge_lines(bodies, s.edges);
+    const uint32_t count = uint32_t(s.edges.pairs.size()), blocks = (count + kEdgeBlock - 1) / kEdgeBlock;
+    if (s.edge_found.size() < blocks) s.edge_found.resize(blocks);
+    parallel_for(pool, blocks, [&](uint32_t b) {
+        s.edge_found[b].clear();
+        edge_block(bodies, c, s, b * kEdgeBlock, std::min(count, (b + 1) * kEdgeBlock), s.edge_found[b]);
+    });
+    for (uint32_t b = 0; b < blocks; ++b) s.found.insert(s.found.end(), s.edge_found[b].begin(), s.edge_found[b].end());
 }
 
 }  // namespace
@@ -261,7 +281,7 @@ bool feature_less(const ContactRecord& x, const ContactRecord& y) { return key_o
 
 void detect_features(const std::vector<ContactBody>& bodies, const ContactCandidates& c,
                      const std::vector<ContactRecord>& previous, FeatureScratch& s, std::vector<ContactRecord>& list,
-                     std::vector<RecordRun>& runs, Profile& profile) {
+                     std::vector<RecordRun>& runs, Profile& profile, ThreadPool* pool) {
     if (!c.valid) return;
     // Part of the sub-step's narrow phase: its time is added there, not its call.
     PhaseTimer timer(profile.narrow_phase, 0);
@@ -271,7 +291,7 @@ void detect_features(const std::vector<ContactBody>& bodies, const ContactCandid
     s.found.clear();
     s.start_gaps.clear();
     shapes_against_faces(bodies, c, s);
-    edges_against_edges(bodies, c, s);
+    edges_against_edges(bodies, c, s, pool);
     if (s.found.empty()) return;
     std::sort(s.found.begin(), s.found.end(), feature_less);
     // In the list's order: the features after the nodes of their body_a.

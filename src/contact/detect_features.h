@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/profile.h"
+#include "common/thread_pool.h"
 #include "contact/contact_body.h"
 #include "contact/contact_candidates.h"
 #include "contact/contact_record.h"
@@ -54,7 +55,7 @@ private:
 // Scratch kept between sub-steps for its capacity.
 struct FeatureScratch {
     std::vector<ContactRecord> found, merged;
-    std::vector<double> start_gaps;               // per found record: its gap at x^n
+    std::vector<double> start_gaps;               // per face-shape record found: its gap at x^n
     PlaceIndex previous_places;                   // of the shape's last records
     std::vector<const ContactRecord*> previous;  // the last list's feature records, in order
     std::vector<uint32_t> near;                   // bodies near a shape
@@ -62,6 +63,7 @@ struct FeatureScratch {
     std::vector<Aabb> regions;                    // where a shape's points under faces may be
     std::vector<uint32_t> match, shares;          // warm start by place (detect_features.cpp)
     EdgeCandidates edges;                         // pairs of sharp edges that may cross
+    std::vector<std::vector<ContactRecord>> edge_found;  // per block of the edge pass
 };
 
 // The order of feature records of the same pair of bodies: kind, body_b's shape, body_a's
@@ -72,6 +74,6 @@ bool feature_less(const ContactRecord& x, const ContactRecord& y);
 // `runs`, both updated). Leaves both untouched when no feature is found.
 void detect_features(const std::vector<ContactBody>& bodies, const ContactCandidates& c,
                      const std::vector<ContactRecord>& previous, FeatureScratch& s, std::vector<ContactRecord>& list,
-                     std::vector<RecordRun>& runs, Profile& profile);
+                     std::vector<RecordRun>& runs, Profile& profile, ThreadPool* pool);
 
 }  // namespace lfem

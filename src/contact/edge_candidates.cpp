@@ -85,7 +85,8 @@ void pairs_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandid
         const std::vector<EdgeBox>& others = a_first ? e.boxes_b : e.boxes_a;
         for (std::size_t k = a_first ? j : i; k < others.size() && others[k].box.lo[0] <= x.box.hi[0]; ++k)
             if (overlaps(x.box, others[k].box))
-                e.pairs.push_back(a_first ? EdgePair{ai, bi, x.edge, others[k].edge} : EdgePair{ai, bi, others[k].edge, x.edge});
+                e.pairs.push_back(a_first ? EdgePair{ai, bi, x.edge, others[k].edge, 0, 0}
+                                          : EdgePair{ai, bi, others[k].edge, x.edge, 0, 0});
         a_first ? ++i : ++j;
     }
     std::sort(e.pairs.begin() + first, e.pairs.end(), [](const EdgePair& x, const EdgePair& y) {
@@ -114,6 +115,31 @@ void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCand
         if (!bodies_may_touch(bodies[lo], bodies[hi])) continue;
         const bool swap = bodies[hi].sharp_edge_count < bodies[lo].sharp_edge_count;
         pairs_of_bodies(bodies, c, swap ? hi : lo, swap ? lo : hi, e);
+    }
+    e.edges_used.clear();
+    for (const EdgePair& p : e.pairs) {
+        e.edges_used.push_back(uint64_t(p.a) << 32 | p.edge_a);
+        e.edges_used.push_back(uint64_t(p.b) << 32 | p.edge_b);
+    }
+    std::sort(e.edges_used.begin(), e.edges_used.end());
+    e.edges_used.erase(std::unique(e.edges_used.begin(), e.edges_used.end()), e.edges_used.end());
+    const auto place = [&](uint32_t body, uint32_t edge) {
+        const uint64_t key = uint64_t(body) << 32 | edge;
+        return uint32_t(std::lower_bound(e.edges_used.begin(), e.edges_used.end(), key) - e.edges_used.begin());
+    };
+    for (EdgePair& p : e.pairs) p.line_a = place(p.a, p.edge_a), p.line_b = place(p.b, p.edge_b);
+}
+
+
+void update_edge_lines(const std::vector<ContactBody>& bodies, EdgeCandidates& e) {
+    e.lines.resize(6 * e.edges_used.size());
+    for (std::size_t k = 0; k < e.edges_used.size(); ++k) {
+        const ContactBody& b = bodies[uint32_t(e.edges_used[k] >> 32)];
+        const uint32_t* edge = &b.sharp_edges[4 * std::size_t(uint32_t(e.edges_used[k]))];
+        const double* x0 = b.x + 3 * std::size_t(edge[0]);
+        const double* x1 = b.x + 3 * std::size_t(edge[1]);
+        double* line = &e.lines[6 * k];
+        for (int d = 0; d < 3; ++d) line[d] = x0[d], line[3 + d] = x1[d] - x0[d];
     }
 }
 

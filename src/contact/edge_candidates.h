@@ -22,11 +22,17 @@ namespace lfem {
 struct EdgePair {
     uint32_t a = 0, b = 0;
     uint32_t edge_a = 0, edge_b = 0;
+    uint32_t line_a = 0, line_b = 0;  // the edges' places in EdgeCandidates::edges_used
 };
 
 struct EdgeCandidates {
     uint64_t search = 0;           // the search (ContactCandidates::searches) they were made after
     std::vector<EdgePair> pairs;   // by body pair, then a's edge, then b's
+    // The edges the pairs name, each once (body << 32 | sharp edge, ascending), and per
+    // sub-step their lines at x* side by side (6 each: first node, second less first), which
+    // the pairs read instead of the bodies' scattered nodes.
+    std::vector<uint64_t> edges_used;
+    std::vector<double> lines;
     // Scratch.
     struct EdgeBox {
         Aabb box;
@@ -41,5 +47,8 @@ struct EdgeCandidates {
 // Of two bodies, the one with fewer sharp edges is `a`: its edges are boxed, the other's are
 // found through its triangle tree.
 void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e);
+
+// The used edges' lines at this sub-step's x* (EdgeCandidates::lines).
+void update_edge_lines(const std::vector<ContactBody>& bodies, EdgeCandidates& e);
 
 }  // namespace lfem

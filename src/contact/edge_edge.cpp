@@ -37,12 +37,11 @@ Vec3 outward_of(const ContactBody& b, uint32_t e) {
 
 }  // namespace
 
-bool edges_may_meet(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, double reach,
-                    EdgeLines& lines) {
+bool edges_may_meet(const ContactBody& a, uint32_t ea, const double* line_a, const ContactBody& b, uint32_t eb,
+                    const double* line_b, double reach, EdgeLines& lines) {
     const uint32_t* na = &a.sharp_edges[4 * std::size_t(ea)];
     const uint32_t* nb = &b.sharp_edges[4 * std::size_t(eb)];
-    const Vec3 p0 = position(a.x, na[0]), q0 = position(b.x, nb[0]);
-    const Vec3 u = position(a.x, na[1]) - p0, v = position(b.x, nb[1]) - q0;
+    const Vec3 p0(line_a), q0(line_b), u(line_a + 3), v(line_b + 3);
     const Vec3 cross = u.cross(v);
     const double uu = u.squaredNorm(), vv = v.squaredNorm(), cross2 = cross.squaredNorm();
     if (!(cross2 > kCrossingSin2 * uu * vv)) return false;  // near parallel (or collapsed)

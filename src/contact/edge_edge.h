@@ -29,8 +29,9 @@ struct EdgeLines {
 // inside, `inside`: node contacts take their ends; a held pair's up to just beyond an end), and
 // these are within `reach` of each other along the lines' common normal at x* or at x^n, or
 // changed sides in between.
-bool edges_may_meet(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, double reach,
-                    EdgeLines& lines);
+// `line_a`, `line_b`: the edges' lines at x* (the first node, then the second less the first).
+bool edges_may_meet(const ContactBody& a, uint32_t ea, const double* line_a, const ContactBody& b, uint32_t eb,
+                    const double* line_b, double reach, EdgeLines& lines);
 
 // Then the pair: the common normal turned out of b lies on the outer side of both edges' faces,
 // and the closest points are within the capture band at the end of the step and were no
