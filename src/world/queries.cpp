@@ -89,15 +89,21 @@ SurfacePoint World::closest_surface_point(const Body& b, const double point[3]) 
     const Vec3 p(point);
     const double* x = b.state.x.data();
     SurfacePoint best;
-    double nearest = HUGE_VAL;
-    for (std::size_t k = 0; k < t.size(); k += 3) {
-        double w[3];
-        const Vec3 q = closest_on_triangle(p, Vec3(x + 3 * std::size_t(t[k])), Vec3(x + 3 * std::size_t(t[k + 1])),
-                                           Vec3(x + 3 * std::size_t(t[k + 2])), w);
-        const double d2 = (q - p).squaredNorm();
-        if (d2 < nearest) nearest = d2, best.point = q, best.triangle = uint32_t(k / 3);
+    // Squared distances, unless a body far out (beyond 1e154 m) overflows them all: then the
+    // distances themselves, scaled (stableNorm), so that the answer stays a point and a finite
+    // distance.
+    for (const bool scaled : {false, true}) {
+        double nearest = HUGE_VAL;
+        for (std::size_t k = 0; k < t.size(); k += 3) {
+            double w[3];
+            const Vec3 q = closest_on_triangle(p, Vec3(x + 3 * std::size_t(t[k])), Vec3(x + 3 * std::size_t(t[k + 1])),
+                                               Vec3(x + 3 * std::size_t(t[k + 2])), w);
+            const double d = scaled ? (q - p).stableNorm() : (q - p).squaredNorm();
+            if (d < nearest) nearest = d, best.point = q, best.triangle = uint32_t(k / 3);
+        }
+        best.distance = scaled ? nearest : std::sqrt(nearest);
+        if (nearest < HUGE_VAL) break;
     }
-    best.distance = std::sqrt(nearest);
     return best;
 }
 

@@ -317,13 +317,16 @@ lfem_status teleport(Session& s, Input& in, lfem_world* w, lfem_body b, uint8_t 
             const lfem_status st = lfem_body_apply_impulse(w, b, arg(s, 0, p), arg(s, 1, j));
             if (st == LFEM_OK && read && lfem_body_get_momentum(w, b, P1, nullptr) == LFEM_OK)
                 for (int k = 0; k < 3; ++k)  // no more than the impulse (held nodes pass theirs on),
-                    // to the rounding of sums as large as the whole momentum and impulse: a rigid
-                    // body's node momenta sum omega x (m r) over its nodes, about zero to 1e-16 of
-                    // the spin (a 3e101 N s impulse along y moved x by 1e83; one along y on a body
-                    // of 6e298 kg m/s along z moved x by 2e282)
+                    // to the rounding of sums as large as the whole momentum, impulse and spin: a
+                    // rigid body's node momenta sum omega x (m r) over its nodes, about zero to
+                    // 1e-16 of the spin (a 3e101 N s impulse along y moved x by 1e83; one along y
+                    // on a body of 6e298 kg m/s along z moved x by 2e282; 5 N s at 9e61 m from
+                    // the body, by 6e46)
                     expect(std::isfinite(P1[k]) &&
-                               std::fabs(P1[k] - P0[k]) <= std::fabs(j[k]) * (1 + 1e-9) +
-                                                               1e-9 * (1 + std::hypot(P0[0], P0[1], P0[2]) + std::hypot(j[0], j[1], j[2])),
+                               std::fabs(P1[k] - P0[k]) <=
+                                   std::fabs(j[k]) * (1 + 1e-9) +
+                                       1e-9 * (1 + std::hypot(P0[0], P0[1], P0[2]) +
+                                               std::hypot(j[0], j[1], j[2]) * (1 + std::hypot(p[0], p[1], p[2]))),
                            "an impulse changed the momentum by more than itself:", name);
             return st;
         }
