@@ -106,6 +106,12 @@ void fit_step_and_masses(const Body& body, const WorldDef& def, BodyReference& r
             2.0 / scale_masses_for_step(mesh, body.lame(), body.def.density, omega_target, ref.mass.data(), pool).omega_max;
         ref.added_mass = 0.0;
         for (uint32_t i = 0; i < n; ++i) ref.added_mass += ref.mass[i] - physical[i];
+        // A step far below the body's own stable step asks for masses beyond a double (found by
+        // fuzz_api: the body then reported an infinite mass).
+        if (!std::isfinite(ref.added_mass) || !std::isfinite(ref.stable_step))
+            throw Error(Status::invalid_argument, "mass scaling to the world's step of " + number(def.mass_scaling_step) +
+                                                      " s would add more mass to the body than a double holds");
+        require_finite_mass(ref.mass, ref.X);
     } else if (body.is_deformable()) {
         ref.stable_step = 2.0 / estimate_stable_step(element_mesh(ref), body.lame(), pool).omega_max;
     }
