@@ -19,12 +19,9 @@ constexpr double kCrossingSin2 = 0.0302;  // sin^2(10 degrees)
 // The common normal must lie this far (a cosine) on the outer side of each edge's faces.
 constexpr double kOuterSide = 0.1;
 
+// A static body's normals were made once (the same bits), a moving one's at x*.
 Vec3 unit_normal(const ContactBody& b, uint32_t t) {
-    const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
-    const Vec3 p0 = position(b.x, tri[0]);
-    const Vec3 n = (position(b.x, tri[1]) - p0).cross(position(b.x, tri[2]) - p0);
-    const double norm = n.norm();
-    return norm > 0.0 ? Vec3(n / norm) : Vec3::Zero();
+    return b.face_normals ? position(b.face_normals, t) : unit_triangle_normal(b.x, &b.triangles[3 * std::size_t(t)]);
 }
 
 // The sum of the unit normals of the faces sharp edge e of b joins (one at a border): out of b.
@@ -48,25 +45,25 @@ bool edges_may_meet(const ContactBody& a, uint32_t ea, const double* line_a, con
     // The closest points of the two lines (Ericson, 5.1.8).
     const Vec3 r = p0 - q0;
     const double uv = u.dot(v), ur = u.dot(r), vr = v.dot(r), denom = uu * vv - uv * uv;
-    const double s = (uv * vr - ur * vv) / denom, t = (uu * vr - uv * ur) / denom;
-    if (!(s > -kEdgeEnd && s < 1.0 + kEdgeEnd && t > -kEdgeEnd && t < 1.0 + kEdgeEnd)) return false;
-    lines.inside = s > kEdgeEnd && s < 1.0 - kEdgeEnd && t > kEdgeEnd && t < 1.0 - kEdgeEnd;
+    const double s_line = (uv * vr - ur * vv) / denom, t_line = (uu * vr - uv * ur) / denom;
+    if (!(s_line > -kEdgeEnd && s_line < 1.0 + kEdgeEnd && t_line > -kEdgeEnd && t_line < 1.0 + kEdgeEnd)) return false;
+    lines.inside = s_line > kEdgeEnd && s_line < 1.0 - kEdgeEnd && t_line > kEdgeEnd && t_line < 1.0 - kEdgeEnd;
+    const double s = std::clamp(s_line, 0.0, 1.0), t = std::clamp(t_line, 0.0, 1.0);
     // The points' separation along the common normal (unnormalised) at x* and at x^n: on the
     // same side both times, and further apart than `reach` both times, they neither touch nor
     // crossed (most candidate pairs end here, before the faces' normals are made).
     const Vec3 a_start = (1.0 - s) * position(a.x_start, na[0]) + s * position(a.x_start, na[1]);
     const Vec3 b_start = (1.0 - t) * position(b.x_start, nb[0]) + t * position(b.x_start, nb[1]);
-    const double end = cross.dot(r), start = cross.dot(a_start - b_start), far2 = reach * reach * cross2;
+    const Vec3 apart = a_start - b_start;
+    const double end = cross.dot(r), start = cross.dot(apart), far2 = reach * reach * cross2;
     if ((end > 0.0) == (start > 0.0) && end * end > far2 && start * start > far2) return false;
-    lines.p0 = p0, lines.q0 = q0, lines.u = u, lines.v = v, lines.cross = cross;
-    lines.s = std::clamp(s, 0.0, 1.0), lines.t = std::clamp(t, 0.0, 1.0);
+    lines.p0 = p0, lines.q0 = q0, lines.u = u, lines.v = v, lines.cross = cross, lines.start = apart;
+    lines.s = s, lines.t = t;
     return true;
 }
 
 bool test_edge_edge(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, const EdgeLines& lines,
                     double band, double allowance, EdgeEdgeHit& hit) {
-    const uint32_t* na = &a.sharp_edges[4 * std::size_t(ea)];
-    const uint32_t* nb = &b.sharp_edges[4 * std::size_t(eb)];
     const double s = lines.s, t = lines.t;
     Vec3 n = lines.cross.normalized();
     const Vec3 out_a = outward_of(a, ea), out_b = outward_of(b, eb);
@@ -74,9 +71,7 @@ bool test_edge_edge(const ContactBody& a, uint32_t ea, const ContactBody& b, uin
     if (!(n.dot(out_b) > kOuterSide * out_b.norm() && -n.dot(out_a) > kOuterSide * out_a.norm())) return false;
     hit.gap = n.dot(lines.p0 + s * lines.u - lines.q0 - t * lines.v);
     if (!(hit.gap < band)) return false;
-    const Vec3 a_start = (1.0 - s) * position(a.x_start, na[0]) + s * position(a.x_start, na[1]);
-    const Vec3 b_start = (1.0 - t) * position(b.x_start, nb[0]) + t * position(b.x_start, nb[1]);
-    hit.start_gap = n.dot(a_start - b_start);
+    hit.start_gap = n.dot(lines.start);
     if (!(hit.start_gap > -allowance)) return false;
     hit.s = s, hit.t = t, hit.normal = n;
     return true;

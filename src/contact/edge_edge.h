@@ -20,6 +20,7 @@ struct EdgeLines {
     Vec3 p0, q0;     // a's first node, b's
     Vec3 u, v;       // a's edge, b's (second node less first)
     Vec3 cross;      // u x v
+    Vec3 start;      // a's point less b's at x^n (the same parameters s, t)
     double s = 0, t = 0;  // the parameters of the lines' closest points (at most an end)
     bool inside = false;  // both well inside their edges (a new pair's condition)
 };

@@ -121,13 +121,7 @@ void compute_sharp_edges(const double* X, Surface& s) {
             sides.push_back({std::min(i, j), std::max(i, j), t});
         }
     std::sort(sides.begin(), sides.end());
-    const auto unit_normal = [&](uint32_t t) {
-        const uint32_t* f = &s.triangles[3 * std::size_t(t)];
-        const Vec3 n = (Vec3(&X[3 * std::size_t(f[1])]) - Vec3(&X[3 * std::size_t(f[0])]))
-                           .cross(Vec3(&X[3 * std::size_t(f[2])]) - Vec3(&X[3 * std::size_t(f[0])]));
-        const double norm = n.norm();
-        return norm > 0.0 ? Vec3(n / norm) : Vec3(Vec3::Zero());
-    };
+    const auto unit_normal = [&](uint32_t t) { return unit_triangle_normal(X, &s.triangles[3 * std::size_t(t)]); };
     const double cos15 = std::cos(15.0 * 3.14159265358979323846 / 180.0);
     s.sharp_edges.clear();
     for (std::size_t k = 0; k < sides.size();) {

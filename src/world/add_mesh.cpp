@@ -242,12 +242,8 @@ void derive_reference_data(const Body& body, BodyReference& ref) {
     ref.bvh.build(ref.X.data(), ref.surface.triangles.data(), ref.surface.triangle_count());
     ref.face_normals.assign(3 * std::size_t(ref.surface.triangle_count()), 0.0);
     for (uint32_t t = 0; t < ref.surface.triangle_count(); ++t) {
-        const uint32_t* tri = &ref.surface.triangles[3 * std::size_t(t)];
-        const Vec3 pa(&ref.X[3 * std::size_t(tri[0])]), pb(&ref.X[3 * std::size_t(tri[1])]), pc(&ref.X[3 * std::size_t(tri[2])]);
-        const Vec3 n = (pb - pa).cross(pc - pa);
-        const double area2 = n.norm();
-        if (area2 > 0.0)
-            for (int k = 0; k < 3; ++k) ref.face_normals[3 * std::size_t(t) + k] = (n / area2)[k];
+        const Vec3 n = unit_triangle_normal(ref.X.data(), &ref.surface.triangles[3 * std::size_t(t)]);
+        for (int k = 0; k < 3; ++k) ref.face_normals[3 * std::size_t(t) + k] = n[k];
     }
 }
 
