@@ -14,6 +14,21 @@
 #include "world/world.h"
 
 namespace lfem {
+namespace {
+
+// The velocities an impulse leaves must be finite and carry a finite momentum: an impulse far
+// from a rigid body (the fuzzer's was 9e61 m away) spins it beyond a double.
+void require_finite_motion(const Body& body, const std::vector<double>& v) {
+    Vec3 momentum = Vec3::Zero();
+    for (uint32_t i = 0; i < body.ref.node_count(); ++i)
+        for (int k = 0; k < 3; ++k) momentum[k] += body.ref.mass[i] * v[3 * std::size_t(i) + k];
+    if (!std::isfinite(momentum.norm()))
+        throw Error(Status::invalid_argument, "the impulse would move the body faster than a double holds "
+                                              "(too large, or too far from the body)");
+}
+
+}  // namespace
+
 void World::apply_impulse(BodyHandle handle, const double point[3], const double impulse[3]) {
     const Body& body = bodies_.get(handle);
     if (!body.is_dynamic() || !body.has_mesh())
@@ -30,6 +45,7 @@ void World::apply_impulse(BodyHandle handle, const double point[3], const double
             const Vec3 dv = dV + dw.cross(Vec3(&body.state.x[3 * i]) - c);
             for (int k = 0; k < 3; ++k) v[3 * i + k] += dv[k];
         }
+        require_finite_motion(body, v);
         return set_velocities(handle, v.data());
     }
     const Skin at = bind_points(body, point, 1, body.ref.surface.edge_length, "point");
@@ -39,6 +55,7 @@ void World::apply_impulse(BodyHandle handle, const double point[3], const double
         const Vec3 dv = at.weights[k] / body.ref.mass[i] * J;
         for (int d = 0; d < 3; ++d) v[3 * std::size_t(i) + d] += dv[d];
     }
+    require_finite_motion(body, v);
     set_velocities(handle, v.data());
 }
 
