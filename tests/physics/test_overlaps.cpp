@@ -128,6 +128,15 @@ TEST(Overlaps, ABodyOfTetsIsMetAtItsSurfaceOrHoldsTheQuery) {
     EXPECT_NEAR(o[0].distance, std::sqrt(0.0125), kExact);
     expect_near3(o[0].point, 0.2, 0.1, 0.2, kExact, "the edge");
     EXPECT_TRUE(overlap_capsule(world, s0, s1, 0.11).empty());
+    // A capsule 1e4 m long along the edge (x = 0.2, z = 0.2), 0.1 + 5e-9 m from it: touching
+    // counts to 1e-12 of the query's size (1e-8 m here), and the distance reported stays within
+    // the radius, as lfem_overlap promises.
+    const double off = (0.1 + 5e-9) / std::sqrt(2.0);
+    const double l0[3] = {0.2 + off, -5000.0, 0.2 + off}, l1[3] = {0.2 + off, 5000.0, 0.2 + off};
+    o = overlap_capsule(world, l0, l1, 0.1);
+    ASSERT_EQ(o.size(), 1u);
+    EXPECT_LE(o[0].distance, 0.1);
+    EXPECT_NEAR(o[0].distance, 0.1, 1e-8);
 }
 
 // Several bodies, in body order; the filter; the buffer; bad input.
