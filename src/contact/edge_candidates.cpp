@@ -33,9 +33,20 @@ uint32_t sharp_edge_between(const ContactBody& b, uint32_t i, uint32_t j) {
     return lo < b.sharp_edge_count && e[0] == u && e[1] == v ? lo : UINT32_MAX;
 }
 
+// Two sharp edges of one body (self-contact) are a pair once (the first of the two as a's) and
+// only when they share no node: edges that meet at a node lie on each other there by
+// construction, and a crossing near that node is its own to hold (node against face).
+bool own_edges_may_cross(const ContactBody& b, uint32_t ea, uint32_t eb) {
+    if (!(ea < eb)) return false;
+    const uint32_t* p = &b.sharp_edges[4 * std::size_t(ea)];
+    const uint32_t* q = &b.sharp_edges[4 * std::size_t(eb)];
+    return p[0] != q[0] && p[0] != q[1] && p[1] != q[0] && p[1] != q[1];
+}
+
 // The pairs of a's and b's sharp edges whose boxes, a's grown by `reach`, overlap: a's edges near
 // b's box, b's found through its tree under them (one query: a large floor's edges are not all
-// visited), then swept along x (sort and sweep, O(n log n + pairs)).
+// visited), then swept along x (sort and sweep, O(n log n + pairs)). A self-contact body against
+// itself (a == b) the same way, each pair of its edges once (own_edges_may_cross).
 void pairs_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t ai, uint32_t bi,
                      EdgeCandidates& e) {
     const ContactBody& a = bodies[ai];
@@ -83,10 +94,12 @@ void pairs_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandid
         const bool a_first = e.boxes_a[i].box.lo[0] <= e.boxes_b[j].box.lo[0];
         const EdgeBox& x = a_first ? e.boxes_a[i] : e.boxes_b[j];
         const std::vector<EdgeBox>& others = a_first ? e.boxes_b : e.boxes_a;
-        for (std::size_t k = a_first ? j : i; k < others.size() && others[k].box.lo[0] <= x.box.hi[0]; ++k)
-            if (overlaps(x.box, others[k].box))
-                e.pairs.push_back(a_first ? EdgePair{ai, bi, x.edge, others[k].edge, 0, 0}
-                                          : EdgePair{ai, bi, others[k].edge, x.edge, 0, 0});
+        for (std::size_t k = a_first ? j : i; k < others.size() && others[k].box.lo[0] <= x.box.hi[0]; ++k) {
+            if (!overlaps(x.box, others[k].box)) continue;
+            const EdgePair p = a_first ? EdgePair{ai, bi, x.edge, others[k].edge, 0, 0}
+                                       : EdgePair{ai, bi, others[k].edge, x.edge, 0, 0};
+            if (ai != bi || own_edges_may_cross(a, p.edge_a, p.edge_b)) e.pairs.push_back(p);
+        }
         a_first ? ++i : ++j;
     }
     std::sort(e.pairs.begin() + first, e.pairs.end(), [](const EdgePair& x, const EdgePair& y) {
@@ -105,14 +118,15 @@ void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCand
     for (uint32_t ai = 0; ai + 1 < c.partner_begin.size(); ++ai)
         for (uint32_t q = c.partner_begin[ai]; q < c.partner_begin[ai + 1]; ++q) {
             const uint32_t bi = c.partners[q];
-            if (bi == ai || bodies[ai].sharp_edge_count == 0 || bodies[bi].sharp_edge_count == 0) continue;
+            if (bodies[ai].sharp_edge_count == 0 || bodies[bi].sharp_edge_count == 0) continue;
+            if (bi == ai && !bodies[ai].self_contact) continue;
             e.body_pairs.push_back(ai < bi ? uint64_t(ai) << 32 | bi : uint64_t(bi) << 32 | ai);
         }
     std::sort(e.body_pairs.begin(), e.body_pairs.end());
     e.body_pairs.erase(std::unique(e.body_pairs.begin(), e.body_pairs.end()), e.body_pairs.end());
     for (uint64_t key : e.body_pairs) {
         const uint32_t lo = uint32_t(key >> 32), hi = uint32_t(key);
-        if (!bodies_may_touch(bodies[lo], bodies[hi])) continue;
+        if (lo != hi && !bodies_may_touch(bodies[lo], bodies[hi])) continue;
         const bool swap = bodies[hi].sharp_edge_count < bodies[lo].sharp_edge_count;
         pairs_of_bodies(bodies, c, swap ? hi : lo, swap ? lo : hi, e);
     }

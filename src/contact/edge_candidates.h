@@ -4,8 +4,9 @@
 // when their boxes, grown by both bodies' budgets and the detection's band, overlap: an edge
 // stays within its box grown by its body's budget (its nodes move at most that far per axis),
 // so no pair left out can come within the band of crossing before the next search. The pairs
-// of bodies are the search's (the bodies whose faces each body's nodes may reach); a body
-// against itself is left to its nodes.
+// of bodies are the search's (the bodies whose faces each body's nodes may reach), a
+// self-contact body with itself among them (each pair of its edges once, none that share a
+// node).
 #pragma once
 
 #include <cstdint>

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -350,12 +352,14 @@ inline BodyShape body_shape(lfem_world* w, lfem_body b, const Mesh& mesh) {
 // from the body's surface, the true depth of a node that has passed through it (a node at an
 // interior face between two tets, in neither by much, is as deep as it is). `own`: y is that
 // node of the body itself (UINT32_MAX: it is not), whose own tets and triangles are left out
-// (it lies on them). Brute force, for the small meshes of the tests.
-inline double depth_inside(const double* y, const BodyShape& s, uint32_t own = UINT32_MAX) {
+// (it lies on them); `own` and `own2`: y is a point of the body's edge between those nodes.
+// Brute force, for the small meshes of the tests.
+inline double depth_inside(const double* y, const BodyShape& s, uint32_t own = UINT32_MAX, uint32_t own2 = UINT32_MAX) {
+    const auto owns = [&](uint32_t v) { return v == own || v == own2; };
     bool inside = false;
     for (uint32_t e = 0; e < s.tet_count && !inside; ++e) {
         const uint32_t* q = s.tets + 4 * e;
-        if (q[0] == own || q[1] == own || q[2] == own || q[3] == own) continue;
+        if (owns(q[0]) || owns(q[1]) || owns(q[2]) || owns(q[3])) continue;
         bool beside = false;
         for (int k = 0; k < 3 && !beside; ++k) {
             double lo = HUGE_VAL, hi = -HUGE_VAL;
@@ -368,7 +372,7 @@ inline double depth_inside(const double* y, const BodyShape& s, uint32_t own = U
     double depth = HUGE_VAL;
     for (std::size_t t = 0; t < s.triangles.size(); t += 3) {
         const uint32_t* f = &s.triangles[t];
-        if (f[0] == own || f[1] == own || f[2] == own) continue;
+        if (owns(f[0]) || owns(f[1]) || owns(f[2])) continue;
         depth = std::min(depth, distance_to_triangle(y, &s.x[3 * f[0]], &s.x[3 * f[1]], &s.x[3 * f[2]]));
     }
     return depth;
@@ -399,6 +403,45 @@ inline double deepest_edge_point(const BodyShape& a, const BodyShape& b) {
                 deepest = std::max(deepest, depth_inside(y, b));
             }
         }
+    return deepest;
+}
+
+// The sharp boundary edges of a body's shape (as lfem counts them at rest): two boundary
+// triangles meeting at more than 15 degrees, or a border. Each once, as (u, v) with u < v.
+inline std::vector<std::array<uint32_t, 2>> sharp_edges(const BodyShape& s) {
+    std::map<std::pair<uint32_t, uint32_t>, std::vector<std::array<double, 3>>> faces;
+    for (std::size_t t = 0; t < s.triangles.size(); t += 3) {
+        const double* a = &s.x[3 * s.triangles[t]];
+        const double* b = &s.x[3 * s.triangles[t + 1]];
+        const double* c = &s.x[3 * s.triangles[t + 2]];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (double& x : n) x /= len;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t p = s.triangles[t + k], q = s.triangles[t + (k + 1) % 3];
+            faces[{std::min(p, q), std::max(p, q)}].push_back(n);
+        }
+    }
+    std::vector<std::array<uint32_t, 2>> out;
+    for (const auto& [edge, n] : faces)
+        if (n.size() != 2 || n[0][0] * n[1][0] + n[0][1] * n[1][1] + n[0][2] * n[1][2] < std::cos(15 * M_PI / 180))
+            out.push_back({edge.first, edge.second});
+    return out;
+}
+
+// The deepest of points along a body's own edges (7 on each, between its nodes) inside its own
+// tets (depth_inside, leaving out the tets and triangles of the edge's nodes), m.
+inline double deepest_own_edge_point(const BodyShape& s, const std::vector<std::array<uint32_t, 2>>& edges) {
+    double deepest = 0;
+    for (const auto& e : edges) {
+        const double* p = &s.x[3 * e[0]];
+        const double* q = &s.x[3 * e[1]];
+        for (int i = 1; i < 8; ++i) {
+            const double u = i / 8.0, y[3] = {p[0] + u * (q[0] - p[0]), p[1] + u * (q[1] - p[1]), p[2] + u * (q[2] - p[2])};
+            deepest = std::max(deepest, depth_inside(y, s, e[0], e[1]));
+        }
+    }
     return deepest;
 }
 

@@ -436,6 +436,72 @@ TEST(Features, TheEdgePassIsABodyOption) {
     EXPECT_GT(deepest, 0.02);  // a third of the bars' 6 cm
 }
 
+// The crossed bars as one self-contact body of two parts (the lower part's nodes fixed, the
+// upper dropped from 2 mm): a body's own sharp edges crossing between nodes are held as two
+// bodies' are, its ridge no deeper in the lower part's than 1 % of an element at any call, by
+// edge records whose two sides are the same body. With the edge pass off (edge_contacts = 0)
+// the self-contact nodes alone let the ridges sink past a third of the bars' 6 cm, as two
+// bodies' did before the edge pass.
+TEST(Features, ABodysOwnEdgesCrossingAreHeldWithSelfContact) {
+    const double element = 0.6 / 13.0;
+    for (uint8_t edges : {1, 0}) {
+        World w;
+        Mesh lower, upper;
+        square_bar(lower, 0, 0.0);
+        square_bar(upper, 1, 2 * 0.03 * std::sqrt(2.0) + 0.002);
+        const uint32_t n_lower = lower.nodes();
+        std::vector<double> x(lfem_mesh_get_positions(lower.m), lfem_mesh_get_positions(lower.m) + 3 * n_lower);
+        x.insert(x.end(), lfem_mesh_get_positions(upper.m), lfem_mesh_get_positions(upper.m) + 3 * upper.nodes());
+        std::vector<uint32_t> tets(lfem_mesh_get_tets(lower.m), lfem_mesh_get_tets(lower.m) + 4 * lower.tets());
+        for (uint32_t k = 0; k < 4 * upper.tets(); ++k) tets.push_back(lfem_mesh_get_tets(upper.m)[k] + n_lower);
+        lfem_body_def d = lfem_body_def_default();
+        d.young_modulus = 1e7;
+        d.damping = 50;
+        d.self_contact = 1;
+        d.edge_contacts = edges;
+        lfem_body body{};
+        ASSERT_EQ(lfem_body_create(w, &d, &body), LFEM_OK) << lfem_last_error();
+        ASSERT_EQ(lfem_body_add_mesh(w, body, x.data(), uint32_t(x.size() / 3), tets.data(), uint32_t(tets.size() / 4)),
+                  LFEM_OK)
+            << lfem_last_error();
+        std::vector<uint32_t> fixed(n_lower);
+        for (uint32_t i = 0; i < n_lower; ++i) fixed[i] = i;
+        ASSERT_EQ(lfem_body_fix_nodes(w, body, fixed.data(), n_lower), LFEM_OK) << lfem_last_error();
+        // The ridges: the upper part's lowest line of nodes, the lower part's highest.
+        const std::vector<double> start = positions(w, body);
+        const std::vector<double> lower_x(start.begin(), start.begin() + 3 * n_lower);
+        const std::vector<double> upper_x(start.begin() + 3 * n_lower, start.end());
+        std::vector<uint32_t> under = ridge_nodes(upper_x, 1, false);
+        for (uint32_t& i : under) i += n_lower;
+        const std::vector<uint32_t> over = ridge_nodes(lower_x, 0, true);
+        ASSERT_EQ(under.size(), 14u);
+        ASSERT_EQ(over.size(), 14u);
+        double deepest = 0;
+        uint32_t own_edge_contacts = 0;
+        for (int frame = 0; frame < 48; ++frame) {
+            ASSERT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK) << lfem_last_error();
+            const std::vector<double> now = positions(w, body);
+            const double gap = ridge_height_at_zero(now, under, 1) - ridge_height_at_zero(now, over, 0);
+            if (edges) {
+                ASSERT_TRUE(std::isfinite(gap)) << "the ridges must cross at frame " << frame;
+            }
+            if (std::isfinite(gap)) deepest = std::max(deepest, -gap);
+            for (const lfem_contact& k : contacts_of(w))
+                own_edge_contacts += k.kind == LFEM_CONTACT_EDGE_EDGE && k.body_a.index == k.body_b.index;
+        }
+        std::printf("one self-contact body's bars crossed, edge pass %s: deepest ridge %.3f mm (%.2f %% of an "
+                    "element), %u own edge contacts over the calls\n",
+                    edges ? "on" : "off", 1e3 * deepest, 100 * deepest / element, own_edge_contacts);
+        if (edges) {
+            EXPECT_GT(own_edge_contacts, 0u);
+            EXPECT_LT(deepest, 0.01 * element);
+        } else {
+            EXPECT_EQ(own_edge_contacts, 0u);
+            EXPECT_GT(deepest, 0.02);  // a third of the bars' 6 cm
+        }
+    }
+}
+
 // A soft cube (10 cm, 3 x 3 x 3 cells, E 1e5) turned 45 degrees about x, dropped from 2 mm with
 // its lowest edge across the top edge of a static block (20 x 20 x 10 cm, 4 x 4 x 2 cells), the
 // two edges crossing between the nodes of both; it balances, tips and tumbles off over the
