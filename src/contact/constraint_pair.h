@@ -30,6 +30,10 @@ struct ConstraintPair {
     Vec3 start = Vec3::Zero();      // x_node - sum N_k x_k at the start of the step (the slip's origin)
     double offset = 0;              // the record's kept overlap: target gap -offset
     double H = 0;                   // the pair's scalar block of G Mhat^-1 G^T along the normal
+    // An edge pair's compliance (m/N; 0 for every other pair): it may yield compliance * lambda_n,
+    // at most `yield` (m) deep (constraint_pair.cpp, make_constraint_pair).
+    double compliance = 0;
+    double yield = 0;
     double mu = 0;
     double lambda_n = 0;            // N, the multipliers (the record's, written back)
     Vec3 lambda_t = Vec3::Zero();

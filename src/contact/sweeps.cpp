@@ -21,13 +21,26 @@ bool warm_start_pairs(ConstraintPair* pairs, uint32_t count) {
     return any_friction;
 }
 
+namespace {
+
+// The multiplier of a compliant pair (an edge pair, constraint_pair.h) for gap g: its target gap
+// is -compliance * lambda_n, the gap after the update g + H (lambda_n' - lambda_n), so
+// lambda_n' = lambda_n - (g + compliance lambda_n) / (H + compliance); where that would yield
+// deeper than q.yield, the exact update to the gap -yield.
+double compliant_update(const ConstraintPair& q, double g) {
+    const double soft = q.lambda_n - (g + q.compliance * q.lambda_n) / (q.H + q.compliance);
+    return q.compliance * soft <= q.yield ? soft : q.lambda_n - (g + q.yield) / q.H;
+}
+
+}  // namespace
+
 double normal_pass(ConstraintPair* pairs, uint32_t count, bool first) {
     double largest = 0.0;
     for (uint32_t k = 0; k < count; ++k) {
         ConstraintPair& q = pairs[k];
         if (!(q.H > 0.0)) continue;  // both sides immovable: nothing to solve
         const double g = q.n.dot(relative_position(q)) + q.offset;
-        const double lambda_n = std::max(0.0, q.lambda_n - g / q.H);
+        const double lambda_n = std::max(0.0, q.compliance > 0.0 ? compliant_update(q, g) : q.lambda_n - g / q.H);
         const double moved = apply(q, (lambda_n - q.lambda_n) * q.n);
         largest = std::max(largest, first ? moved : lambda_n > 0.0 || g < 0.0 ? std::fabs(g - q.seen_gap) : 0.0);
         q.seen_gap = g;

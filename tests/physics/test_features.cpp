@@ -347,7 +347,9 @@ TEST(Features, SquareBarsCrossedEdgeOnEdgeRestOnTheirEdges) {
         EXPECT_LT(weight_error, 1e-3);
         // Both sides of each record: body_a's point, the weighted sum of its nodes (an edge's
         // two, a node alone), meets body_b's (`position`) where the pair rests, to the solve's
-        // residual (1e-6 m, far below the 1 % of an element the depth bound allows).
+        // residual (1e-6 m, far below the 1 % of an element the depth bound allows); an edge
+        // pair besides yields under its force, at most 5e-3 of the contact length (the mean
+        // boundary edge, shorter than a cell's 46 mm): constraint_pair.cpp.
         for (const lfem_contact& k : contacts_of(w)) {
             const std::vector<double> x = positions(w, k.body_a.index == bars.bar.index ? bars.bar : bars.base);
             const int used = k.kind == LFEM_CONTACT_EDGE_EDGE ? 2 : 1;
@@ -360,7 +362,9 @@ TEST(Features, SquareBarsCrossedEdgeOnEdgeRestOnTheirEdges) {
                 for (int d = 0; d < 3; ++d) point[d] += k.weights_a[v] * x[3 * k.nodes_a[v] + d];
             }
             EXPECT_NEAR(sum, 1.0, 1e-12);
-            EXPECT_LT(std::hypot(point[0] - k.position[0], point[1] - k.position[1], point[2] - k.position[2]), 1e-6);
+            const double yield = k.kind == LFEM_CONTACT_EDGE_EDGE ? 5e-3 * element : 0.0;
+            EXPECT_LT(std::hypot(point[0] - k.position[0], point[1] - k.position[1], point[2] - k.position[2]),
+                      yield + 1e-6);
         }
     }
 }
