@@ -9,10 +9,17 @@
  * fastest run of each is kept (other load only ever slows a run down).
  *
  *   bench_game_scenes [--frames N] [--settle S] [--repeats R] [--only NAME] [--threads T]
- *                     [--reference CELLS]
+ *                     [--reference CELLS] [--placements P]
  *
  * --only NAME runs the scenes whose names begin with NAME (`--only cubes32` the three 32-cube
  * scenes). --threads T runs only that thread count (default: 1 and 2).
+ *
+ * --placements P runs each scene P times, placed P ways: as listed (the first), then with every
+ * body shifted by up to 0.5 mm in x and y (a fixed pseudo-random shift per placement and body).
+ * A pile is chaotic: where its cubes come to rest, and so how many sweeps its solve takes, moves
+ * with any change (the 48-cube pile at rest took 8 to 35 sweeps a sub-step over ten placements),
+ * so a change to the solve is judged on the mean of several placements, which the summary line
+ * after each scene's rows gives (ms per frame and sweeps, mean, least and most).
  *
  * --reference CELLS adds the contact-free reference: a cube of CELLS^3 cells (6 tets each, 55
  * gives about 1e6 tets) floating and spinning without gravity, stepped for a few sub-steps,
@@ -208,6 +215,20 @@ static void place(const scene* sc, int c, double offset[3], double size[3], uint
     }
 }
 
+/* The placement (--placements) the next run builds: 0 as listed, else every body shifted. */
+static int g_placement = 0;
+
+/* Body c's shift in x and y (m) in placement g_placement: up to 0.5 mm each way, from a small
+ * linear congruential generator (the same numbers on every platform). */
+static void placement_shift(int c, double offset[3]) {
+    if (g_placement == 0) return;
+    uint32_t state = 2654435761u * (uint32_t)g_placement + 40503u * (uint32_t)c + 1u;
+    for (int k = 0; k < 2; ++k) {
+        state = state * 1664525u + 1013904223u;
+        offset[k] += 1e-3 * ((state >> 8) / 16777216.0 - 0.5);
+    }
+}
+
 /* The scene's floor and its bodies (their handles into bodies[sc->cubes]). */
 static int build(lfem_world* w, const scene* sc, double* tets, lfem_body* bodies) {
     lfem_mesh* m = NULL;
@@ -224,6 +245,7 @@ static int build(lfem_world* w, const scene* sc, double* tets, lfem_body* bodies
         double offset[3], size[3];
         uint32_t cells[3];
         place(sc, c, offset, size, cells);
+        placement_shift(c, offset);
         lfem_body b;
         BENCH_TRY(lfem_mesh_create_box(size, cells, &m));
         BENCH_TRY(lfem_mesh_translate(m, offset));
@@ -379,7 +401,7 @@ static void reference_work(const void* arg, uint32_t threads, result* out) {
 static double share(const lfem_phase_time* p, double total) { return total > 0 ? 100.0 * p->seconds / total : 0; }
 
 int main(int argc, char** argv) {
-    int repeats = 1;
+    int repeats = 1, placements = 1;
     const char* only = NULL;
     uint32_t reference_cells = 0, only_threads = 0;
     for (int i = 1; i < argc; ++i) {
@@ -389,8 +411,12 @@ int main(int argc, char** argv) {
         else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!strcmp(argv[i], "--reference") && i + 1 < argc) reference_cells = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) only_threads = (uint32_t)atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--placements") && i + 1 < argc && atoi(argv[i + 1]) > 0)
+            placements = atoi(argv[++i]);
         else {
-            fprintf(stderr, "usage: %s [--frames N] [--settle S] [--repeats R] [--only NAME] [--threads T] [--reference CELLS]\n",
+            fprintf(stderr,
+                    "usage: %s [--frames N] [--settle S] [--repeats R] [--only NAME] [--threads T] [--reference CELLS] "
+                    "[--placements P]\n",
                     argv[0]);
             return 2;
         }
@@ -419,33 +445,48 @@ int main(int argc, char** argv) {
         double ms_by_threads[3] = {0, 0, 0}, rate_by_threads[3] = {0, 0, 0};
         for (uint32_t threads = 1; threads <= 2; ++threads) {
             if (only_threads && threads != only_threads) continue;
-            const result r = fastest_in_child(repeats, scene_work, sc, threads);
-            if (!r.ok) {
-                printf("%-15s %3u  FAILED\n", sc->name, threads);
-                failed = 1;
-                continue;
+            double ms_sum = 0, ms_lo = HUGE_VAL, ms_hi = 0, sw_sum = 0, sw_lo = HUGE_VAL, sw_hi = 0;
+            int placed = 0;
+            for (g_placement = 0; g_placement < placements; ++g_placement) {
+                char name[32];
+                snprintf(name, sizeof name, placements > 1 ? "%s#%d" : "%s", sc->name, g_placement);
+                const result r = fastest_in_child(repeats, scene_work, sc, threads);
+                if (!r.ok) {
+                    printf("%-15s %3u  FAILED\n", name, threads);
+                    failed = 1;
+                    continue;
+                }
+                const lfem_profile* p = &r.profile;
+                const double total = r.seconds;
+                const double detect = p->broad_phase.seconds + p->narrow_phase.seconds + p->shape_queries.seconds;
+                const double rate = r.tets * r.substeps / r.seconds;
+                const int frames = frames_of(sc);
+                const double solve_s = p->normal_solve.seconds + p->friction.seconds;
+                ms_by_threads[threads] = 1e3 * r.seconds / frames;
+                rate_by_threads[threads] = rate;
+                printf("%-15s %3u %6.0f %8.2f %8.2f %9.1f %8llu %8.2f | %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f | %6.1f %7.0f "
+                       "%6.0f %8.1e %5u | %.2f",
+                       name, threads, r.tets, ms_by_threads[threads], 1e3 * r.worst_frame, r.substeps / frames,
+                       (unsigned long long)p->candidate_searches, 1e-6 * rate,
+                       share(&p->internal_forces, total), share(&p->predictor, total), share(&p->broad_phase, total),
+                       share(&p->narrow_phase, total), share(&p->shape_queries, total),
+                       share(&p->normal_solve, total) + share(&p->friction, total), share(&p->commit, total),
+                       r.substeps > 0 ? (double)p->contact_sweeps / r.substeps : 0.0,
+                       r.substeps > 0 ? (double)p->constraint_updates / r.substeps : 0.0,
+                       p->constraint_updates ? 1e9 * solve_s / (double)p->constraint_updates : 0.0, r.rms_speed, r.contacts,
+                       p->internal_forces.seconds > 0 ? detect / p->internal_forces.seconds : 0.0);
+                if (reference[threads] > 0) printf(", %.2f", rate / reference[threads]);
+                printf("\n");
+                const double sweeps = r.substeps > 0 ? (double)p->contact_sweeps / r.substeps : 0.0;
+                ms_sum += ms_by_threads[threads], sw_sum += sweeps, ++placed;
+                ms_lo = fmin(ms_lo, ms_by_threads[threads]), ms_hi = fmax(ms_hi, ms_by_threads[threads]);
+                sw_lo = fmin(sw_lo, sweeps), sw_hi = fmax(sw_hi, sweeps);
             }
-            const lfem_profile* p = &r.profile;
-            const double total = r.seconds;
-            const double detect = p->broad_phase.seconds + p->narrow_phase.seconds + p->shape_queries.seconds;
-            const double rate = r.tets * r.substeps / r.seconds;
-            const int frames = frames_of(sc);
-            const double solve_s = p->normal_solve.seconds + p->friction.seconds;
-            ms_by_threads[threads] = 1e3 * r.seconds / frames;
-            rate_by_threads[threads] = rate;
-            printf("%-15s %3u %6.0f %8.2f %8.2f %9.1f %8llu %8.2f | %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f | %6.1f %7.0f "
-                   "%6.0f %8.1e %5u | %.2f",
-                   sc->name, threads, r.tets, ms_by_threads[threads], 1e3 * r.worst_frame, r.substeps / frames,
-                   (unsigned long long)p->candidate_searches, 1e-6 * rate,
-                   share(&p->internal_forces, total), share(&p->predictor, total), share(&p->broad_phase, total),
-                   share(&p->narrow_phase, total), share(&p->shape_queries, total),
-                   share(&p->normal_solve, total) + share(&p->friction, total), share(&p->commit, total),
-                   r.substeps > 0 ? (double)p->contact_sweeps / r.substeps : 0.0,
-                   r.substeps > 0 ? (double)p->constraint_updates / r.substeps : 0.0,
-                   p->constraint_updates ? 1e9 * solve_s / (double)p->constraint_updates : 0.0, r.rms_speed, r.contacts,
-                   p->internal_forces.seconds > 0 ? detect / p->internal_forces.seconds : 0.0);
-            if (reference[threads] > 0) printf(", %.2f", rate / reference[threads]);
-            printf("\n");
+            if (placements > 1 && placed > 0) {
+                ms_by_threads[threads] = ms_sum / placed;
+                printf("%-15s %3u %d placements: ms/frame mean %.2f (%.2f to %.2f), sweeps mean %.1f (%.1f to %.1f)\n",
+                       sc->name, threads, placed, ms_sum / placed, ms_lo, ms_hi, sw_sum / placed, sw_lo, sw_hi);
+            }
         }
         if (ms_by_threads[1] > 0 && ms_by_threads[2] > 0)
             printf("%-15s 2 threads / 1 thread: %.2f\n", sc->name, ms_by_threads[2] / ms_by_threads[1]);
