@@ -456,7 +456,10 @@ typedef enum lfem_contact_kind {
                                       (triangle[2] repeats triangle[1]), `position` the point of
                                       body_b's edge at weights 1 - t2, t2 (barycentric = (0, t2)),
                                       `normal` out of body_b, across both edges, `force` on the
-                                      point of body_a's edge (its two nodes share it) */
+                                      point of body_a's edge (its two nodes share it). Or one of
+                                      the twelve edges of body_b's box shape `shape`: then
+                                      triangle[] is UINT32_MAX and `position` the box edge's
+                                      point */
 } lfem_contact_kind;
 
 /** One active contact of the last step (src/DESIGN.md section 5, eqs. 4 to 7): a point of

@@ -275,6 +275,86 @@ void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCa
     for (uint32_t b = 0; b < blocks; ++b) s.found.insert(s.found.end(), s.edge_found[b].begin(), s.edge_found[b].end());
 }
 
+// Edge i of a box at a pose: along axis i / 4 from its first corner, the other two axes' sides
+// from bits 0 and 1 of i; `out` the sum of its two faces' unit normals.
+struct BoxEdge {
+    Vec3 from, along, out;
+};
+BoxEdge box_edge(const RigidShape& box, const ShapePose& pose, int i) {
+    const int axis = i / 4, a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    const double* h = box.half_extents;
+    const double s1 = i & 1 ? 1.0 : -1.0, s2 = i & 2 ? 1.0 : -1.0;
+    Vec3 corner, along = Vec3::Zero(), out = Vec3::Zero();
+    corner[axis] = -h[axis], corner[a1] = s1 * h[a1], corner[a2] = s2 * h[a2];
+    along[axis] = 2.0 * h[axis];
+    out[a1] = s1, out[a2] = s2;
+    return {pose.center + pose.rotation * corner, pose.rotation * along, pose.rotation * out};
+}
+
+// The sharp edges of body a near edge i of box k of body o (at the step's start and end) against
+// it: a crossing between the nodes of a's edge, which no face's point under the box sees (the
+// box's deepest point under a face lies at the face's border there).
+void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody& o, uint32_t k, int i,
+                            const ContactCandidates& c, FeatureScratch& s, const std::vector<ContactBody>& bodies) {
+    const RigidShape& box = o.shapes[k];
+    const BoxEdge end = box_edge(box, ShapePose::load(o.shape_pose + 7 * std::size_t(k)), i);
+    const BoxEdge start = box_edge(box, ShapePose::load(o.shape_pose_start + 7 * std::size_t(k)), i);
+    const double l = a.edge_length, band = kCaptureBand * l;
+    const double reach = triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l;
+    Aabb region = empty_box();
+    for (const Vec3& p : {end.from, Vec3(end.from + end.along), start.from, Vec3(start.from + start.along)})
+        for (int d = 0; d < 3; ++d) region.lo[d] = std::min(region.lo[d], p[d]), region.hi[d] = std::max(region.hi[d], p[d]);
+    s.triangles.clear();
+    c.tree_of(bodies, ai).query(grown(region, band + reach + 2.0 * c.budget[ai]), a.x, a.triangles, c.budget[ai],
+                                [&](uint32_t t) { s.triangles.push_back(t); });
+    sharp_edges_of(a, s.triangles, s.match);
+    for (uint32_t ea : s.match) {
+        const uint32_t* na = &a.sharp_edges[4 * std::size_t(ea)];
+        ContactRecord r;
+        r.body_a = a.slot, r.node = kFeatureNode, r.body_b = o.slot, r.shape = k, r.kind = ContactKind::edge_edge;
+        r.end = uint8_t(i);
+        r.nodes_a[0] = na[0], r.nodes_a[1] = r.nodes_a[2] = na[1];
+        r.triangle[0] = r.triangle[1] = r.triangle[2] = UINT32_MAX;
+        const ContactRecord* last = last_of(s, r);
+        const double allowance = allowed_depth(last ? last->kept_offset() : 0.0, l) + kFallenRecovery * l;
+        double line[6];
+        for (int d = 0; d < 3; ++d) line[d] = a.x[3 * std::size_t(na[0]) + d], line[3 + d] = a.x[3 * std::size_t(na[1]) + d] - line[d];
+        EdgeEdgeHit hit;
+        if (!test_edge_box_edge(a, ea, line, end.from, end.along, start.from, start.along, end.out, reach, band,
+                                allowance, last != nullptr, hit))
+            continue;
+        if (!last && !(hit.gap < 0.0)) continue;  // new only where the edges cross, as two bodies'
+        r.weights_a[0] = 1.0 - hit.s, r.weights_a[1] = hit.s;
+        for (int d = 0; d < 3; ++d) {
+            r.normal[d] = hit.normal[d];
+            r.point_end[d] = end.from[d] + hit.t * end.along[d];
+            r.point_start[d] = start.from[d] + hit.t * start.along[d];
+        }
+        if (last) warm_start(*last, r);
+        r.offset = overlap_kept(hit.start_gap, last, l);
+        s.found.push_back(r);
+    }
+}
+
+// Every box of static and kinematic bodies against the sharp edges of the moving bodies near it.
+void edges_against_boxes(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s) {
+    for (uint32_t oi : c.shape_bodies) {
+        const ContactBody& o = bodies[oi];
+        for (uint32_t k = 0; k < o.shape_count; ++k) {
+            if (o.shapes[k].type != ShapeType::box) continue;
+            Aabb box = shape_box(o.shapes[k], ShapePose::load(o.shape_pose + 7 * std::size_t(k)));
+            join(box, shape_box(o.shapes[k], ShapePose::load(o.shape_pose_start + 7 * std::size_t(k))));
+            s.near.clear();
+            c.body_grid.query(box, s.near);
+            for (uint32_t ai : s.near) {
+                const ContactBody& a = bodies[ai];
+                if (ai == oi || !a.moves || !is_movable(a) || a.sharp_edge_count == 0 || !bodies_may_touch(a, o)) continue;
+                for (int i = 0; i < 12; ++i) edges_against_box_edge(a, ai, o, k, i, c, s, bodies);
+            }
+        }
+    }
+}
+
 }  // namespace
 
 bool feature_less(const ContactRecord& x, const ContactRecord& y) { return key_of(x) < key_of(y); }
@@ -291,6 +371,7 @@ void detect_features(const std::vector<ContactBody>& bodies, const ContactCandid
     s.found.clear();
     s.start_gaps.clear();
     shapes_against_faces(bodies, c, s);
+    edges_against_boxes(bodies, c, s);
     edges_against_edges(bodies, c, s, pool);
     if (s.found.empty()) return;
     std::sort(s.found.begin(), s.found.end(), feature_less);

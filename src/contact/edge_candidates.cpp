@@ -19,20 +19,6 @@ Aabb edge_box(const ContactBody& b, uint32_t e, double grow) {
     return grown(box, grow);
 }
 
-// The sharp edge of b between nodes i and j, or UINT32_MAX (the list ascends by its nodes).
-uint32_t sharp_edge_between(const ContactBody& b, uint32_t i, uint32_t j) {
-    const uint32_t u = std::min(i, j), v = std::max(i, j);
-    uint32_t lo = 0, hi = b.sharp_edge_count;
-    while (lo < hi) {
-        const uint32_t mid = lo + (hi - lo) / 2;
-        const uint32_t* e = &b.sharp_edges[4 * std::size_t(mid)];
-        if (e[0] < u || (e[0] == u && e[1] < v)) lo = mid + 1;
-        else hi = mid;
-    }
-    const uint32_t* e = &b.sharp_edges[4 * std::size_t(lo)];
-    return lo < b.sharp_edge_count && e[0] == u && e[1] == v ? lo : UINT32_MAX;
-}
-
 // Two sharp edges of one body (self-contact) are a pair once (the first of the two as a's) and
 // only when they share no node: edges that meet at a node lie on each other there by
 // construction, and a crossing near that node is its own to hold (node against face).
@@ -67,15 +53,7 @@ void pairs_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandid
     if (e.boxes_a.empty()) return;
     e.triangles.clear();
     c.tree_of(bodies, bi).query(near, b.x, b.triangles, 0.0, [&](uint32_t t) { e.triangles.push_back(t); });
-    e.edges.clear();
-    for (uint32_t t : e.triangles)
-        for (int v = 0; v < 3; ++v) {
-            const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
-            const uint32_t eb = sharp_edge_between(b, tri[v], tri[(v + 1) % 3]);
-            if (eb != UINT32_MAX) e.edges.push_back(eb);
-        }
-    std::sort(e.edges.begin(), e.edges.end());
-    e.edges.erase(std::unique(e.edges.begin(), e.edges.end()), e.edges.end());
+    sharp_edges_of(b, e.triangles, e.edges);
     e.boxes_b.clear();
     for (uint32_t eb : e.edges) {
         const Aabb box = edge_box(b, eb, 0.0);
@@ -108,6 +86,31 @@ void pairs_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandid
 }
 
 }  // namespace
+
+void sharp_edges_of(const ContactBody& b, const std::vector<uint32_t>& triangles, std::vector<uint32_t>& out) {
+    out.clear();
+    for (uint32_t t : triangles)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
+            const uint32_t e = sharp_edge_between(b, tri[v], tri[(v + 1) % 3]);
+            if (e != UINT32_MAX) out.push_back(e);
+        }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+uint32_t sharp_edge_between(const ContactBody& b, uint32_t i, uint32_t j) {
+    const uint32_t u = std::min(i, j), v = std::max(i, j);
+    uint32_t lo = 0, hi = b.sharp_edge_count;
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        const uint32_t* e = &b.sharp_edges[4 * std::size_t(mid)];
+        if (e[0] < u || (e[0] == u && e[1] < v)) lo = mid + 1;
+        else hi = mid;
+    }
+    const uint32_t* e = &b.sharp_edges[4 * std::size_t(lo)];
+    return lo < b.sharp_edge_count && e[0] == u && e[1] == v ? lo : UINT32_MAX;
+}
 
 void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e) {
     if (e.search == c.searches) return;

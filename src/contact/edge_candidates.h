@@ -49,6 +49,11 @@ struct EdgeCandidates {
 // found through its triangle tree.
 void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e);
 
+// The sharp edge of b between nodes i and j, or UINT32_MAX (the list ascends by its nodes).
+uint32_t sharp_edge_between(const ContactBody& b, uint32_t i, uint32_t j);
+// The sharp edges among the edges of b's triangles `triangles`, each once, ascending, into out.
+void sharp_edges_of(const ContactBody& b, const std::vector<uint32_t>& triangles, std::vector<uint32_t>& out);
+
 // The used edges' lines at this sub-step's x* (EdgeCandidates::lines).
 void update_edge_lines(const std::vector<ContactBody>& bodies, EdgeCandidates& e);
 

@@ -34,47 +34,76 @@ Vec3 outward_of(const ContactBody& b, uint32_t e) {
 
 }  // namespace
 
-bool edges_may_meet(const ContactBody& a, uint32_t ea, const double* line_a, const ContactBody& b, uint32_t eb,
-                    const double* line_b, double reach, EdgeLines& lines) {
-    const uint32_t* na = &a.sharp_edges[4 * std::size_t(ea)];
-    const uint32_t* nb = &b.sharp_edges[4 * std::size_t(eb)];
-    const Vec3 p0(line_a), q0(line_b), u(line_a + 3), v(line_b + 3);
+namespace {
+
+// The closest points of the lines p0 + s u and q0 + t v (Ericson, 5.1.8) into lines (p0, q0,
+// u, v, cross, s, t, inside): false when the lines are near parallel or the points lie beyond
+// the edges (a new pair's well inside, a held pair's up to just beyond an end).
+bool closest_of_lines(const Vec3& p0, const Vec3& u, const Vec3& q0, const Vec3& v, EdgeLines& lines) {
     const Vec3 cross = u.cross(v);
     const double uu = u.squaredNorm(), vv = v.squaredNorm(), cross2 = cross.squaredNorm();
     if (!(cross2 > kCrossingSin2 * uu * vv)) return false;  // near parallel (or collapsed)
-    // The closest points of the two lines (Ericson, 5.1.8).
     const Vec3 r = p0 - q0;
     const double uv = u.dot(v), ur = u.dot(r), vr = v.dot(r), denom = uu * vv - uv * uv;
     const double s_line = (uv * vr - ur * vv) / denom, t_line = (uu * vr - uv * ur) / denom;
     if (!(s_line > -kEdgeEnd && s_line < 1.0 + kEdgeEnd && t_line > -kEdgeEnd && t_line < 1.0 + kEdgeEnd)) return false;
     lines.inside = s_line > kEdgeEnd && s_line < 1.0 - kEdgeEnd && t_line > kEdgeEnd && t_line < 1.0 - kEdgeEnd;
-    const double s = std::clamp(s_line, 0.0, 1.0), t = std::clamp(t_line, 0.0, 1.0);
-    // The points' separation along the common normal (unnormalised) at x* and at x^n: on the
-    // same side both times, and further apart than `reach` both times, they neither touch nor
-    // crossed (most candidate pairs end here, before the faces' normals are made).
-    const Vec3 a_start = (1.0 - s) * position(a.x_start, na[0]) + s * position(a.x_start, na[1]);
-    const Vec3 b_start = (1.0 - t) * position(b.x_start, nb[0]) + t * position(b.x_start, nb[1]);
-    const Vec3 apart = a_start - b_start;
-    const double end = cross.dot(r), start = cross.dot(apart), far2 = reach * reach * cross2;
-    if ((end > 0.0) == (start > 0.0) && end * end > far2 && start * start > far2) return false;
-    lines.p0 = p0, lines.q0 = q0, lines.u = u, lines.v = v, lines.cross = cross, lines.start = apart;
-    lines.s = s, lines.t = t;
+    lines.s = std::clamp(s_line, 0.0, 1.0), lines.t = std::clamp(t_line, 0.0, 1.0);
+    lines.p0 = p0, lines.q0 = q0, lines.u = u, lines.v = v, lines.cross = cross;
     return true;
+}
+
+// Whether the points, a_start less b_start at x^n (lines.start), are on the same side along
+// the common normal at x* and at x^n and further apart than `reach` both times: then they
+// neither touch nor crossed (most candidate pairs end here, before the faces' normals are made).
+bool apart(const EdgeLines& lines, double reach) {
+    const double end = lines.cross.dot(lines.p0 - lines.q0);  // the same for any points of the lines
+    const double start = lines.cross.dot(lines.start), far2 = reach * reach * lines.cross.squaredNorm();
+    return (end > 0.0) == (start > 0.0) && end * end > far2 && start * start > far2;
+}
+
+// The common normal turned out of b, on the outer side of both edges' faces (out_a, out_b: the
+// sums of their unit normals), and the gaps along it at x* and at x^n.
+bool oriented_gap(const EdgeLines& lines, const Vec3& out_a, const Vec3& out_b, double band, double allowance,
+                  EdgeEdgeHit& hit) {
+    Vec3 n = lines.cross.normalized();
+    if (n.dot(out_b - out_a) < 0.0) n = -n;
+    if (!(n.dot(out_b) > kOuterSide * out_b.norm() && -n.dot(out_a) > kOuterSide * out_a.norm())) return false;
+    hit.gap = n.dot(lines.p0 + lines.s * lines.u - lines.q0 - lines.t * lines.v);
+    if (!(hit.gap < band)) return false;
+    hit.start_gap = n.dot(lines.start);
+    if (!(hit.start_gap > -allowance)) return false;
+    hit.s = lines.s, hit.t = lines.t, hit.normal = n;
+    return true;
+}
+
+// The point of a's sharp edge e at parameter s at x^n.
+Vec3 start_point(const ContactBody& a, uint32_t e, double s) {
+    const uint32_t* n = &a.sharp_edges[4 * std::size_t(e)];
+    return (1.0 - s) * position(a.x_start, n[0]) + s * position(a.x_start, n[1]);
+}
+
+}  // namespace
+
+bool edges_may_meet(const ContactBody& a, uint32_t ea, const double* line_a, const ContactBody& b, uint32_t eb,
+                    const double* line_b, double reach, EdgeLines& lines) {
+    if (!closest_of_lines(Vec3(line_a), Vec3(line_a + 3), Vec3(line_b), Vec3(line_b + 3), lines)) return false;
+    lines.start = start_point(a, ea, lines.s) - start_point(b, eb, lines.t);
+    return !apart(lines, reach);
 }
 
 bool test_edge_edge(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, const EdgeLines& lines,
                     double band, double allowance, EdgeEdgeHit& hit) {
-    const double s = lines.s, t = lines.t;
-    Vec3 n = lines.cross.normalized();
-    const Vec3 out_a = outward_of(a, ea), out_b = outward_of(b, eb);
-    if (n.dot(out_b - out_a) < 0.0) n = -n;
-    if (!(n.dot(out_b) > kOuterSide * out_b.norm() && -n.dot(out_a) > kOuterSide * out_a.norm())) return false;
-    hit.gap = n.dot(lines.p0 + s * lines.u - lines.q0 - t * lines.v);
-    if (!(hit.gap < band)) return false;
-    hit.start_gap = n.dot(lines.start);
-    if (!(hit.start_gap > -allowance)) return false;
-    hit.s = s, hit.t = t, hit.normal = n;
-    return true;
+    return oriented_gap(lines, outward_of(a, ea), outward_of(b, eb), band, allowance, hit);
+}
+
+bool test_edge_box_edge(const ContactBody& a, uint32_t ea, const double* line_a, const Vec3& b0, const Vec3& v,
+                        const Vec3& b0_start, const Vec3& v_start, const Vec3& out_b, double reach, double band,
+                        double allowance, bool held, EdgeEdgeHit& hit) {
+    EdgeLines lines;
+    if (!closest_of_lines(Vec3(line_a), Vec3(line_a + 3), b0, v, lines) || !(held || lines.inside)) return false;
+    lines.start = start_point(a, ea, lines.s) - (b0_start + lines.t * v_start);
+    return !apart(lines, reach) && oriented_gap(lines, outward_of(a, ea), out_b, band, allowance, hit);
 }
 
 }  // namespace lfem

@@ -4,7 +4,7 @@
 // and (1 - t) b0 + t b1, with those parameters as the weights on the four nodes, along their
 // common normal turned out of b (the sides the edges' faces put outside). The edges are the
 // bodies' sharp edges at rest (mesh/surface.h): a fold of a flat face's triangulation meets
-// another body with its nodes.
+// another body with its nodes. A rigid box's edges meet a body's sharp edges the same way.
 #pragma once
 
 #include <cstdint>
@@ -45,5 +45,14 @@ struct EdgeEdgeHit {
 };
 bool test_edge_edge(const ContactBody& a, uint32_t ea, const ContactBody& b, uint32_t eb, const EdgeLines& lines,
                     double band, double allowance, EdgeEdgeHit& hit);
+
+// A sharp edge of a against an edge of a rigid box (a shape of a static or kinematic body) the
+// same way: the box's edge from b0 to b0 + v at the end of the step and from b0_start to
+// b0_start + v_start at its start, `out_b` the sum of its two faces' unit normals. Both tests
+// in one (a box has twelve edges: no candidate pairs are kept between searches).
+// `held`: the pair was held at the last step (its points may lie just beyond an end).
+bool test_edge_box_edge(const ContactBody& a, uint32_t ea, const double* line_a, const Vec3& b0, const Vec3& v,
+                        const Vec3& b0_start, const Vec3& v_start, const Vec3& out_b, double reach, double band,
+                        double allowance, bool held, EdgeEdgeHit& hit);
 
 }  // namespace lfem

@@ -319,8 +319,11 @@ void check_image(const WorldImage& im, const std::string& path) {
             for (uint32_t v : c.triangle) in_range = in_range && v < b.ref.node_count();
         else
             in_range = in_range && c.shape < b.shapes.size();
+        // A face's point under a shape is one of two (end); an edge against a box's edge names
+        // the box's edge (end, one of twelve).
+        const bool box_edge = c.kind == ContactKind::edge_edge && c.shape != UINT32_MAX;
         in_range = in_range && (c.kind != ContactKind::face_shape || c.shape != UINT32_MAX) &&
-                   (c.kind != ContactKind::edge_edge || c.shape == UINT32_MAX) && c.end < 2;
+                   (!box_edge || b.shapes[c.shape].type == ShapeType::box) && c.end < (box_edge ? 12 : 2);
         if (!in_range) fail(path, "a contact index is out of range");
     }
     auto live = [&](uint32_t slot, uint32_t generation) {
