@@ -219,6 +219,37 @@ void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactC
 // same records in the same order, for any thread count).
 constexpr uint32_t kEdgeBlock = 1024;
 
+// An edge record of sharp edge e of body a against body_b (its side set by the caller).
+ContactRecord edge_record(const ContactBody& a, uint32_t e, uint32_t body_b) {
+    const uint32_t* n = &a.sharp_edges[4 * std::size_t(e)];
+    ContactRecord r;
+    r.body_a = a.slot, r.node = kFeatureNode, r.body_b = body_b, r.kind = ContactKind::edge_edge;
+    r.nodes_a[0] = n[0], r.nodes_a[1] = r.nodes_a[2] = n[1];
+    return r;
+}
+
+// How far apart an edge pair's points may be and still be tested (edges_may_meet's reach): as
+// deep as any pair may start, the deepest kept offset the search allowed for. How deep one may
+// start the step: as deep as the faces' turn takes the edges' points in a step (as a face held
+// against a shape, above), a held one as deep as it was left besides.
+double edge_reach(const ContactCandidates& c, double l) {
+    return triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l;
+}
+double edge_allowance(const ContactRecord* last, double l) {
+    return allowed_depth(last ? last->kept_offset() : 0.0, l) + kFallenRecovery * l;
+}
+
+// A hit becomes record r: a new pair only where the edges cross by the end of the step, then
+// kept while within the band (warm-started). False: no record.
+bool take_edge_hit(const EdgeEdgeHit& hit, const ContactRecord* last, double l, ContactRecord& r) {
+    if (!last && !(hit.gap < 0.0)) return false;
+    r.weights_a[0] = 1.0 - hit.s, r.weights_a[1] = hit.s;
+    for (int d = 0; d < 3; ++d) r.normal[d] = hit.normal[d];
+    if (last) warm_start(*last, r);
+    r.offset = overlap_kept(hit.start_gap, last, l);
+    return true;
+}
+
 // The candidate pairs [first, end) of sharp edges that cross, or crossed and are still within
 // the band, appended to `found`.
 void edge_block(const std::vector<ContactBody>& bodies, const ContactCandidates& c, const FeatureScratch& s,
@@ -229,34 +260,20 @@ void edge_block(const std::vector<ContactBody>& bodies, const ContactCandidates&
         const ContactBody& b = bodies[p.b];
         if (!a.moves && !b.moves) continue;  // asleep, or static
         const double l = contact_length(a, b), band = kCaptureBand * l;
-        // As deep as any pair may start (below), the deepest kept offset the search allowed for.
         EdgeLines lines;
         if (!edges_may_meet(a, p.edge_a, &s.edges.lines[6 * std::size_t(p.line_a)], b, p.edge_b,
-                            &s.edges.lines[6 * std::size_t(p.line_b)],
-                            triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l, lines))
+                            &s.edges.lines[6 * std::size_t(p.line_b)], edge_reach(c, l), lines))
             continue;
-        const uint32_t* ea = &a.sharp_edges[4 * std::size_t(p.edge_a)];
         const uint32_t* eb = &b.sharp_edges[4 * std::size_t(p.edge_b)];
-        ContactRecord r;
-        r.body_a = a.slot, r.node = kFeatureNode, r.body_b = b.slot, r.kind = ContactKind::edge_edge;
-        r.shape = UINT32_MAX;
-        r.nodes_a[0] = ea[0], r.nodes_a[1] = r.nodes_a[2] = ea[1];
+        ContactRecord r = edge_record(a, p.edge_a, b.slot);
         r.triangle[0] = eb[0], r.triangle[1] = r.triangle[2] = eb[1];
         const ContactRecord* last = last_of(s, r);
         if (!last && !lines.inside) continue;
-        // It may start the step as deep as the faces' turn takes the edges' points in a step
-        // (as a face held against a shape, above), a held one as deep as it was left besides.
-        const double allowance = allowed_depth(last ? last->kept_offset() : 0.0, l) + kFallenRecovery * l;
         EdgeEdgeHit hit;
-        if (!test_edge_edge(a, p.edge_a, b, p.edge_b, lines, band, allowance, hit)) continue;
-        // A new pair only where the edges cross by the end of the step; then kept while within
-        // the band (warm-started).
-        if (!last && !(hit.gap < 0.0)) continue;
-        r.weights_a[0] = 1.0 - hit.s, r.weights_a[1] = hit.s;
+        if (!test_edge_edge(a, p.edge_a, b, p.edge_b, lines, band, edge_allowance(last, l), hit) ||
+            !take_edge_hit(hit, last, l, r))
+            continue;
         r.t2 = hit.t;
-        for (int d = 0; d < 3; ++d) r.normal[d] = hit.normal[d];
-        if (last) warm_start(*last, r);
-        r.offset = overlap_kept(hit.start_gap, last, l);
         found.push_back(r);
     }
 }
@@ -299,8 +316,7 @@ void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody
     const RigidShape& box = o.shapes[k];
     const BoxEdge end = box_edge(box, ShapePose::load(o.shape_pose + 7 * std::size_t(k)), i);
     const BoxEdge start = box_edge(box, ShapePose::load(o.shape_pose_start + 7 * std::size_t(k)), i);
-    const double l = a.edge_length, band = kCaptureBand * l;
-    const double reach = triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l;
+    const double l = a.edge_length, band = kCaptureBand * l, reach = edge_reach(c, l);
     Aabb region = empty_box();
     for (const Vec3& p : {end.from, Vec3(end.from + end.along), start.from, Vec3(start.from + start.along)})
         for (int d = 0; d < 3; ++d) region.lo[d] = std::min(region.lo[d], p[d]), region.hi[d] = std::max(region.hi[d], p[d]);
@@ -309,29 +325,22 @@ void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody
                                 [&](uint32_t t) { s.triangles.push_back(t); });
     sharp_edges_of(a, s.triangles, s.match);
     for (uint32_t ea : s.match) {
-        const uint32_t* na = &a.sharp_edges[4 * std::size_t(ea)];
-        ContactRecord r;
-        r.body_a = a.slot, r.node = kFeatureNode, r.body_b = o.slot, r.shape = k, r.kind = ContactKind::edge_edge;
-        r.end = uint8_t(i);
-        r.nodes_a[0] = na[0], r.nodes_a[1] = r.nodes_a[2] = na[1];
+        ContactRecord r = edge_record(a, ea, o.slot);
+        r.shape = k, r.end = uint8_t(i);
         r.triangle[0] = r.triangle[1] = r.triangle[2] = UINT32_MAX;
         const ContactRecord* last = last_of(s, r);
-        const double allowance = allowed_depth(last ? last->kept_offset() : 0.0, l) + kFallenRecovery * l;
+        const uint32_t* na = &a.sharp_edges[4 * std::size_t(ea)];
         double line[6];
         for (int d = 0; d < 3; ++d) line[d] = a.x[3 * std::size_t(na[0]) + d], line[3 + d] = a.x[3 * std::size_t(na[1]) + d] - line[d];
         EdgeEdgeHit hit;
         if (!test_edge_box_edge(a, ea, line, end.from, end.along, start.from, start.along, end.out, reach, band,
-                                allowance, last != nullptr, hit))
+                                edge_allowance(last, l), last != nullptr, hit) ||
+            !take_edge_hit(hit, last, l, r))
             continue;
-        if (!last && !(hit.gap < 0.0)) continue;  // new only where the edges cross, as two bodies'
-        r.weights_a[0] = 1.0 - hit.s, r.weights_a[1] = hit.s;
         for (int d = 0; d < 3; ++d) {
-            r.normal[d] = hit.normal[d];
             r.point_end[d] = end.from[d] + hit.t * end.along[d];
             r.point_start[d] = start.from[d] + hit.t * start.along[d];
         }
-        if (last) warm_start(*last, r);
-        r.offset = overlap_kept(hit.start_gap, last, l);
         s.found.push_back(r);
     }
 }

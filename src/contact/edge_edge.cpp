@@ -32,10 +32,6 @@ Vec3 outward_of(const ContactBody& b, uint32_t e) {
     return out;
 }
 
-}  // namespace
-
-namespace {
-
 // The closest points of the lines p0 + s u and q0 + t v (Ericson, 5.1.8) into lines (p0, q0,
 // u, v, cross, s, t, inside): false when the lines are near parallel or the points lie beyond
 // the edges (a new pair's well inside, a held pair's up to just beyond an end).

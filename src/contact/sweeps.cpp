@@ -23,11 +23,12 @@ bool warm_start_pairs(ConstraintPair* pairs, uint32_t count) {
 
 namespace {
 
-// The multiplier of a compliant pair (an edge pair, constraint_pair.h) for gap g: its target gap
-// is -compliance * lambda_n, the gap after the update g + H (lambda_n' - lambda_n), so
-// lambda_n' = lambda_n - (g + compliance lambda_n) / (H + compliance); where that would yield
+// A pair's multiplier for gap g (eq. 4's update, solved for the pair alone): its target gap is
+// -compliance * lambda_n (constraint_pair.h; 0 but for an edge pair), the gap after the update
+// g + H (lambda_n' - lambda_n), so lambda_n' = lambda_n - (g + compliance lambda_n) / (H +
+// compliance), which is lambda_n - g / H to the bit at compliance 0; where it would yield
 // deeper than q.yield, the exact update to the gap -yield.
-double compliant_update(const ConstraintPair& q, double g) {
+double normal_update(const ConstraintPair& q, double g) {
     const double soft = q.lambda_n - (g + q.compliance * q.lambda_n) / (q.H + q.compliance);
     return q.compliance * soft <= q.yield ? soft : q.lambda_n - (g + q.yield) / q.H;
 }
@@ -40,7 +41,7 @@ double normal_pass(ConstraintPair* pairs, uint32_t count, bool first) {
         ConstraintPair& q = pairs[k];
         if (!(q.H > 0.0)) continue;  // both sides immovable: nothing to solve
         const double g = q.n.dot(relative_position(q)) + q.offset;
-        const double lambda_n = std::max(0.0, q.compliance > 0.0 ? compliant_update(q, g) : q.lambda_n - g / q.H);
+        const double lambda_n = std::max(0.0, normal_update(q, g));
         const double moved = apply(q, (lambda_n - q.lambda_n) * q.n);
         largest = std::max(largest, first ? moved : lambda_n > 0.0 || g < 0.0 ? std::fabs(g - q.seen_gap) : 0.0);
         q.seen_gap = g;
