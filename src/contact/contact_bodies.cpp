@@ -23,6 +23,9 @@ void ContactBodies::add(const ContactBodyInput& in) {
     cb.node_triangles = in.surface->node_triangles.data();
     cb.sharp_edges = in.surface->sharp_edges.data();
     cb.sharp_edge_count = in.edge_contacts ? uint32_t(in.surface->sharp_edges.size() / 4) : 0;
+    cb.fold_edges = in.surface->fold_edges.data();
+    cb.triangle_edges = in.surface->triangle_edges.data();
+    cb.fold_edge_count = in.edge_contacts ? uint32_t(in.surface->fold_edges.size() / 4) : 0;
     const bool has_elements = in.elements && in.surface->triangle_element.size() == in.surface->triangle_count();
     cb.elements = has_elements ? in.elements : nullptr;
     cb.element_stride = in.nodes_per_tet;

@@ -2,6 +2,7 @@
 // arrays borrowed from the body and the step's scratch, nothing owned.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "common/math.h"
@@ -41,6 +42,9 @@ struct ContactBody {
     const uint32_t* sharp_edges = nullptr;      // the surface's sharp edges at rest, 4 each
     uint32_t sharp_edge_count = 0;              //   (mesh/surface.h, Surface::sharp_edges); 0
                                                 //   when the body's edge pass is off
+    const uint32_t* fold_edges = nullptr;       // its folds (Surface::fold_edges), 4 each; 0
+    uint32_t fold_edge_count = 0;               //   when the body's edge pass is off
+    const uint32_t* triangle_edges = nullptr;   // per triangle, its 3 edges (Surface::triangle_edges)
     const uint32_t* elements = nullptr;         // the tets, element_stride nodes each (corners first)
     uint32_t element_stride = 4;
     const uint32_t* triangle_element = nullptr; // per triangle: the tet it bounds (UINT32_MAX: none)
@@ -67,6 +71,14 @@ struct ContactBody {
     const double* shape_pose = nullptr;       // 7 per shape, end of the step
     const double* shape_pose_start = nullptr; // 7 per shape, start of the step
 };
+
+// Edge e of body b for the edge pass: its sharp edges are 0 .. sharp_edge_count - 1, its folds
+// follow (4 entries each: the nodes u < v, the triangles they join).
+inline uint32_t edge_count(const ContactBody& b) { return b.sharp_edge_count + b.fold_edge_count; }
+inline bool is_fold(const ContactBody& b, uint32_t e) { return e >= b.sharp_edge_count; }
+inline const uint32_t* edge_of(const ContactBody& b, uint32_t e) {
+    return is_fold(b, e) ? b.fold_edges + 4 * std::size_t(e - b.sharp_edge_count) : b.sharp_edges + 4 * std::size_t(e);
+}
 
 // A body whose points contact can move: a deformable one (its free nodes) or a rigid one.
 // Static and kinematic bodies follow their own motion whatever the contacts do.

@@ -219,9 +219,9 @@ void shapes_against_faces(const std::vector<ContactBody>& bodies, const ContactC
 // same records in the same order, for any thread count).
 constexpr uint32_t kEdgeBlock = 1024;
 
-// An edge record of sharp edge e of body a against body_b (its side set by the caller).
+// An edge record of edge e of body a against body_b (its side set by the caller).
 ContactRecord edge_record(const ContactBody& a, uint32_t e, uint32_t body_b) {
-    const uint32_t* n = &a.sharp_edges[4 * std::size_t(e)];
+    const uint32_t* n = edge_of(a, e);
     ContactRecord r;
     r.body_a = a.slot, r.node = kFeatureNode, r.body_b = body_b, r.kind = ContactKind::edge_edge;
     r.nodes_a[0] = n[0], r.nodes_a[1] = r.nodes_a[2] = n[1];
@@ -250,8 +250,27 @@ bool take_edge_hit(const EdgeEdgeHit& hit, const ContactRecord* last, double l, 
     return true;
 }
 
-// The candidate pairs [first, end) of sharp edges that cross, or crossed and are still within
-// the band, appended to `found`.
+// Edge ea of a (its line at x* `line_a`: first node, second less first) against edge eb of b:
+// a record appended to `found` where they cross, or crossed and are still within the band.
+void edge_pair(const ContactBody& a, uint32_t ea, const double* line_a, const ContactBody& b, uint32_t eb,
+               const double* line_b, const ContactCandidates& c, const FeatureScratch& s,
+               std::vector<ContactRecord>& found) {
+    const double l = contact_length(a, b), band = kCaptureBand * l;
+    EdgeLines lines;
+    if (!edges_may_meet(a, ea, line_a, b, eb, line_b, edge_reach(c, l), lines)) return;
+    const uint32_t* nb = edge_of(b, eb);
+    ContactRecord r = edge_record(a, ea, b.slot);
+    r.triangle[0] = nb[0], r.triangle[1] = r.triangle[2] = nb[1];
+    const ContactRecord* last = last_of(s, r);
+    if (!last && !lines.inside) return;
+    EdgeEdgeHit hit;
+    if (!test_edge_edge(a, ea, b, eb, lines, band, edge_allowance(last, l), hit) || !take_edge_hit(hit, last, l, r))
+        return;
+    r.t2 = hit.t;
+    found.push_back(r);
+}
+
+// The candidate pairs [first, end) of sharp edges.
 void edge_block(const std::vector<ContactBody>& bodies, const ContactCandidates& c, const FeatureScratch& s,
                 uint32_t first, uint32_t end, std::vector<ContactRecord>& found) {
     for (uint32_t k = first; k < end; ++k) {
@@ -259,35 +278,66 @@ void edge_block(const std::vector<ContactBody>& bodies, const ContactCandidates&
         const ContactBody& a = bodies[p.a];
         const ContactBody& b = bodies[p.b];
         if (!a.moves && !b.moves) continue;  // asleep, or static
-        const double l = contact_length(a, b), band = kCaptureBand * l;
-        EdgeLines lines;
-        if (!edges_may_meet(a, p.edge_a, &s.edges.lines[6 * std::size_t(p.line_a)], b, p.edge_b,
-                            &s.edges.lines[6 * std::size_t(p.line_b)], edge_reach(c, l), lines))
-            continue;
-        const uint32_t* eb = &b.sharp_edges[4 * std::size_t(p.edge_b)];
-        ContactRecord r = edge_record(a, p.edge_a, b.slot);
-        r.triangle[0] = eb[0], r.triangle[1] = r.triangle[2] = eb[1];
-        const ContactRecord* last = last_of(s, r);
-        if (!last && !lines.inside) continue;
-        EdgeEdgeHit hit;
-        if (!test_edge_edge(a, p.edge_a, b, p.edge_b, lines, band, edge_allowance(last, l), hit) ||
-            !take_edge_hit(hit, last, l, r))
-            continue;
-        r.t2 = hit.t;
-        found.push_back(r);
+        edge_pair(a, p.edge_a, &s.edges.lines[6 * std::size_t(p.line_a)], b, p.edge_b,
+                  &s.edges.lines[6 * std::size_t(p.line_b)], c, s, found);
     }
 }
 
-// Every candidate pair, in blocks on the pool; the blocks' records join s.found in block order.
+// Edge e of b: its line at x* (first node, second less first) and its box from x^n to x*.
+Aabb swept_edge(const ContactBody& b, uint32_t e, double* line) {
+    const uint32_t* n = edge_of(b, e);
+    Aabb box = empty_box();
+    for (const double* x : {static_cast<const double*>(b.x), b.x_start})
+        for (int v = 0; v < 2; ++v)
+            for (int d = 0; d < 3; ++d) {
+                const double y = x[3 * std::size_t(n[v]) + d];
+                box.lo[d] = std::min(box.lo[d], y), box.hi[d] = std::max(box.hi[d], y);
+            }
+    for (int d = 0; d < 3; ++d) line[d] = b.x[3 * std::size_t(n[0]) + d], line[3 + d] = b.x[3 * std::size_t(n[1]) + d] - line[d];
+    return box;
+}
+
+// The watched folds [first, end) bent outward against their groups' sharp edges whose boxes
+// from x^n to x*, grown by the reach, meet theirs (edges_may_meet accepts nothing beyond).
+void fold_block(const std::vector<ContactBody>& bodies, const ContactCandidates& c, const FeatureScratch& s,
+                uint32_t first, uint32_t end, std::vector<ContactRecord>& found) {
+    bool bends = false;  // of the fold of the last entry (a fold's groups are side by side)
+    for (uint32_t k = first; k < end; ++k) {
+        const EdgeCandidates::WatchedFold& w = s.edges.watched[k];
+        const EdgeCandidates::FoldGroup& g = s.edges.fold_groups[w.group];
+        const ContactBody& a = bodies[g.sharp_body];
+        const ContactBody& b = bodies[g.fold_body];
+        const EdgeCandidates::WatchedFold* last = k > first ? &s.edges.watched[k - 1] : nullptr;
+        if (!last || last->fold != w.fold || s.edges.fold_groups[last->group].fold_body != g.fold_body)
+            bends = fold_bends_out(b, w.fold);
+        if (!bends || (!a.moves && !b.moves)) continue;
+        double line_b[6], line_a[6];
+        const Aabb fold_box = grown(swept_edge(b, w.fold, line_b), edge_reach(c, contact_length(a, b)));
+        for (uint32_t q = g.sharp_begin; q < g.sharp_end; ++q) {
+            const uint32_t ea = s.edges.group_sharp[q];
+            if (&a == &b && !own_edges_may_cross(a, ea, w.fold)) continue;
+            if (!overlaps(swept_edge(a, ea, line_a), fold_box)) continue;
+            edge_pair(a, ea, line_a, b, w.fold, line_b, c, s, found);
+        }
+    }
+}
+
+// Every candidate pair of sharp edges and every watched fold, in blocks on the pool; the
+// blocks' records join s.found in block order.
 void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s,
                          ThreadPool* pool) {
     update_edge_pairs(bodies, c, s.edges);
     update_edge_lines(bodies, s.edges);
-    const uint32_t count = uint32_t(s.edges.pairs.size()), blocks = (count + kEdgeBlock - 1) / kEdgeBlock;
+    const uint32_t pairs = uint32_t(s.edges.pairs.size()), folds = uint32_t(s.edges.watched.size());
+    const uint32_t pair_blocks = (pairs + kEdgeBlock - 1) / kEdgeBlock, blocks = pair_blocks + (folds + kEdgeBlock - 1) / kEdgeBlock;
     if (s.edge_found.size() < blocks) s.edge_found.resize(blocks);
     parallel_for(pool, blocks, [&](uint32_t b) {
         s.edge_found[b].clear();
-        edge_block(bodies, c, s, b * kEdgeBlock, std::min(count, (b + 1) * kEdgeBlock), s.edge_found[b]);
+        if (b < pair_blocks)
+            edge_block(bodies, c, s, b * kEdgeBlock, std::min(pairs, (b + 1) * kEdgeBlock), s.edge_found[b]);
+        else
+            fold_block(bodies, c, s, (b - pair_blocks) * kEdgeBlock, std::min(folds, (b - pair_blocks + 1) * kEdgeBlock),
+                       s.edge_found[b]);
     });
     for (uint32_t b = 0; b < blocks; ++b) s.found.insert(s.found.end(), s.edge_found[b].begin(), s.edge_found[b].end());
 }
@@ -308,7 +358,7 @@ BoxEdge box_edge(const RigidShape& box, const ShapePose& pose, int i) {
     return {pose.center + pose.rotation * corner, pose.rotation * along, pose.rotation * out};
 }
 
-// The sharp edges of body a near edge i of box k of body o (at the step's start and end) against
+// The edges of body a (sharp, and folds bent outward) near edge i of box k of body o (at the step's start and end) against
 // it: a crossing between the nodes of a's edge, which no face's point under the box sees (the
 // box's deepest point under a face lies at the face's border there).
 void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody& o, uint32_t k, int i,
@@ -323,13 +373,14 @@ void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody
     s.triangles.clear();
     c.tree_of(bodies, ai).query(grown(region, band + reach + 2.0 * c.budget[ai]), a.x, a.triangles, c.budget[ai],
                                 [&](uint32_t t) { s.triangles.push_back(t); });
-    sharp_edges_of(a, s.triangles, s.match);
+    edges_of(a, s.triangles, s.edges.marks, s.match);
     for (uint32_t ea : s.match) {
+        if (is_fold(a, ea) && !fold_bends_out(a, ea)) continue;
         ContactRecord r = edge_record(a, ea, o.slot);
         r.shape = k, r.end = uint8_t(i);
         r.triangle[0] = r.triangle[1] = r.triangle[2] = UINT32_MAX;
         const ContactRecord* last = last_of(s, r);
-        const uint32_t* na = &a.sharp_edges[4 * std::size_t(ea)];
+        const uint32_t* na = edge_of(a, ea);
         double line[6];
         for (int d = 0; d < 3; ++d) line[d] = a.x[3 * std::size_t(na[0]) + d], line[3 + d] = a.x[3 * std::size_t(na[1]) + d] - line[d];
         EdgeEdgeHit hit;
@@ -345,7 +396,7 @@ void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody
     }
 }
 
-// Every box of static and kinematic bodies against the sharp edges of the moving bodies near it.
+// Every box of static and kinematic bodies against the edges of the moving bodies near it.
 void edges_against_boxes(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s) {
     for (uint32_t oi : c.shape_bodies) {
         const ContactBody& o = bodies[oi];
@@ -357,7 +408,7 @@ void edges_against_boxes(const std::vector<ContactBody>& bodies, const ContactCa
             c.body_grid.query(box, s.near);
             for (uint32_t ai : s.near) {
                 const ContactBody& a = bodies[ai];
-                if (ai == oi || !a.moves || !is_movable(a) || a.sharp_edge_count == 0 || !bodies_may_touch(a, o)) continue;
+                if (ai == oi || !a.moves || !is_movable(a) || edge_count(a) == 0 || !bodies_may_touch(a, o)) continue;
                 for (int i = 0; i < 12; ++i) edges_against_box_edge(a, ai, o, k, i, c, s, bodies);
             }
         }

@@ -9,119 +9,160 @@ namespace {
 
 using EdgeBox = EdgeCandidates::EdgeBox;
 
-// The box of sharp edge e of body b at x*, grown by `grow`.
+// The box of edge e of body b at x*, grown by `grow`.
 Aabb edge_box(const ContactBody& b, uint32_t e, double grow) {
     Aabb box = empty_box();
     for (int v = 0; v < 2; ++v) {
-        const double* x = b.x + 3 * std::size_t(b.sharp_edges[4 * std::size_t(e) + v]);
+        const double* x = b.x + 3 * std::size_t(edge_of(b, e)[v]);
         for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], x[k]), box.hi[k] = std::max(box.hi[k], x[k]);
     }
     return grown(box, grow);
 }
 
-// Two sharp edges of one body (self-contact) are a pair once (the first of the two as a's) and
-// only when they share no node: edges that meet at a node lie on each other there by
-// construction, and a crossing near that node is its own to hold (node against face).
-bool own_edges_may_cross(const ContactBody& b, uint32_t ea, uint32_t eb) {
-    if (!(ea < eb)) return false;
-    const uint32_t* p = &b.sharp_edges[4 * std::size_t(ea)];
-    const uint32_t* q = &b.sharp_edges[4 * std::size_t(eb)];
-    return p[0] != q[0] && p[0] != q[1] && p[1] != q[0] && p[1] != q[1];
+// How far apart a's and b's edges may come at the search and still be within the band of
+// crossing, or as deep as a held pair may start (detect_features.cpp), once both have used up
+// their budgets.
+double search_reach(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t ai, uint32_t bi) {
+    const double l = contact_length(bodies[ai], bodies[bi]);
+    return c.budget[ai] + c.budget[bi] + triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l;
 }
 
-// The pairs of a's and b's sharp edges whose boxes, a's grown by `reach`, overlap: a's edges near
-// b's box, b's found through its tree under them (one query: a large floor's edges are not all
-// visited), then swept along x (sort and sweep, O(n log n + pairs)). A self-contact body against
-// itself (a == b) the same way, each pair of its edges once (own_edges_may_cross).
-void pairs_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t ai, uint32_t bi,
-                     EdgeCandidates& e) {
-    const ContactBody& a = bodies[ai];
+// The edges of b whose boxes overlap `region` (b's triangles under it through b's tree: a large
+// floor's edges are not all visited) with their boxes: its sharp edges into `sharp`, its folds
+// into `folds`.
+void edges_in(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t bi, const Aabb& region,
+              EdgeCandidates& e, std::vector<EdgeBox>& sharp, std::vector<EdgeBox>& folds) {
     const ContactBody& b = bodies[bi];
-    // Within the band of crossing, or as deep as a held pair may start (detect_features.cpp),
-    // after both have used up their budgets.
-    const double l = contact_length(a, b);
-    const double reach =
-        c.budget[ai] + c.budget[bi] + triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l;
-    e.boxes_a.clear();
-    Aabb near = empty_box();
-    for (uint32_t ea = 0; ea < a.sharp_edge_count; ++ea) {
-        const Aabb box = edge_box(a, ea, reach);
-        if (!overlaps(box, c.body_box[bi])) continue;
-        e.boxes_a.push_back({box, ea});
-        join(near, box);
-    }
-    if (e.boxes_a.empty()) return;
+    sharp.clear(), folds.clear();
     e.triangles.clear();
-    c.tree_of(bodies, bi).query(near, b.x, b.triangles, 0.0, [&](uint32_t t) { e.triangles.push_back(t); });
-    sharp_edges_of(b, e.triangles, e.edges);
-    e.boxes_b.clear();
+    c.tree_of(bodies, bi).query(region, b.x, b.triangles, 0.0, [&](uint32_t t) { e.triangles.push_back(t); });
+    edges_of(b, e.triangles, e.marks, e.edges);
     for (uint32_t eb : e.edges) {
         const Aabb box = edge_box(b, eb, 0.0);
-        if (overlaps(box, near)) e.boxes_b.push_back({box, eb});
+        if (overlaps(box, region)) (is_fold(b, eb) ? folds : sharp).push_back({box, eb});
     }
+}
+
+// Each pair of boxes of xs and ys that overlap, as emit(x's edge, y's edge): both sorted by
+// lo[0] (then edge), then swept along x (O(n log n + pairs)): each box meets those of the other
+// list that start within its x-extent, once (the one of the two that starts first finds the
+// other).
+template <class Emit>
+void overlapping_boxes(std::vector<EdgeBox>& xs, std::vector<EdgeBox>& ys, Emit&& emit) {
     const auto by_lo = [](const EdgeBox& x, const EdgeBox& y) {
         return x.box.lo[0] != y.box.lo[0] ? x.box.lo[0] < y.box.lo[0] : x.edge < y.edge;
     };
-    std::sort(e.boxes_a.begin(), e.boxes_a.end(), by_lo);
-    std::sort(e.boxes_b.begin(), e.boxes_b.end(), by_lo);
-    const std::size_t first = e.pairs.size();
-    // Each box meets those of the other list that start within its x-extent, once: the one of
-    // the two that starts first finds the other.
+    std::sort(xs.begin(), xs.end(), by_lo);
+    std::sort(ys.begin(), ys.end(), by_lo);
     std::size_t i = 0, j = 0;
-    while (i < e.boxes_a.size() && j < e.boxes_b.size()) {
-        const bool a_first = e.boxes_a[i].box.lo[0] <= e.boxes_b[j].box.lo[0];
-        const EdgeBox& x = a_first ? e.boxes_a[i] : e.boxes_b[j];
-        const std::vector<EdgeBox>& others = a_first ? e.boxes_b : e.boxes_a;
-        for (std::size_t k = a_first ? j : i; k < others.size() && others[k].box.lo[0] <= x.box.hi[0]; ++k) {
-            if (!overlaps(x.box, others[k].box)) continue;
-            const EdgePair p = a_first ? EdgePair{ai, bi, x.edge, others[k].edge, 0, 0}
-                                       : EdgePair{ai, bi, others[k].edge, x.edge, 0, 0};
-            if (ai != bi || own_edges_may_cross(a, p.edge_a, p.edge_b)) e.pairs.push_back(p);
+    while (i < xs.size() && j < ys.size()) {
+        const bool x_first = xs[i].box.lo[0] <= ys[j].box.lo[0];
+        const EdgeBox& first = x_first ? xs[i] : ys[j];
+        const std::vector<EdgeBox>& others = x_first ? ys : xs;
+        for (std::size_t k = x_first ? j : i; k < others.size() && others[k].box.lo[0] <= first.box.hi[0]; ++k) {
+            if (!overlaps(first.box, others[k].box)) continue;
+            x_first ? emit(first.edge, others[k].edge) : emit(others[k].edge, first.edge);
         }
-        a_first ? ++i : ++j;
+        x_first ? ++i : ++j;
     }
+}
+
+// Boxes grown by `reach`.
+void grow_all(const std::vector<EdgeBox>& from, double reach, std::vector<EdgeBox>& to) {
+    to.clear();
+    for (const EdgeBox& x : from) to.push_back({grown(x.box, reach), x.edge});
+}
+
+// The folds of body fi under sharp edges of body si (boxes grown by the reach) whose boxes meet
+// theirs: a group of the edge pass's watched folds (each once), with all of those sharp edges.
+// Most lie flat under a resting face and are passed over each sub-step by one test of their
+// bend; pairs with the group's sharp edges are made only for those bent outward.
+void watch_folds(uint32_t si, std::vector<EdgeBox>& sharp, uint32_t fi, std::vector<EdgeBox>& folds, EdgeCandidates& e) {
+    if (sharp.empty() || folds.empty()) return;
+    const std::size_t first = e.watched.size();
+    const uint32_t group = uint32_t(e.fold_groups.size());
+    if (++e.marks.generation == 0) std::fill(e.marks.mark.begin(), e.marks.mark.end(), 0), e.marks.generation = 1;
+    overlapping_boxes(sharp, folds, [&](uint32_t, uint32_t fold) {
+        if (e.marks.mark[fold] == e.marks.generation) return;
+        e.marks.mark[fold] = e.marks.generation;
+        e.watched.push_back({group, fold});
+    });
+    if (e.watched.size() == first) return;
+    e.fold_groups.push_back({si, fi, uint32_t(e.group_sharp.size()), uint32_t(e.group_sharp.size() + sharp.size())});
+    for (const EdgeBox& x : sharp) e.group_sharp.push_back(x.edge);
+}
+
+// The candidates of bodies lo <= hi: each one's edges near the other's box grown by the search's
+// reach (edges_in); the pairs of their sharp edges whose boxes, one's grown by the reach,
+// overlap (swept: overlapping_boxes), of the one with fewer sharp edges as a (a self-contact
+// body against itself the same way, each pair of its edges once: own_edges_may_cross); and
+// each one's folds under the other's sharp edges (watch_folds).
+void edges_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t lo, uint32_t hi,
+                     EdgeCandidates& e) {
+    const double reach = search_reach(bodies, c, lo, hi);
+    edges_in(bodies, c, lo, grown(c.body_box[hi], reach), e, e.sharp_lo, e.folds_lo);
+    if (lo == hi) {
+        e.sharp_hi = e.sharp_lo;
+    } else {
+        edges_in(bodies, c, hi, grown(c.body_box[lo], reach), e, e.sharp_hi, e.folds_hi);
+    }
+    const bool swap = bodies[hi].sharp_edge_count < bodies[lo].sharp_edge_count;
+    const uint32_t ai = swap ? hi : lo, bi = swap ? lo : hi;
+    const ContactBody& a = bodies[ai];
+    grow_all(swap ? e.sharp_hi : e.sharp_lo, reach, e.grown);
+    const std::size_t first = e.pairs.size();
+    overlapping_boxes(e.grown, swap ? e.sharp_lo : e.sharp_hi, [&](uint32_t ea, uint32_t eb) {
+        if (ai != bi || own_edges_may_cross(a, ea, eb)) e.pairs.push_back({ai, bi, ea, eb, 0, 0});
+    });
     std::sort(e.pairs.begin() + first, e.pairs.end(), [](const EdgePair& x, const EdgePair& y) {
         return x.edge_a != y.edge_a ? x.edge_a < y.edge_a : x.edge_b < y.edge_b;
     });
+    grow_all(e.sharp_lo, reach, e.grown);
+    watch_folds(lo, e.grown, hi, lo == hi ? e.folds_lo : e.folds_hi, e);
+    if (lo == hi) return;
+    grow_all(e.sharp_hi, reach, e.grown);
+    watch_folds(hi, e.grown, lo, e.folds_lo, e);
 }
 
 }  // namespace
 
-void sharp_edges_of(const ContactBody& b, const std::vector<uint32_t>& triangles, std::vector<uint32_t>& out) {
-    out.clear();
-    for (uint32_t t : triangles)
-        for (int v = 0; v < 3; ++v) {
-            const uint32_t* tri = &b.triangles[3 * std::size_t(t)];
-            const uint32_t e = sharp_edge_between(b, tri[v], tri[(v + 1) % 3]);
-            if (e != UINT32_MAX) out.push_back(e);
-        }
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
+// Two edges of one body (self-contact) are a pair once (the first of the two as a's) and
+// only when they share no node: edges that meet at a node lie on each other there by
+// construction, and a crossing near that node is its own to hold (node against face).
+bool own_edges_may_cross(const ContactBody& b, uint32_t ea, uint32_t eb) {
+    if (!(ea < eb)) return false;
+    const uint32_t* p = edge_of(b, ea);
+    const uint32_t* q = edge_of(b, eb);
+    return p[0] != q[0] && p[0] != q[1] && p[1] != q[0] && p[1] != q[1];
 }
 
-uint32_t sharp_edge_between(const ContactBody& b, uint32_t i, uint32_t j) {
-    const uint32_t u = std::min(i, j), v = std::max(i, j);
-    uint32_t lo = 0, hi = b.sharp_edge_count;
-    while (lo < hi) {
-        const uint32_t mid = lo + (hi - lo) / 2;
-        const uint32_t* e = &b.sharp_edges[4 * std::size_t(mid)];
-        if (e[0] < u || (e[0] == u && e[1] < v)) lo = mid + 1;
-        else hi = mid;
-    }
-    const uint32_t* e = &b.sharp_edges[4 * std::size_t(lo)];
-    return lo < b.sharp_edge_count && e[0] == u && e[1] == v ? lo : UINT32_MAX;
+void edges_of(const ContactBody& b, const std::vector<uint32_t>& triangles, EdgeMarks& marks, std::vector<uint32_t>& out) {
+    out.clear();
+    const uint32_t count = edge_count(b);
+    if (count == 0) return;  // the body's edge pass is off
+    if (marks.mark.size() < count) marks.mark.resize(count, 0);
+    if (++marks.generation == 0) std::fill(marks.mark.begin(), marks.mark.end(), 0), marks.generation = 1;
+    for (uint32_t t : triangles)
+        for (int v = 0; v < 3; ++v) {
+            const uint32_t e = b.triangle_edges[3 * std::size_t(t) + v];
+            if (e == UINT32_MAX || marks.mark[e] == marks.generation) continue;
+            marks.mark[e] = marks.generation;
+            out.push_back(e);
+        }
 }
 
 void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e) {
     if (e.search == c.searches) return;
     e.search = c.searches;
     e.pairs.clear();
+    e.fold_groups.clear(), e.group_sharp.clear(), e.watched.clear();
     // The pairs of different bodies the search put within reach (each once).
     e.body_pairs.clear();
     for (uint32_t ai = 0; ai + 1 < c.partner_begin.size(); ++ai)
         for (uint32_t q = c.partner_begin[ai]; q < c.partner_begin[ai + 1]; ++q) {
             const uint32_t bi = c.partners[q];
-            if (bodies[ai].sharp_edge_count == 0 || bodies[bi].sharp_edge_count == 0) continue;
+            // Folds meet sharp edges only.
+            if (bodies[ai].sharp_edge_count == 0 && bodies[bi].sharp_edge_count == 0) continue;
             if (bi == ai && !bodies[ai].self_contact) continue;
             e.body_pairs.push_back(ai < bi ? uint64_t(ai) << 32 | bi : uint64_t(bi) << 32 | ai);
         }
@@ -130,9 +171,14 @@ void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCand
     for (uint64_t key : e.body_pairs) {
         const uint32_t lo = uint32_t(key >> 32), hi = uint32_t(key);
         if (lo != hi && !bodies_may_touch(bodies[lo], bodies[hi])) continue;
-        const bool swap = bodies[hi].sharp_edge_count < bodies[lo].sharp_edge_count;
-        pairs_of_bodies(bodies, c, swap ? hi : lo, swap ? lo : hi, e);
+        edges_of_bodies(bodies, c, lo, hi, e);
     }
+    // A fold near the sharp edges of several bodies is watched once per group, side by side, so
+    // that its bend is tested once per sub-step.
+    std::sort(e.watched.begin(), e.watched.end(), [&](const EdgeCandidates::WatchedFold& x, const EdgeCandidates::WatchedFold& y) {
+        const uint32_t bx = e.fold_groups[x.group].fold_body, by = e.fold_groups[y.group].fold_body;
+        return bx != by ? bx < by : x.fold != y.fold ? x.fold < y.fold : x.group < y.group;
+    });
     e.edges_used.clear();
     for (const EdgePair& p : e.pairs) {
         e.edges_used.push_back(uint64_t(p.a) << 32 | p.edge_a);
@@ -152,7 +198,7 @@ void update_edge_lines(const std::vector<ContactBody>& bodies, EdgeCandidates& e
     e.lines.resize(6 * e.edges_used.size());
     for (std::size_t k = 0; k < e.edges_used.size(); ++k) {
         const ContactBody& b = bodies[uint32_t(e.edges_used[k] >> 32)];
-        const uint32_t* edge = &b.sharp_edges[4 * std::size_t(uint32_t(e.edges_used[k]))];
+        const uint32_t* edge = edge_of(b, uint32_t(e.edges_used[k]));
         const double* x0 = b.x + 3 * std::size_t(edge[0]);
         const double* x1 = b.x + 3 * std::size_t(edge[1]);
         double* line = &e.lines[6 * k];

@@ -1,4 +1,5 @@
-// Which sharp edges of two bodies may cross (contact/edge_edge.h) before the candidates of the
+// Which sharp edges of two bodies may cross (contact/edge_edge.h), and which folds may bend
+// under another's sharp edges, before the candidates of the
 // node pass run out (contact_candidates.h): made after each of its searches, from the bodies
 // where the search saw them, and held while its budgets hold. Two edges are a candidate pair
 // when their boxes, grown by both bodies' budgets and the detection's band, overlap: an edge
@@ -19,40 +20,63 @@
 namespace lfem {
 
 // Sharp edge `edge_a` of body `a` against sharp edge `edge_b` of body `b` (indices into the
-// contact list's bodies and into their ContactBody::sharp_edges).
+// contact list's bodies and their edges, contact_body.h edge_of).
 struct EdgePair {
     uint32_t a = 0, b = 0;
     uint32_t edge_a = 0, edge_b = 0;
     uint32_t line_a = 0, line_b = 0;  // the edges' places in EdgeCandidates::edges_used
 };
 
+// A mark per edge of a body, reset by counting: which edges edges_of has put out this time.
+struct EdgeMarks {
+    std::vector<uint32_t> mark;
+    uint32_t generation = 0;
+};
+
 struct EdgeCandidates {
     uint64_t search = 0;           // the search (ContactCandidates::searches) they were made after
     std::vector<EdgePair> pairs;   // by body pair, then a's edge, then b's
-    // The edges the pairs name, each once (body << 32 | sharp edge, ascending), and per
+    // The edges the pairs name, each once (body << 32 | edge, ascending), and per
     // sub-step their lines at x* side by side (6 each: first node, second less first), which
     // the pairs read instead of the bodies' scattered nodes.
     std::vector<uint64_t> edges_used;
     std::vector<double> lines;
+    // The folds watched against sharp edges: group g's are those of body fold_body near the
+    // sharp edges group_sharp[sharp_begin .. sharp_end) of body sharp_body (bodies of the
+    // contact list). Each sub-step a fold bent outward (fold_bends_out) is tested against its
+    // group's sharp edges, the rest (most: faces lying flat on each other) are passed over.
+    struct FoldGroup {
+        uint32_t sharp_body, fold_body, sharp_begin, sharp_end;
+    };
+    struct WatchedFold {
+        uint32_t group, fold;
+    };
+    std::vector<FoldGroup> fold_groups;
+    std::vector<uint32_t> group_sharp;
+    std::vector<WatchedFold> watched;  // by fold body, fold, group
     // Scratch.
     struct EdgeBox {
         Aabb box;
         uint32_t edge;
     };
     std::vector<uint64_t> body_pairs;
+    EdgeMarks marks;
     std::vector<uint32_t> triangles, edges;
-    std::vector<EdgeBox> boxes_a, boxes_b;
+    std::vector<EdgeBox> sharp_lo, folds_lo, sharp_hi, folds_hi, grown;
 };
 
-// The pairs again when the candidates were searched since they were made (else nothing to do).
-// Of two bodies, the one with fewer sharp edges is `a`: its edges are boxed, the other's are
-// found through its triangle tree.
+// The pairs and the watched folds again when the candidates were searched since they were
+// made (else nothing to do). Of two bodies, the one with fewer sharp edges is `a`: its edges
+// are boxed, the other's are found through its triangle tree.
 void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e);
 
-// The sharp edge of b between nodes i and j, or UINT32_MAX (the list ascends by its nodes).
-uint32_t sharp_edge_between(const ContactBody& b, uint32_t i, uint32_t j);
-// The sharp edges among the edges of b's triangles `triangles`, each once, ascending, into out.
-void sharp_edges_of(const ContactBody& b, const std::vector<uint32_t>& triangles, std::vector<uint32_t>& out);
+// The edges (sharp and folds) of b's triangles `triangles`, each once, in the order the
+// triangles name them, into out (EdgeMarks: scratch).
+void edges_of(const ContactBody& b, const std::vector<uint32_t>& triangles, EdgeMarks& marks, std::vector<uint32_t>& out);
+
+// Whether edges ea and eb of one body (self-contact) are tested: once (the first as a's), and
+// only when they share no node.
+bool own_edges_may_cross(const ContactBody& b, uint32_t ea, uint32_t eb);
 
 // The used edges' lines at this sub-step's x* (EdgeCandidates::lines).
 void update_edge_lines(const std::vector<ContactBody>& bodies, EdgeCandidates& e);

@@ -3,8 +3,10 @@
 // inner edges). The constraint joins the closest points of the two segments, (1 - s) a0 + s a1
 // and (1 - t) b0 + t b1, with those parameters as the weights on the four nodes, along their
 // common normal turned out of b (the sides the edges' faces put outside). The edges are the
-// bodies' sharp edges at rest (mesh/surface.h): a fold of a flat face's triangulation meets
-// another body with its nodes. A rigid box's edges meet a body's sharp edges the same way.
+// bodies' sharp edges at rest (mesh/surface.h), against each other and against the folds of
+// others' faces where the load bends those outward (a knife edge pressed into a face between
+// its nodes); two folds meet with their nodes. A rigid box's edges meet a body's edges the same
+// way.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +16,14 @@
 
 namespace lfem {
 
-// The lines of sharp edges ea of a and eb of b (ContactBody::sharp_edges) at x*, for
+// Whether fold e of b (is_fold) bends outward at x* by more than a few degrees: only then can an
+// edge lying across it between its nodes be inside b (a knife edge across a face the load
+// bends), as the deepest point of a straight edge under a surface of flat faces lies at a
+// convex fold or a sharp edge. The edge pass tests a fold against the sharp edges of others
+// only while it holds.
+bool fold_bends_out(const ContactBody& b, uint32_t e);
+
+// The lines of edges ea of a and eb of b (contact_body.h edge_of) at x*, for
 // edges_may_meet and test_edge_edge.
 struct EdgeLines {
     Vec3 p0, q0;     // a's first node, b's

@@ -110,30 +110,43 @@ void compute_node_elements(const uint32_t* tets, uint32_t tet_count, uint32_t no
 }
 
 void compute_sharp_edges(const double* X, Surface& s) {
-    // Every triangle's edges by their sorted nodes, then the triangle: an edge's (one or two)
-    // triangles side by side.
-    using Key = std::array<uint32_t, 3>;
+    // Every triangle's edges by their sorted nodes, then the triangle and the edge's place in it:
+    // an edge's (one or two) triangles side by side.
+    using Key = std::array<uint32_t, 4>;
     std::vector<Key> sides;
     sides.reserve(s.triangles.size());
     for (uint32_t t = 0; t < s.triangle_count(); ++t)
-        for (int v = 0; v < 3; ++v) {
+        for (uint32_t v = 0; v < 3; ++v) {
             const uint32_t i = s.triangles[3 * std::size_t(t) + v], j = s.triangles[3 * std::size_t(t) + (v + 1) % 3];
-            sides.push_back({std::min(i, j), std::max(i, j), t});
+            sides.push_back({std::min(i, j), std::max(i, j), t, v});
         }
     std::sort(sides.begin(), sides.end());
     const auto unit_normal = [&](uint32_t t) { return unit_triangle_normal(X, &s.triangles[3 * std::size_t(t)]); };
     const double cos15 = std::cos(15.0 * 3.14159265358979323846 / 180.0);
     s.sharp_edges.clear();
+    s.fold_edges.clear();
+    s.triangle_edges.assign(s.triangles.size(), UINT32_MAX);
+    constexpr uint32_t kFold = 0x80000000u;  // a fold's place, until the sharp edges are counted
     for (std::size_t k = 0; k < sides.size();) {
         std::size_t end = k + 1;
         while (end < sides.size() && sides[end][0] == sides[k][0] && sides[end][1] == sides[k][1]) ++end;
         // A border (one triangle) or a bend (two meeting at an angle); an edge of three or more
         // triangles (a non-manifold surface) has no outer side to turn a normal to: left out.
         const bool border = end == k + 1;
-        if (border || (end == k + 2 && unit_normal(sides[k][2]).dot(unit_normal(sides[k + 1][2])) < cos15))
+        uint32_t id = UINT32_MAX;
+        if (border || (end == k + 2 && unit_normal(sides[k][2]).dot(unit_normal(sides[k + 1][2])) < cos15)) {
+            id = uint32_t(s.sharp_edges.size() / 4);
             s.sharp_edges.insert(s.sharp_edges.end(), {sides[k][0], sides[k][1], sides[k][2], border ? UINT32_MAX : sides[k + 1][2]});
+        } else if (end == k + 2) {
+            id = kFold | uint32_t(s.fold_edges.size() / 4);
+            s.fold_edges.insert(s.fold_edges.end(), {sides[k][0], sides[k][1], sides[k][2], sides[k + 1][2]});
+        }
+        for (std::size_t q = k; q < end && id != UINT32_MAX; ++q) s.triangle_edges[3 * std::size_t(sides[q][2]) + sides[q][3]] = id;
         k = end;
     }
+    const uint32_t sharp = uint32_t(s.sharp_edges.size() / 4);
+    for (uint32_t& id : s.triangle_edges)
+        if (id != UINT32_MAX && (id & kFold)) id = sharp + (id & ~kFold);
 }
 
 void compute_node_triangles(uint32_t node_count, Surface& s) {

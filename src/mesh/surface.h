@@ -35,6 +35,14 @@ struct Surface {
     // edge is a border. The edges that can cross another body's between their nodes
     // (contact/edge_edge.h); derived like the lists above.
     std::vector<uint32_t> sharp_edges;
+    // The other edges joining two triangles (the folds of a flat or gently curved face), 4 each
+    // the same way. A fold the load bends outward can hold a sharp edge lying across the face
+    // between its nodes (a knife edge: contact/edge_edge.h).
+    std::vector<uint32_t> fold_edges;
+    // Per triangle, 3 per triangle (the edge from its corner v to corner v + 1): that edge's
+    // place among the sharp edges, or the number of sharp edges plus its place among the folds;
+    // UINT32_MAX for an edge of three or more triangles (derived like the lists above).
+    std::vector<uint32_t> triangle_edges;
 
     uint32_t triangle_count() const { return uint32_t(triangles.size() / 3); }
 };
@@ -54,7 +62,7 @@ void compute_triangle_elements(const uint32_t* tets, uint32_t tet_count, uint32_
 void compute_node_elements(const uint32_t* tets, uint32_t tet_count, uint32_t nodes_per_tet, uint32_t node_count,
                            Surface& surface);
 
-// The sharp edges from the triangles and the reference positions X.
+// The sharp edges and the folds from the triangles and the reference positions X.
 void compute_sharp_edges(const double* X, Surface& surface);
 
 // The node-triangle lists (they depend on the triangles alone).

@@ -43,7 +43,7 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 // A new field in these structs must be added to the `fields` functions below (and the format
 // version raised): their sizes are pinned here (64-bit Linux) so that it cannot be forgotten.
 #if defined(__x86_64__) || defined(__aarch64__)
-static_assert(sizeof(BodyReference) == 744,  // colouring, node-triangle lists, sharp edges, triangle elements, tree: derived
+static_assert(sizeof(BodyReference) == 792,  // colouring, node-triangle lists, sharp edges, folds, triangle edges, triangle elements, tree: derived
               "BodyReference changed: update the checkpoint");
 static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoint");
 static_assert(sizeof(Attachment) == 360, "Attachment changed: update the checkpoint");

@@ -67,6 +67,7 @@ TEST(RigidBody, BoxDroppedOnASoftSlabExchangesMomentumWithoutPenetration) {
     lfem_body_get_momentum(w, box, Pb0, nullptr);
     lfem_body_get_momentum(w, slab, Ps0, nullptr);
     const double h = 0.9 * stable_step(w);
+    const double l = std::min(mean_boundary_edge(body_shape(w, box, box_mesh)), mean_boundary_edge(body_shape(w, slab, slab_mesh)));
     double impulse[3] = {0, 0, 0}, penetration = 0;
     uint32_t most = 0, iterations = 0;
     for (int i = 0; i < 600; ++i) {
@@ -99,8 +100,13 @@ TEST(RigidBody, BoxDroppedOnASoftSlabExchangesMomentumWithoutPenetration) {
     }
     EXPECT_GT(Pb[2], Pb0[2] + 0.5 * scale);  // it was stopped, not passed through
     // The solve stops when a sweep corrects less than contact_tolerance (1e-3) times the
-    // step's relative motion (src/DESIGN.md section 9): at 2 m/s that is 2e-3 h.
-    EXPECT_LT(penetration, 1e-3 * 2.0 * h);
+    // step's relative motion (src/DESIGN.md section 9): at 2 m/s that is 2e-3 h. Beyond that,
+    // where the slab's face bends round the box's bottom edges, an edge of the box crossing a
+    // fold of the slab between its nodes is caught once the fold bends 2 degrees, as deep as
+    // l tan(1 degree) / 2 (0.87 % of the contact length l), kept, and yields up to 5e-3 l under
+    // its force (contact/edge_edge.h, contact/constraint_pair.cpp). Without the edge pass those
+    // edges sank 1.2 mm (2.3 % of l) into the slab, unseen by the contacts.
+    EXPECT_LT(penetration, 1e-3 * 2.0 * h + (std::tan(M_PI / 180.0) / 2.0 + 5e-3) * l);
 }
 
 // A rigid box lying still on a floor reports that it is still (issue 36): the half-step
