@@ -449,17 +449,21 @@ typedef enum lfem_contact_kind {
                                       corner, `position` the shape's point, `normal` out of the
                                       shape, `force` on the face's point (its three nodes share
                                       it); triangle[] is UINT32_MAX as for a node on a shape */
-    LFEM_CONTACT_EDGE_EDGE = 3   /**< a sharp boundary edge of body_a (of its rest shape: faces
-                                      meeting at more than 15 degrees, or a border) crossing one
-                                      of body_b between their nodes: `node` is the first node of
-                                      body_a's edge, triangle[0] and triangle[1] body_b's edge
+    LFEM_CONTACT_EDGE_EDGE = 3   /**< a boundary edge of body_a crossing one of body_b between
+                                      their nodes, one of the two a sharp edge (of its rest
+                                      shape: faces meeting at more than 15 degrees, or a border)
+                                      and the other a sharp edge too or a fold of a face that the
+                                      load bends outward: `node` is the first node of body_a's
+                                      edge, triangle[0] and triangle[1] body_b's edge
                                       (triangle[2] repeats triangle[1]), `position` the point of
                                       body_b's edge at weights 1 - t2, t2 (barycentric = (0, t2)),
                                       `normal` out of body_b, across both edges, `force` on the
-                                      point of body_a's edge (its two nodes share it). Or one of
-                                      the twelve edges of body_b's box shape `shape`: then
-                                      triangle[] is UINT32_MAX and `position` the box edge's
-                                      point */
+                                      point of body_a's edge (its two nodes share it). Or an edge
+                                      of body_b's box or convex hull shape `shape`: then
+                                      `position` is the shape edge's point, triangle[] is
+                                      UINT32_MAX for a box, and for a hull triangle[0] and
+                                      triangle[1] are the edge's two points (indices into the
+                                      hull's lfem_shape_def.points), triangle[2] UINT32_MAX */
 } lfem_contact_kind;
 
 /** One active contact of the last step (src/DESIGN.md section 5, eqs. 4 to 7): a point of

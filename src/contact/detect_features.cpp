@@ -342,43 +342,61 @@ void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCa
     for (uint32_t b = 0; b < blocks; ++b) s.found.insert(s.found.end(), s.edge_found[b].begin(), s.edge_found[b].end());
 }
 
-// Edge i of a box at a pose: along axis i / 4 from its first corner, the other two axes' sides
-// from bits 0 and 1 of i; `out` the sum of its two faces' unit normals.
-struct BoxEdge {
+// Edge i of a box or a convex hull at a pose, from `from` to `from + along`; `out` the sum of
+// its two faces' unit normals. A box's: along axis i / 4 from its first corner, the other two
+// axes' sides from bits 0 and 1 of i; a hull's: its edge i (hull_edges.h).
+struct ShapeEdge {
     Vec3 from, along, out;
 };
-BoxEdge box_edge(const RigidShape& box, const ShapePose& pose, int i) {
-    const int axis = i / 4, a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-    const double* h = box.half_extents;
-    const double s1 = i & 1 ? 1.0 : -1.0, s2 = i & 2 ? 1.0 : -1.0;
+ShapeEdge shape_edge(const RigidShape& shape, const ShapePose& pose, uint32_t i) {
     Vec3 corner, along = Vec3::Zero(), out = Vec3::Zero();
-    corner[axis] = -h[axis], corner[a1] = s1 * h[a1], corner[a2] = s2 * h[a2];
-    along[axis] = 2.0 * h[axis];
-    out[a1] = s1, out[a2] = s2;
+    if (shape.type == ShapeType::convex_hull) {
+        corner = Vec3(&shape.points[3 * std::size_t(shape.hull_edges[2 * i])]);
+        along = Vec3(&shape.points[3 * std::size_t(shape.hull_edges[2 * i + 1])]) - corner;
+        out = Vec3(&shape.hull_edge_out[3 * std::size_t(i)]);
+    } else {
+        const uint32_t axis = i / 4, a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+        const double* h = shape.half_extents;
+        const double s1 = i & 1 ? 1.0 : -1.0, s2 = i & 2 ? 1.0 : -1.0;
+        corner[axis] = -h[axis], corner[a1] = s1 * h[a1], corner[a2] = s2 * h[a2];
+        along[axis] = 2.0 * h[axis];
+        out[a1] = s1, out[a2] = s2;
+    }
     return {pose.center + pose.rotation * corner, pose.rotation * along, pose.rotation * out};
 }
 
-// The edges of body a (sharp, and folds bent outward) near edge i of box k of body o (at the step's start and end) against
-// it: a crossing between the nodes of a's edge, which no face's point under the box sees (the
-// box's deepest point under a face lies at the face's border there).
-void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody& o, uint32_t k, int i,
-                            const ContactCandidates& c, FeatureScratch& s, const std::vector<ContactBody>& bodies) {
-    const RigidShape& box = o.shapes[k];
-    const BoxEdge end = box_edge(box, ShapePose::load(o.shape_pose + 7 * std::size_t(k)), i);
-    const BoxEdge start = box_edge(box, ShapePose::load(o.shape_pose_start + 7 * std::size_t(k)), i);
+// How many edges a shape's edge pass tests: a box's twelve, a hull's edges, no other's.
+uint32_t shape_edge_count(const RigidShape& shape) {
+    return shape.type == ShapeType::box ? 12 : shape.type == ShapeType::convex_hull ? uint32_t(shape.hull_edges.size() / 2) : 0;
+}
+
+// The edges of body a (sharp, and folds bent outward) near edge i of shape k (a box or a hull)
+// of body o (at the step's start and end) against it: a crossing between the nodes of a's edge,
+// which no face's point under the shape sees (the shape's deepest point under a face lies at
+// the face's border there). The record names the shape's edge: a box's by `end`, a hull's by its
+// points (triangle[0..1]).
+void edges_against_shape_edge(const ContactBody& a, uint32_t ai, const ContactBody& o, uint32_t k, uint32_t i,
+                              const ContactCandidates& c, FeatureScratch& s, const std::vector<ContactBody>& bodies) {
+    const RigidShape& shape = o.shapes[k];
+    const ShapeEdge end = shape_edge(shape, ShapePose::load(o.shape_pose + 7 * std::size_t(k)), i);
+    const ShapeEdge start = shape_edge(shape, ShapePose::load(o.shape_pose_start + 7 * std::size_t(k)), i);
     const double l = a.edge_length, band = kCaptureBand * l, reach = edge_reach(c, l);
     Aabb region = empty_box();
     for (const Vec3& p : {end.from, Vec3(end.from + end.along), start.from, Vec3(start.from + start.along)})
         for (int d = 0; d < 3; ++d) region.lo[d] = std::min(region.lo[d], p[d]), region.hi[d] = std::max(region.hi[d], p[d]);
+    region = grown(region, band + reach + 2.0 * c.budget[ai]);
+    if (!overlaps(region, grown(c.body_box[ai], c.budget[ai]))) return;  // most of a large hull's edges
     s.triangles.clear();
-    c.tree_of(bodies, ai).query(grown(region, band + reach + 2.0 * c.budget[ai]), a.x, a.triangles, c.budget[ai],
-                                [&](uint32_t t) { s.triangles.push_back(t); });
+    c.tree_of(bodies, ai).query(region, a.x, a.triangles, c.budget[ai], [&](uint32_t t) { s.triangles.push_back(t); });
     edges_of(a, s.triangles, s.edges.marks, s.match);
+    const bool hull = shape.type == ShapeType::convex_hull;
     for (uint32_t ea : s.match) {
         if (is_fold(a, ea) && !fold_bends_out(a, ea)) continue;
         ContactRecord r = edge_record(a, ea, o.slot);
-        r.shape = k, r.end = uint8_t(i);
-        r.triangle[0] = r.triangle[1] = r.triangle[2] = UINT32_MAX;
+        r.shape = k, r.end = hull ? 0 : uint8_t(i);
+        r.triangle[0] = hull ? shape.hull_edges[2 * std::size_t(i)] : UINT32_MAX;
+        r.triangle[1] = hull ? shape.hull_edges[2 * std::size_t(i) + 1] : UINT32_MAX;
+        r.triangle[2] = UINT32_MAX;
         const ContactRecord* last = last_of(s, r);
         const uint32_t* na = edge_of(a, ea);
         double line[6];
@@ -396,12 +414,14 @@ void edges_against_box_edge(const ContactBody& a, uint32_t ai, const ContactBody
     }
 }
 
-// Every box of static and kinematic bodies against the edges of the moving bodies near it.
-void edges_against_boxes(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s) {
+// Every box and convex hull of static and kinematic bodies against the edges of the moving
+// bodies near it.
+void edges_against_shapes(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s) {
     for (uint32_t oi : c.shape_bodies) {
         const ContactBody& o = bodies[oi];
         for (uint32_t k = 0; k < o.shape_count; ++k) {
-            if (o.shapes[k].type != ShapeType::box) continue;
+            const uint32_t edges = shape_edge_count(o.shapes[k]);
+            if (edges == 0) continue;
             Aabb box = shape_box(o.shapes[k], ShapePose::load(o.shape_pose + 7 * std::size_t(k)));
             join(box, shape_box(o.shapes[k], ShapePose::load(o.shape_pose_start + 7 * std::size_t(k))));
             s.near.clear();
@@ -409,7 +429,7 @@ void edges_against_boxes(const std::vector<ContactBody>& bodies, const ContactCa
             for (uint32_t ai : s.near) {
                 const ContactBody& a = bodies[ai];
                 if (ai == oi || !a.moves || !is_movable(a) || edge_count(a) == 0 || !bodies_may_touch(a, o)) continue;
-                for (int i = 0; i < 12; ++i) edges_against_box_edge(a, ai, o, k, i, c, s, bodies);
+                for (uint32_t i = 0; i < edges; ++i) edges_against_shape_edge(a, ai, o, k, i, c, s, bodies);
             }
         }
     }
@@ -431,7 +451,7 @@ void detect_features(const std::vector<ContactBody>& bodies, const ContactCandid
     s.found.clear();
     s.start_gaps.clear();
     shapes_against_faces(bodies, c, s);
-    edges_against_boxes(bodies, c, s);
+    edges_against_shapes(bodies, c, s);
     edges_against_edges(bodies, c, s, pool);
     if (s.found.empty()) return;
     std::sort(s.found.begin(), s.found.end(), feature_less);

@@ -17,6 +17,11 @@ struct RigidShape {
     double radius = 0;
     double half_length = 0;
     std::vector<double> points;  // convex hull, local coordinates, 3 per point
+    // A convex hull's edges where two of its faces meet at an angle: their points (2 each, into
+    // `points`) and the sums of their faces' unit normals (3 each, local); derived from the
+    // points (hull_edges.h), not saved.
+    std::vector<uint32_t> hull_edges;
+    std::vector<double> hull_edge_out;
 };
 
 // A shape's placement: world = center + R(rotation) local. 7 doubles: x, y, z, qw, qx, qy, qz.

@@ -9,6 +9,7 @@
 #include "common/error.h"
 #include "common/format.h"
 #include "common/quadratic_tet_nodes.h"
+#include "contact/hull_edges.h"
 #include "fem/lumped_mass.h"
 #include "fem/quadratic_tet.h"
 #include "fem/stable_step.h"
@@ -325,6 +326,7 @@ void World::add_triangle_mesh(BodyHandle handle, const double* positions, uint32
 uint32_t World::add_shape(BodyHandle handle, const RigidShape& shape, const double pose[7]) {
     Body& body = bodies_.get(handle);  // a static or kinematic one (checked by the shim)
     RigidShape copy = shape;
+    compute_hull_edges(copy);
     body.shapes.reserve(body.shapes.size() + 1);
     body.state.shape_pose.reserve(body.state.shape_pose.size() + 7);
     // Nothing below allocates: the body changes all at once.

@@ -19,12 +19,13 @@
 #include <type_traits>
 
 #include "common/error.h"
+#include "contact/hull_edges.h"
 
 namespace lfem {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'F', 'E', 'M', 'C', 'K', 'P', 'T'};
-constexpr uint32_t kFormatVersion = 14; // 2: thread_count in the def, float tet rotations,
+constexpr uint32_t kFormatVersion = 15; // 2: thread_count in the def, float tet rotations,
                                         // stiffening; 3: the node and tet numbering; 4: mass
                                         // scaling (the world def's step, a body's added mass);
                                         // 5: inverted tets and the warnings; 6: attachments,
@@ -36,7 +37,8 @@ constexpr uint32_t kFormatVersion = 14; // 2: thread_count in the def, float tet
                                         // report_contacts; 12: forces for the next
                                         // call, a body's user id; 13: the contacts'
                                         // kinds (edges, faces against shapes); 14: a
-                                        // body's edge_contacts
+                                        // body's edge_contacts; 15: edges against a
+                                        // convex hull's edges
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 4 * 4 + 8 + 8;
 
@@ -49,7 +51,7 @@ static_assert(sizeof(BodyState) == 312, "BodyState changed: update the checkpoin
 static_assert(sizeof(Attachment) == 360, "Attachment changed: update the checkpoint");
 static_assert(sizeof(WorldCounters) == 192, "WorldCounters changed: update the checkpoint");
 static_assert(sizeof(ContactRecord) == 224, "ContactRecord changed: update the checkpoint");
-static_assert(sizeof(RigidShape) == 72, "RigidShape changed: update the checkpoint");
+static_assert(sizeof(RigidShape) == 120, "RigidShape changed: update the checkpoint");  // hull edges: derived
 static_assert(sizeof(Skin) == 80, "Skin changed: update the checkpoint");
 #endif
 
@@ -202,6 +204,8 @@ void body_fields(A& a, B& b) {
         b.shapes.resize(std::size_t(shapes));
     }
     for (auto& shape : b.shapes) shape_fields(a, shape);
+    if constexpr (A::loading)
+        for (auto& shape : b.shapes) compute_hull_edges(shape);  // derived, like the surface's lists
     uint64_t skins = b.skins.size();
     a(skins);
     if constexpr (A::loading) {
@@ -300,6 +304,28 @@ void check_body(const Body& b, const std::string& path, std::size_t slot) {
         for (double v : *a) require(std::isfinite(v), "a non-finite number");
 }
 
+// Whether a contact's nodes, shape and feature name parts of bodies a and b.
+bool contact_in_range(const ContactRecord& c, const Body& a, const Body& b) {
+    const bool feature = c.kind == ContactKind::face_shape || c.kind == ContactKind::edge_edge;
+    bool in_range = feature ? c.node == kFeatureNode : c.kind == ContactKind::node_face && c.node < a.ref.node_count();
+    if (feature)
+        for (uint32_t v : c.nodes_a) in_range = in_range && v < a.ref.node_count();
+    if (c.shape == UINT32_MAX)
+        for (uint32_t v : c.triangle) in_range = in_range && v < b.ref.node_count();
+    else
+        in_range = in_range && c.shape < b.shapes.size();
+    // A face's point under a shape is one of two (end); an edge against a box's edge names
+    // the box's edge (end, one of twelve), against a hull's edge its points (triangle[0..1],
+    // an edge of the hull).
+    const bool shape_edge = c.kind == ContactKind::edge_edge && c.shape != UINT32_MAX;
+    const RigidShape* sh = shape_edge && in_range ? &b.shapes[c.shape] : nullptr;
+    in_range = in_range && (c.kind != ContactKind::face_shape || c.shape != UINT32_MAX) && c.end < (shape_edge ? 12 : 2);
+    bool hull_edge = false;
+    for (std::size_t e = 0; sh && e + 1 < sh->hull_edges.size() && !hull_edge; e += 2)
+        hull_edge = sh->hull_edges[e] == c.triangle[0] && sh->hull_edges[e + 1] == c.triangle[1] && c.end == 0;
+    return in_range && (!sh || sh->type == ShapeType::box || hull_edge);
+}
+
 void check_image(const WorldImage& im, const std::string& path) {
     for (std::size_t i = 0; i < im.bodies.size(); ++i)
         if (im.bodies[i].generation != 0) check_body(im.bodies[i], path, i);
@@ -309,22 +335,7 @@ void check_image(const WorldImage& im, const std::string& path) {
         const bool ok = c.body_a < im.bodies.size() && c.body_b < im.bodies.size() &&
                         im.bodies[c.body_a].generation != 0 && im.bodies[c.body_b].generation != 0;
         if (!ok) fail(path, "a contact names a missing body");
-        const Body& a = im.bodies[c.body_a];
-        const Body& b = im.bodies[c.body_b];
-        const bool feature = c.kind == ContactKind::face_shape || c.kind == ContactKind::edge_edge;
-        bool in_range = feature ? c.node == kFeatureNode : c.kind == ContactKind::node_face && c.node < a.ref.node_count();
-        if (feature)
-            for (uint32_t v : c.nodes_a) in_range = in_range && v < a.ref.node_count();
-        if (c.shape == UINT32_MAX)
-            for (uint32_t v : c.triangle) in_range = in_range && v < b.ref.node_count();
-        else
-            in_range = in_range && c.shape < b.shapes.size();
-        // A face's point under a shape is one of two (end); an edge against a box's edge names
-        // the box's edge (end, one of twelve).
-        const bool box_edge = c.kind == ContactKind::edge_edge && c.shape != UINT32_MAX;
-        in_range = in_range && (c.kind != ContactKind::face_shape || c.shape != UINT32_MAX) &&
-                   (!box_edge || b.shapes[c.shape].type == ShapeType::box) && c.end < (box_edge ? 12 : 2);
-        if (!in_range) fail(path, "a contact index is out of range");
+        if (!contact_in_range(c, im.bodies[c.body_a], im.bodies[c.body_b])) fail(path, "a contact index is out of range");
     }
     auto live = [&](uint32_t slot, uint32_t generation) {
         return slot < im.bodies.size() && im.bodies[slot].generation != 0 && im.bodies[slot].generation == generation;

@@ -568,22 +568,41 @@ TEST(Features, ASoftCubeTumblesOffABlocksEdge) {
     }
 }
 
-// The same tumble off a static box shape's edge (20 x 20 x 10 cm) instead of a block of tets.
+// The block of the tumbling test as a static shape (20 x 20 x 10 cm, top face at z = 0): a box,
+// or a convex hull of its eight corners with points that are not the hull's (its centre, the
+// middle of its top face and of an edge), whose flat faces the hull splits into triangles.
+lfem_shape_def block_shape(bool hull, std::vector<double>& points) {
+    lfem_shape_def box = lfem_shape_def_default();
+    box.center[2] = -0.05;
+    if (!hull) {
+        box.type = LFEM_SHAPE_BOX;
+        box.half_extents[0] = box.half_extents[1] = 0.1, box.half_extents[2] = 0.05;
+        return box;
+    }
+    points.clear();
+    for (int i = 0; i < 8; ++i) points.insert(points.end(), {i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.05 : -0.05});
+    points.insert(points.end(), {0.0, 0.0, 0.0, 0.0, 0.0, 0.05, 0.1, 0.0, 0.05});
+    box.type = LFEM_SHAPE_CONVEX_HULL;
+    box.points = points.data();
+    box.point_count = uint32_t(points.size() / 3);
+    return box;
+}
+
+// The same tumble off a static box shape's edge (20 x 20 x 10 cm) instead of a block of tets,
+// and off a convex hull of the same box.
 // The box's faces under the cube's faces are held by the faces' own constraints against the
 // shape (contact/face_shape.h), but where the box's edge crosses a cube's edge between its
 // nodes only an edge against the box's edge holds (an edge_edge record whose body_b side is the
 // shape). At no call is a point of the cube's edges inside the box, or a point of the box's
 // edges inside the cube, deeper than 1 % of the cube's element; with the edge pass off, the
 // edges sink a quarter of an element into each other.
-TEST(Features, ASoftCubeTumblesOffABoxShapesEdge) {
+void tumble_off_a_shapes_edge(bool hull) {
     for (uint8_t edges : {1, 0}) {
         World w;
         lfem_shape_def floor = lfem_shape_def_default();
         floor.center[2] = -0.1;
-        lfem_shape_def box = lfem_shape_def_default();
-        box.type = LFEM_SHAPE_BOX;
-        box.center[2] = -0.05;
-        box.half_extents[0] = box.half_extents[1] = 0.1, box.half_extents[2] = 0.05;
+        std::vector<double> points;
+        const lfem_shape_def box = block_shape(hull, points);
         static_shapes(w, {floor, box});
         Mesh cube;
         const lfem_body body = tumbling_cube(w, cube, edges);
@@ -623,9 +642,10 @@ TEST(Features, ASoftCubeTumblesOffABoxShapesEdge) {
             for (const lfem_contact& k : contacts_of(w))
                 box_edge_contacts += k.kind == LFEM_CONTACT_EDGE_EDGE && k.shape != UINT32_MAX;
         }
-        std::printf("cube tumbling off a box shape's edge, edge pass %s: deepest point %.3f mm (%.2f %% of an "
-                    "element), %u records against the box's edges over the calls, lowest node z = %.3f m\n",
-                    edges ? "on" : "off", 1e3 * deepest, 100 * deepest / element, box_edge_contacts, lowest);
+        std::printf("cube tumbling off a %s shape's edge, edge pass %s: deepest point %.3f mm (%.2f %% of an "
+                    "element), %u records against the shape's edges over the calls, lowest node z = %.3f m\n",
+                    hull ? "hull" : "box", edges ? "on" : "off", 1e3 * deepest, 100 * deepest / element, box_edge_contacts,
+                    lowest);
         if (edges) {
             EXPECT_GT(box_edge_contacts, 0u);
             EXPECT_LT(deepest, 0.01 * element);
@@ -637,32 +657,44 @@ TEST(Features, ASoftCubeTumblesOffABoxShapesEdge) {
     }
 }
 
+TEST(Features, ASoftCubeTumblesOffABoxShapesEdge) { tumble_off_a_shapes_edge(false); }
+
+// Edges against a convex hull's edges: its edges where two faces meet at an angle (the box's
+// twelve, not the diagonals of its split faces), found from its points when it is added.
+TEST(Features, ASoftCubeTumblesOffAConvexHullsEdge) {
+    if (!LFEM_WITH_CCD) GTEST_SKIP() << "built without convex hulls (LFEM_WITH_CCD=OFF)";
+    tumble_off_a_shapes_edge(true);
+}
+
 // A body's edges held against a box's edges are bitwise the same on 1, 2 and 3 threads and
-// after a checkpoint (the records name the box's edge): the cube of the test above, taken when
-// the first record against the box's edges appears.
+// after a checkpoint (the records name the box's edge), and against a convex hull's (the
+// records name its points; the hull's edges are made again from its points when it is loaded):
+// the cube of the test above, taken when the first record against the shape's edges appears.
 TEST(Features, BoxEdgeContactsAreBitwiseTheSameOnAnyThreadsAndAfterACheckpoint) {
-    expect_bitwise_on_threads([](World& w, uint32_t threads) {
-        lfem_shape_def floor = lfem_shape_def_default(), box = lfem_shape_def_default();
-        floor.center[2] = -0.1;
-        box.type = LFEM_SHAPE_BOX;
-        box.center[2] = -0.05;
-        box.half_extents[0] = box.half_extents[1] = 0.1, box.half_extents[2] = 0.05;
-        static_shapes(w, {floor, box});
-        Mesh cube;
-        const lfem_body body = tumbling_cube(w, cube, 1);
-        uint32_t box_edges = 0;
-        for (int i = 0; i < 90 && box_edges == 0; ++i) {
-            EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
-            for (const lfem_contact& k : contacts_of(w)) box_edges += k.kind == LFEM_CONTACT_EDGE_EDGE && k.shape != UINT32_MAX;
-        }
-        EXPECT_GT(box_edges, 0u) << "the cube must be held by the box's edges";
-        if (threads == 1) {
-            expect_a_checkpoint_continues_bitwise(w, body, "lfem_box_edge_contacts.ckpt");
-        } else {
-            for (int i = 0; i < 10; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
-        }
-        return positions(w, body);
-    });
+    for (bool hull : {false, true}) {
+        if (hull && !LFEM_WITH_CCD) continue;  // no hulls without libccd
+        expect_bitwise_on_threads([hull](World& w, uint32_t threads) {
+            lfem_shape_def floor = lfem_shape_def_default();
+            floor.center[2] = -0.1;
+            std::vector<double> points;
+            static_shapes(w, {floor, block_shape(hull, points)});
+            Mesh cube;
+            const lfem_body body = tumbling_cube(w, cube, 1);
+            uint32_t shape_edges = 0;
+            for (int i = 0; i < 90 && shape_edges == 0; ++i) {
+                EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
+                for (const lfem_contact& k : contacts_of(w))
+                    shape_edges += k.kind == LFEM_CONTACT_EDGE_EDGE && k.shape != UINT32_MAX;
+            }
+            EXPECT_GT(shape_edges, 0u) << "the cube must be held by the shape's edges";
+            if (threads == 1) {
+                expect_a_checkpoint_continues_bitwise(w, body, "lfem_box_edge_contacts.ckpt");
+            } else {
+                for (int i = 0; i < 10; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
+            }
+            return positions(w, body);
+        });
+    }
 }
 
 // Two thin plates crossed edge on edge (tests/physics/thin_plates.h), the soft one swung down
