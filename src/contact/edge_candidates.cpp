@@ -27,13 +27,40 @@ double search_reach(const std::vector<ContactBody>& bodies, const ContactCandida
     return c.budget[ai] + c.budget[bi] + triangle_growth(l, c.offset_allowed, false) + kFallenRecovery * l;
 }
 
-// The edges of b whose boxes overlap `region` (b's triangles under it through b's tree: a large
-// floor's edges are not all visited) with their boxes: its sharp edges into `sharp`, its folds
-// into `folds`.
+bool by_lo(const EdgeBox& x, const EdgeBox& y) {
+    return x.box.lo[0] != y.box.lo[0] ? x.box.lo[0] < y.box.lo[0] : x.edge < y.edge;
+}
+
+// A body with at most this many edges has them all boxed and sorted once per search (a cube of
+// a pile meets several others); one with more (a floor, a terrain) is searched through its
+// triangle tree for each body near it, so that its far edges are never visited.
+constexpr uint32_t kListedEdges = 4096;
+
+// Where body bi's edges are listed in e.listed (made at the first call of a search): all its
+// edges with their boxes at x*, sorted by lo[0] (by_lo).
+uint32_t listed_edges(const std::vector<ContactBody>& bodies, uint32_t bi, EdgeCandidates& e) {
+    if (e.listed_begin.size() != bodies.size()) e.listed_begin.assign(bodies.size(), UINT32_MAX);
+    if (e.listed_begin[bi] != UINT32_MAX) return e.listed_begin[bi];
+    const ContactBody& b = bodies[bi];
+    const uint32_t first = uint32_t(e.listed.size());
+    for (uint32_t k = 0, count = edge_count(b); k < count; ++k) e.listed.push_back({edge_box(b, k, 0.0), k});
+    std::sort(e.listed.begin() + first, e.listed.end(), by_lo);
+    return e.listed_begin[bi] = first;
+}
+
+// The edges of b whose boxes overlap `region`, with their boxes, sorted by lo[0] (by_lo): its
+// sharp edges into `sharp`, its folds into `folds`. From its listed edges, or through its tree
+// (b's triangles under the region) for a body with many.
 void edges_in(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t bi, const Aabb& region,
               EdgeCandidates& e, std::vector<EdgeBox>& sharp, std::vector<EdgeBox>& folds) {
     const ContactBody& b = bodies[bi];
     sharp.clear(), folds.clear();
+    if (edge_count(b) <= kListedEdges) {
+        const uint32_t first = listed_edges(bodies, bi, e);
+        for (uint32_t k = first; k < first + edge_count(b) && e.listed[k].box.lo[0] <= region.hi[0]; ++k)
+            if (overlaps(e.listed[k].box, region)) (is_fold(b, e.listed[k].edge) ? folds : sharp).push_back(e.listed[k]);
+        return;
+    }
     e.triangles.clear();
     c.tree_of(bodies, bi).query(region, b.x, b.triangles, 0.0, [&](uint32_t t) { e.triangles.push_back(t); });
     edges_of(b, e.triangles, e.marks, e.edges);
@@ -41,19 +68,15 @@ void edges_in(const std::vector<ContactBody>& bodies, const ContactCandidates& c
         const Aabb box = edge_box(b, eb, 0.0);
         if (overlaps(box, region)) (is_fold(b, eb) ? folds : sharp).push_back({box, eb});
     }
+    std::sort(sharp.begin(), sharp.end(), by_lo);
+    std::sort(folds.begin(), folds.end(), by_lo);
 }
 
 // Each pair of boxes of xs and ys that overlap, as emit(x's edge, y's edge): both sorted by
-// lo[0] (then edge), then swept along x (O(n log n + pairs)): each box meets those of the other
-// list that start within its x-extent, once (the one of the two that starts first finds the
-// other).
+// lo[0] (by_lo), swept along x (O(n + pairs)): each box meets those of the other list that
+// start within its x-extent, once (the one of the two that starts first finds the other).
 template <class Emit>
-void overlapping_boxes(std::vector<EdgeBox>& xs, std::vector<EdgeBox>& ys, Emit&& emit) {
-    const auto by_lo = [](const EdgeBox& x, const EdgeBox& y) {
-        return x.box.lo[0] != y.box.lo[0] ? x.box.lo[0] < y.box.lo[0] : x.edge < y.edge;
-    };
-    std::sort(xs.begin(), xs.end(), by_lo);
-    std::sort(ys.begin(), ys.end(), by_lo);
+void overlapping_boxes(const std::vector<EdgeBox>& xs, const std::vector<EdgeBox>& ys, Emit&& emit) {
     std::size_t i = 0, j = 0;
     while (i < xs.size() && j < ys.size()) {
         const bool x_first = xs[i].box.lo[0] <= ys[j].box.lo[0];
@@ -77,7 +100,8 @@ void grow_all(const std::vector<EdgeBox>& from, double reach, std::vector<EdgeBo
 // theirs: a group of the edge pass's watched folds (each once), with all of those sharp edges.
 // Most lie flat under a resting face and are passed over each sub-step by one test of their
 // bend; pairs with the group's sharp edges are made only for those bent outward.
-void watch_folds(uint32_t si, std::vector<EdgeBox>& sharp, uint32_t fi, std::vector<EdgeBox>& folds, EdgeCandidates& e) {
+void watch_folds(uint32_t si, const std::vector<EdgeBox>& sharp, uint32_t fi, const std::vector<EdgeBox>& folds,
+                 EdgeCandidates& e) {
     if (sharp.empty() || folds.empty()) return;
     const std::size_t first = e.watched.size();
     const uint32_t group = uint32_t(e.fold_groups.size());
@@ -117,6 +141,8 @@ void edges_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandid
     std::sort(e.pairs.begin() + first, e.pairs.end(), [](const EdgePair& x, const EdgePair& y) {
         return x.edge_a != y.edge_a ? x.edge_a < y.edge_a : x.edge_b < y.edge_b;
     });
+    const std::size_t marks = std::max(edge_count(bodies[lo]), edge_count(bodies[hi]));
+    if (e.marks.mark.size() < marks) e.marks.mark.resize(marks, 0);  // watch_folds marks folds
     grow_all(e.sharp_lo, reach, e.grown);
     watch_folds(lo, e.grown, hi, lo == hi ? e.folds_lo : e.folds_hi, e);
     if (lo == hi) return;
@@ -156,6 +182,7 @@ void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCand
     e.search = c.searches;
     e.pairs.clear();
     e.fold_groups.clear(), e.group_sharp.clear(), e.watched.clear();
+    e.listed.clear(), e.listed_begin.assign(bodies.size(), UINT32_MAX);
     // The pairs of different bodies the search put within reach (each once).
     e.body_pairs.clear();
     for (uint32_t ai = 0; ai + 1 < c.partner_begin.size(); ++ai)
@@ -179,16 +206,19 @@ void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCand
         const uint32_t bx = e.fold_groups[x.group].fold_body, by = e.fold_groups[y.group].fold_body;
         return bx != by ? bx < by : x.fold != y.fold ? x.fold < y.fold : x.group < y.group;
     });
+    // Each edge the pairs name gets a line, in the order the pairs first name it: through a
+    // slot per edge of each body the pairs name (edge_base: where its slots begin).
     e.edges_used.clear();
-    for (const EdgePair& p : e.pairs) {
-        e.edges_used.push_back(uint64_t(p.a) << 32 | p.edge_a);
-        e.edges_used.push_back(uint64_t(p.b) << 32 | p.edge_b);
-    }
-    std::sort(e.edges_used.begin(), e.edges_used.end());
-    e.edges_used.erase(std::unique(e.edges_used.begin(), e.edges_used.end()), e.edges_used.end());
+    e.edge_base.assign(bodies.size(), UINT32_MAX);
+    uint32_t slots = 0;
+    for (const EdgePair& p : e.pairs)
+        for (uint32_t body : {p.a, p.b})
+            if (e.edge_base[body] == UINT32_MAX) e.edge_base[body] = slots, slots += edge_count(bodies[body]);
+    e.edge_line.assign(slots, UINT32_MAX);
     const auto place = [&](uint32_t body, uint32_t edge) {
-        const uint64_t key = uint64_t(body) << 32 | edge;
-        return uint32_t(std::lower_bound(e.edges_used.begin(), e.edges_used.end(), key) - e.edges_used.begin());
+        uint32_t& line = e.edge_line[e.edge_base[body] + edge];
+        if (line == UINT32_MAX) line = uint32_t(e.edges_used.size()), e.edges_used.push_back(uint64_t(body) << 32 | edge);
+        return line;
     };
     for (EdgePair& p : e.pairs) p.line_a = place(p.a, p.edge_a), p.line_b = place(p.b, p.edge_b);
 }

@@ -36,9 +36,9 @@ struct EdgeMarks {
 struct EdgeCandidates {
     uint64_t search = 0;           // the search (ContactCandidates::searches) they were made after
     std::vector<EdgePair> pairs;   // by body pair, then a's edge, then b's
-    // The edges the pairs name, each once (body << 32 | edge, ascending), and per
-    // sub-step their lines at x* side by side (6 each: first node, second less first), which
-    // the pairs read instead of the bodies' scattered nodes.
+    // The edges the pairs name, each once (body << 32 | edge, as the pairs first name them),
+    // and per sub-step their lines at x* side by side (6 each: first node, second less first),
+    // which the pairs read instead of the bodies' scattered nodes.
     std::vector<uint64_t> edges_used;
     std::vector<double> lines;
     // The folds watched against sharp edges: group g's are those of body fold_body near the
@@ -60,6 +60,9 @@ struct EdgeCandidates {
         uint32_t edge;
     };
     std::vector<uint64_t> body_pairs;
+    std::vector<EdgeBox> listed;          // the edges of bodies with few, boxed and sorted once
+    std::vector<uint32_t> listed_begin;   //   per search: where each body's begin (or UINT32_MAX)
+    std::vector<uint32_t> edge_base, edge_line;  // an edge's line: edge_line[edge_base[body] + edge]
     EdgeMarks marks;
     std::vector<uint32_t> triangles, edges;
     std::vector<EdgeBox> sharp_lo, folds_lo, sharp_hi, folds_hi, grown;
