@@ -309,7 +309,7 @@ void fold_block(const std::vector<ContactBody>& bodies, const ContactCandidates&
         const ContactBody& b = bodies[g.fold_body];
         const EdgeCandidates::WatchedFold* last = k > first ? &s.edges.watched[k - 1] : nullptr;
         if (!last || last->fold != w.fold || s.edges.fold_groups[last->group].fold_body != g.fold_body)
-            bends = fold_bends_out(b, w.fold);
+            bends = fold_bends(b.x, w.corners);
         if (!bends || (!a.moves && !b.moves)) continue;
         double line_b[6], line_a[6];
         const Aabb fold_box = grown(swept_edge(b, w.fold, line_b), edge_reach(c, contact_length(a, b)));
@@ -326,7 +326,7 @@ void fold_block(const std::vector<ContactBody>& bodies, const ContactCandidates&
 // blocks' records join s.found in block order.
 void edges_against_edges(const std::vector<ContactBody>& bodies, const ContactCandidates& c, FeatureScratch& s,
                          ThreadPool* pool) {
-    update_edge_pairs(bodies, c, s.edges);
+    update_edge_pairs(bodies, c, s.edges, pool);
     update_edge_lines(bodies, s.edges);
     const uint32_t pairs = uint32_t(s.edges.pairs.size()), folds = uint32_t(s.edges.watched.size());
     const uint32_t pair_blocks = (pairs + kEdgeBlock - 1) / kEdgeBlock, blocks = pair_blocks + (folds + kEdgeBlock - 1) / kEdgeBlock;

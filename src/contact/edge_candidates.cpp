@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "contact/detection_tolerances.h"
+#include "contact/edge_edge.h"
 
 namespace lfem {
 namespace {
@@ -35,36 +36,46 @@ bool by_lo(const EdgeBox& x, const EdgeBox& y) {
 // a pile meets several others); one with more (a floor, a terrain) is searched through its
 // triangle tree for each body near it, so that its far edges are never visited.
 constexpr uint32_t kListedEdges = 4096;
+// Pairs of bodies per run of the candidates' making on the pool.
+constexpr uint32_t kPairsPerChunk = 8;
 
-// Where body bi's edges are listed in e.listed (made at the first call of a search): all its
-// edges with their boxes at x*, sorted by lo[0] (by_lo).
-uint32_t listed_edges(const std::vector<ContactBody>& bodies, uint32_t bi, EdgeCandidates& e) {
-    if (e.listed_begin.size() != bodies.size()) e.listed_begin.assign(bodies.size(), UINT32_MAX);
-    if (e.listed_begin[bi] != UINT32_MAX) return e.listed_begin[bi];
-    const ContactBody& b = bodies[bi];
-    const uint32_t first = uint32_t(e.listed.size());
-    for (uint32_t k = 0, count = edge_count(b); k < count; ++k) e.listed.push_back({edge_box(b, k, 0.0), k});
-    std::sort(e.listed.begin() + first, e.listed.end(), by_lo);
-    return e.listed_begin[bi] = first;
+using Chunk = EdgeCandidates::Chunk;
+
+// Lists the edges of the bodies of the pairs with at most kListedEdges (e.listed_bodies, each
+// once), on the pool: each body's edges with their boxes at x*, sorted by lo[0] (by_lo).
+void list_edges(const std::vector<ContactBody>& bodies, EdgeCandidates& e, ThreadPool* pool) {
+    e.listed_begin.assign(bodies.size(), UINT32_MAX);
+    e.listed_bodies.clear();
+    uint32_t total = 0;
+    for (uint64_t key : e.body_pairs)
+        for (uint32_t bi : {uint32_t(key >> 32), uint32_t(key)})
+            if (e.listed_begin[bi] == UINT32_MAX && edge_count(bodies[bi]) <= kListedEdges)
+                e.listed_begin[bi] = total, total += edge_count(bodies[bi]), e.listed_bodies.push_back(bi);
+    e.listed.resize(total);
+    parallel_for(pool, uint32_t(e.listed_bodies.size()), [&](uint32_t k) {
+        const uint32_t bi = e.listed_bodies[k], first = e.listed_begin[bi], count = edge_count(bodies[bi]);
+        for (uint32_t edge = 0; edge < count; ++edge) e.listed[first + edge] = {edge_box(bodies[bi], edge, 0.0), edge};
+        std::sort(e.listed.begin() + first, e.listed.begin() + first + count, by_lo);
+    });
 }
 
 // The edges of b whose boxes overlap `region`, with their boxes, sorted by lo[0] (by_lo): its
 // sharp edges into `sharp`, its folds into `folds`. From its listed edges, or through its tree
 // (b's triangles under the region) for a body with many.
 void edges_in(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t bi, const Aabb& region,
-              EdgeCandidates& e, std::vector<EdgeBox>& sharp, std::vector<EdgeBox>& folds) {
+              const EdgeCandidates& e, Chunk& k, std::vector<EdgeBox>& sharp, std::vector<EdgeBox>& folds) {
     const ContactBody& b = bodies[bi];
     sharp.clear(), folds.clear();
-    if (edge_count(b) <= kListedEdges) {
-        const uint32_t first = listed_edges(bodies, bi, e);
-        for (uint32_t k = first; k < first + edge_count(b) && e.listed[k].box.lo[0] <= region.hi[0]; ++k)
-            if (overlaps(e.listed[k].box, region)) (is_fold(b, e.listed[k].edge) ? folds : sharp).push_back(e.listed[k]);
+    if (e.listed_begin[bi] != UINT32_MAX) {
+        const uint32_t first = e.listed_begin[bi];
+        for (uint32_t q = first; q < first + edge_count(b) && e.listed[q].box.lo[0] <= region.hi[0]; ++q)
+            if (overlaps(e.listed[q].box, region)) (is_fold(b, e.listed[q].edge) ? folds : sharp).push_back(e.listed[q]);
         return;
     }
-    e.triangles.clear();
-    c.tree_of(bodies, bi).query(region, b.x, b.triangles, 0.0, [&](uint32_t t) { e.triangles.push_back(t); });
-    edges_of(b, e.triangles, e.marks, e.edges);
-    for (uint32_t eb : e.edges) {
+    k.triangles.clear();
+    c.tree_of(bodies, bi).query(region, b.x, b.triangles, 0.0, [&](uint32_t t) { k.triangles.push_back(t); });
+    edges_of(b, k.triangles, k.marks, k.edges);
+    for (uint32_t eb : k.edges) {
         const Aabb box = edge_box(b, eb, 0.0);
         if (overlaps(box, region)) (is_fold(b, eb) ? folds : sharp).push_back({box, eb});
     }
@@ -100,20 +111,24 @@ void grow_all(const std::vector<EdgeBox>& from, double reach, std::vector<EdgeBo
 // theirs: a group of the edge pass's watched folds (each once), with all of those sharp edges.
 // Most lie flat under a resting face and are passed over each sub-step by one test of their
 // bend; pairs with the group's sharp edges are made only for those bent outward.
-void watch_folds(uint32_t si, const std::vector<EdgeBox>& sharp, uint32_t fi, const std::vector<EdgeBox>& folds,
-                 EdgeCandidates& e) {
+void watch_folds(uint32_t si, const std::vector<EdgeBox>& sharp, uint32_t fi, const ContactBody& b,
+                 const std::vector<EdgeBox>& folds, Chunk& k) {
     if (sharp.empty() || folds.empty()) return;
-    const std::size_t first = e.watched.size();
-    const uint32_t group = uint32_t(e.fold_groups.size());
-    if (++e.marks.generation == 0) std::fill(e.marks.mark.begin(), e.marks.mark.end(), 0), e.marks.generation = 1;
+    const std::size_t first = k.watched.size();
+    const uint32_t group = uint32_t(k.fold_groups.size());
+    if (++k.marks.generation == 0) std::fill(k.marks.mark.begin(), k.marks.mark.end(), 0), k.marks.generation = 1;
     overlapping_boxes(sharp, folds, [&](uint32_t, uint32_t fold) {
-        if (e.marks.mark[fold] == e.marks.generation) return;
-        e.marks.mark[fold] = e.marks.generation;
-        e.watched.push_back({group, fold});
+        if (k.marks.mark[fold] == k.marks.generation) return;
+        k.marks.mark[fold] = k.marks.generation;
+        EdgeCandidates::WatchedFold w{group, fold, {0, 0, 0, 0}};
+        fold_corners(b, fold, w.corners);
+        // A static body's folds bend as they did when it was added: a flat one never holds (a
+        // terrain's folds under a cube are not tested again each sub-step).
+        if (b.moves || fold_bends(b.x, w.corners)) k.watched.push_back(w);
     });
-    if (e.watched.size() == first) return;
-    e.fold_groups.push_back({si, fi, uint32_t(e.group_sharp.size()), uint32_t(e.group_sharp.size() + sharp.size())});
-    for (const EdgeBox& x : sharp) e.group_sharp.push_back(x.edge);
+    if (k.watched.size() == first) return;
+    k.fold_groups.push_back({si, fi, uint32_t(k.group_sharp.size()), uint32_t(k.group_sharp.size() + sharp.size())});
+    for (const EdgeBox& x : sharp) k.group_sharp.push_back(x.edge);
 }
 
 // The candidates of bodies lo <= hi: each one's edges near the other's box grown by the search's
@@ -122,32 +137,32 @@ void watch_folds(uint32_t si, const std::vector<EdgeBox>& sharp, uint32_t fi, co
 // body against itself the same way, each pair of its edges once: own_edges_may_cross); and
 // each one's folds under the other's sharp edges (watch_folds).
 void edges_of_bodies(const std::vector<ContactBody>& bodies, const ContactCandidates& c, uint32_t lo, uint32_t hi,
-                     EdgeCandidates& e) {
+                     const EdgeCandidates& e, Chunk& k) {
     const double reach = search_reach(bodies, c, lo, hi);
-    edges_in(bodies, c, lo, grown(c.body_box[hi], reach), e, e.sharp_lo, e.folds_lo);
+    edges_in(bodies, c, lo, grown(c.body_box[hi], reach), e, k, k.sharp_lo, k.folds_lo);
     if (lo == hi) {
-        e.sharp_hi = e.sharp_lo;
+        k.sharp_hi = k.sharp_lo;
     } else {
-        edges_in(bodies, c, hi, grown(c.body_box[lo], reach), e, e.sharp_hi, e.folds_hi);
+        edges_in(bodies, c, hi, grown(c.body_box[lo], reach), e, k, k.sharp_hi, k.folds_hi);
     }
     const bool swap = bodies[hi].sharp_edge_count < bodies[lo].sharp_edge_count;
     const uint32_t ai = swap ? hi : lo, bi = swap ? lo : hi;
     const ContactBody& a = bodies[ai];
-    grow_all(swap ? e.sharp_hi : e.sharp_lo, reach, e.grown);
-    const std::size_t first = e.pairs.size();
-    overlapping_boxes(e.grown, swap ? e.sharp_lo : e.sharp_hi, [&](uint32_t ea, uint32_t eb) {
-        if (ai != bi || own_edges_may_cross(a, ea, eb)) e.pairs.push_back({ai, bi, ea, eb, 0, 0});
+    grow_all(swap ? k.sharp_hi : k.sharp_lo, reach, k.grown);
+    const std::size_t first = k.pairs.size();
+    overlapping_boxes(k.grown, swap ? k.sharp_lo : k.sharp_hi, [&](uint32_t ea, uint32_t eb) {
+        if (ai != bi || own_edges_may_cross(a, ea, eb)) k.pairs.push_back({ai, bi, ea, eb, 0, 0});
     });
-    std::sort(e.pairs.begin() + first, e.pairs.end(), [](const EdgePair& x, const EdgePair& y) {
+    std::sort(k.pairs.begin() + first, k.pairs.end(), [](const EdgePair& x, const EdgePair& y) {
         return x.edge_a != y.edge_a ? x.edge_a < y.edge_a : x.edge_b < y.edge_b;
     });
     const std::size_t marks = std::max(edge_count(bodies[lo]), edge_count(bodies[hi]));
-    if (e.marks.mark.size() < marks) e.marks.mark.resize(marks, 0);  // watch_folds marks folds
-    grow_all(e.sharp_lo, reach, e.grown);
-    watch_folds(lo, e.grown, hi, lo == hi ? e.folds_lo : e.folds_hi, e);
+    if (k.marks.mark.size() < marks) k.marks.mark.resize(marks, 0);  // watch_folds marks folds
+    grow_all(k.sharp_lo, reach, k.grown);
+    watch_folds(lo, k.grown, hi, bodies[hi], lo == hi ? k.folds_lo : k.folds_hi, k);
     if (lo == hi) return;
-    grow_all(e.sharp_hi, reach, e.grown);
-    watch_folds(hi, e.grown, lo, e.folds_lo, e);
+    grow_all(k.sharp_hi, reach, k.grown);
+    watch_folds(hi, k.grown, lo, bodies[lo], k.folds_lo, k);
 }
 
 }  // namespace
@@ -177,28 +192,42 @@ void edges_of(const ContactBody& b, const std::vector<uint32_t>& triangles, Edge
         }
 }
 
-void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e) {
+void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e,
+                       ThreadPool* pool) {
     if (e.search == c.searches) return;
     e.search = c.searches;
     e.pairs.clear();
     e.fold_groups.clear(), e.group_sharp.clear(), e.watched.clear();
-    e.listed.clear(), e.listed_begin.assign(bodies.size(), UINT32_MAX);
-    // The pairs of different bodies the search put within reach (each once).
+    // The pairs of bodies the search put within reach (each once; a self-contact body with
+    // itself), with a sharp edge between them (folds meet sharp edges only).
     e.body_pairs.clear();
     for (uint32_t ai = 0; ai + 1 < c.partner_begin.size(); ++ai)
         for (uint32_t q = c.partner_begin[ai]; q < c.partner_begin[ai + 1]; ++q) {
             const uint32_t bi = c.partners[q];
-            // Folds meet sharp edges only.
             if (bodies[ai].sharp_edge_count == 0 && bodies[bi].sharp_edge_count == 0) continue;
-            if (bi == ai && !bodies[ai].self_contact) continue;
+            if (bi == ai ? !bodies[ai].self_contact : !bodies_may_touch(bodies[ai], bodies[bi])) continue;
             e.body_pairs.push_back(ai < bi ? uint64_t(ai) << 32 | bi : uint64_t(bi) << 32 | ai);
         }
     std::sort(e.body_pairs.begin(), e.body_pairs.end());
     e.body_pairs.erase(std::unique(e.body_pairs.begin(), e.body_pairs.end()), e.body_pairs.end());
-    for (uint64_t key : e.body_pairs) {
-        const uint32_t lo = uint32_t(key >> 32), hi = uint32_t(key);
-        if (lo != hi && !bodies_may_touch(bodies[lo], bodies[hi])) continue;
-        edges_of_bodies(bodies, c, lo, hi, e);
+    list_edges(bodies, e, pool);
+    // In fixed runs of body pairs on the pool, joined in order.
+    const uint32_t count = uint32_t(e.body_pairs.size()), chunks = (count + kPairsPerChunk - 1) / kPairsPerChunk;
+    if (e.chunks.size() < chunks) e.chunks.resize(chunks);
+    parallel_for(pool, chunks, [&](uint32_t q) {
+        Chunk& k = e.chunks[q];
+        k.pairs.clear(), k.fold_groups.clear(), k.group_sharp.clear(), k.watched.clear();
+        for (uint32_t i = q * kPairsPerChunk; i < std::min(count, (q + 1) * kPairsPerChunk); ++i)
+            edges_of_bodies(bodies, c, uint32_t(e.body_pairs[i] >> 32), uint32_t(e.body_pairs[i]), e, k);
+    });
+    for (uint32_t q = 0; q < chunks; ++q) {
+        const Chunk& k = e.chunks[q];
+        const uint32_t groups = uint32_t(e.fold_groups.size()), sharp = uint32_t(e.group_sharp.size());
+        e.pairs.insert(e.pairs.end(), k.pairs.begin(), k.pairs.end());
+        for (EdgeCandidates::FoldGroup g : k.fold_groups)
+            g.sharp_begin += sharp, g.sharp_end += sharp, e.fold_groups.push_back(g);
+        e.group_sharp.insert(e.group_sharp.end(), k.group_sharp.begin(), k.group_sharp.end());
+        for (EdgeCandidates::WatchedFold w : k.watched) w.group += groups, e.watched.push_back(w);
     }
     // A fold near the sharp edges of several bodies is watched once per group, side by side, so
     // that its bend is tested once per sub-step.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/box.h"
+#include "common/thread_pool.h"
 #include "contact/contact_body.h"
 #include "contact/contact_candidates.h"
 
@@ -50,6 +51,7 @@ struct EdgeCandidates {
     };
     struct WatchedFold {
         uint32_t group, fold;
+        uint32_t corners[4];  // fold_corners, gathered once
     };
     std::vector<FoldGroup> fold_groups;
     std::vector<uint32_t> group_sharp;
@@ -60,18 +62,29 @@ struct EdgeCandidates {
         uint32_t edge;
     };
     std::vector<uint64_t> body_pairs;
-    std::vector<EdgeBox> listed;          // the edges of bodies with few, boxed and sorted once
-    std::vector<uint32_t> listed_begin;   //   per search: where each body's begin (or UINT32_MAX)
+    std::vector<uint32_t> listed_bodies;  // the bodies with few edges, boxed and sorted once per
+    std::vector<EdgeBox> listed;          //   search: their edges, each body's from listed_begin
+    std::vector<uint32_t> listed_begin;   //   (UINT32_MAX: a body searched through its tree)
     std::vector<uint32_t> edge_base, edge_line;  // an edge's line: edge_line[edge_base[body] + edge]
     EdgeMarks marks;
-    std::vector<uint32_t> triangles, edges;
-    std::vector<EdgeBox> sharp_lo, folds_lo, sharp_hi, folds_hi, grown;
+    // The candidates of a run of body pairs, made on one thread (fixed runs: the same result on
+    // any number of threads), then joined in order.
+    struct Chunk {
+        std::vector<EdgePair> pairs;
+        std::vector<FoldGroup> fold_groups;
+        std::vector<uint32_t> group_sharp;
+        std::vector<WatchedFold> watched;
+        EdgeMarks marks;
+        std::vector<uint32_t> triangles, edges;
+        std::vector<EdgeBox> sharp_lo, folds_lo, sharp_hi, folds_hi, grown;
+    };
+    std::vector<Chunk> chunks;
 };
 
 // The pairs and the watched folds again when the candidates were searched since they were
-// made (else nothing to do). Of two bodies, the one with fewer sharp edges is `a`: its edges
-// are boxed, the other's are found through its triangle tree.
-void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e);
+// made (else nothing to do), on the pool.
+void update_edge_pairs(const std::vector<ContactBody>& bodies, const ContactCandidates& c, EdgeCandidates& e,
+                       ThreadPool* pool);
 
 // The edges (sharp and folds) of b's triangles `triangles`, each once, in the order the
 // triangles name them, into out (EdgeMarks: scratch).

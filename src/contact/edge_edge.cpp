@@ -89,23 +89,35 @@ constexpr double kFoldBendSin2 = 0.0012179748700878;  // sin^2(2 degrees)
 
 }  // namespace
 
-bool fold_bends_out(const ContactBody& b, uint32_t e) {
-    // The corner w of the second face off the edge (u, v) lies a height h = -n0.(w - u) inside
-    // the first face's plane (n0 its unit normal) and d from the edge's line: the fold turns
-    // outward by theta with h = d sin(theta). Without a square root or the second face's normal
-    // (every watched fold is tested each sub-step): N0 = n0 |N0|, h > 0 and
-    // (N0.(w - u))^2 > sin^2(2 degrees) |N0|^2 d^2.
+void fold_corners(const ContactBody& b, uint32_t e, uint32_t corners[4]) {
     const uint32_t* edge = edge_of(b, e);
     const uint32_t* f0 = &b.triangles[3 * std::size_t(edge[2])];
     const uint32_t* f1 = &b.triangles[3 * std::size_t(edge[3])];
-    const uint32_t corner = f1[0] != edge[0] && f1[0] != edge[1] ? f1[0] : f1[1] != edge[0] && f1[1] != edge[1] ? f1[1] : f1[2];
-    const Vec3 p = position(b.x, f0[0]);
-    const Vec3 n0 = (position(b.x, f0[1]) - p).cross(position(b.x, f0[2]) - p);
-    const Vec3 u = position(b.x, edge[0]), along = position(b.x, edge[1]) - u, r = position(b.x, corner) - u;
+    const auto off_edge = [&](const uint32_t* f) {
+        return f[0] != edge[0] && f[0] != edge[1] ? 0 : f[1] != edge[0] && f[1] != edge[1] ? 1 : 2;
+    };
+    const int k = off_edge(f0);  // f0 turns from f0[k + 1] to f0[k + 2] along the edge
+    corners[0] = f0[(k + 1) % 3], corners[1] = f0[(k + 2) % 3], corners[2] = f0[k], corners[3] = f1[off_edge(f1)];
+}
+
+bool fold_bends(const double* x, const uint32_t corners[4]) {
+    // The corner w1 of the second face lies a height h = -n0.(w1 - u) inside the first face's
+    // plane (n0 its unit normal) and d from the edge's line: the fold turns outward by theta
+    // with h = d sin(theta). Without a square root or the second face's normal (every watched
+    // fold is tested each sub-step): N0 = (v - u) x (w0 - u) = n0 |N0|, h > 0 and
+    // (N0.(w1 - u))^2 > sin^2(2 degrees) |N0|^2 d^2.
+    const Vec3 u = position(x, corners[0]), along = position(x, corners[1]) - u;
+    const Vec3 n0 = along.cross(position(x, corners[2]) - u), r = position(x, corners[3]) - u;
     const double h = -n0.dot(r), along2 = along.squaredNorm();
     if (!(h > 0.0) || !(along2 > 0.0)) return false;
     const double ra = r.dot(along), d2 = r.squaredNorm() - ra * ra / along2;
     return h * h > kFoldBendSin2 * n0.squaredNorm() * d2;
+}
+
+bool fold_bends_out(const ContactBody& b, uint32_t e) {
+    uint32_t corners[4];
+    fold_corners(b, e, corners);
+    return fold_bends(b.x, corners);
 }
 
 bool edges_may_meet(const ContactBody& a, uint32_t ea, const double* line_a, const ContactBody& b, uint32_t eb,

@@ -22,6 +22,11 @@ namespace lfem {
 // convex fold or a sharp edge. The edge pass tests a fold against the sharp edges of others
 // only while it holds.
 bool fold_bends_out(const ContactBody& b, uint32_t e);
+// The same in two parts, for a fold tested at many sub-steps: its corners u, v (the edge, in
+// the turn of its first face), w0 and w1 (its faces' corners off the edge), then the test on
+// the positions x.
+void fold_corners(const ContactBody& b, uint32_t e, uint32_t corners[4]);
+bool fold_bends(const double* x, const uint32_t corners[4]);
 
 // The lines of edges ea of a and eb of b (contact_body.h edge_of) at x*, for
 // edges_may_meet and test_edge_edge.

@@ -445,4 +445,44 @@ inline double deepest_own_edge_point(const BodyShape& s, const std::vector<std::
     return deepest;
 }
 
+// A self-contact body against itself (tests/physics/test_self_contact.cpp, bench_strip_cases):
+// the deepest boundary node inside its own body (in units of its mean boundary edge l), how
+// many lie deeper than 0.02 l, and the deepest point of its sharp edges (deepest_own_edge_point,
+// l). The last is printed, not bounded: a strip's border edges folded back along each other
+// (within 10 degrees of parallel) are left to the nodes (the README's known issues).
+struct Inside {
+    double deepest = 0;
+    int count = 0;
+    double deepest_edge = 0;
+};
+
+inline Inside inside_itself(lfem_world* w, lfem_body b, const Mesh& mesh, const std::vector<std::array<uint32_t, 2>>& edges) {
+    const BodyShape s = body_shape(w, b, mesh);
+    const double l = mean_boundary_edge(s);
+    std::vector<char> boundary(s.x.size() / 3, 0);
+    for (uint32_t v : s.triangles) boundary[v] = 1;
+    Inside in;
+    for (uint32_t p = 0; p < boundary.size(); ++p) {
+        if (!boundary[p]) continue;
+        const double depth = depth_inside(&s.x[3 * p], s, p) / l;
+        in.deepest = std::max(in.deepest, depth);
+        in.count += depth > 0.02;
+    }
+    in.deepest_edge = deepest_own_edge_point(s, edges) / l;
+    return in;
+}
+
+// A soft deformable body's definition (rho 1000).
+inline lfem_body_def soft_def(lfem_model model, double young_modulus, double poisson_ratio, double damping,
+                              double friction, bool self_contact) {
+    lfem_body_def d = lfem_body_def_default();
+    d.model = model;
+    d.young_modulus = young_modulus;
+    d.poisson_ratio = poisson_ratio;
+    d.damping = damping;
+    d.friction = friction;
+    d.self_contact = self_contact;
+    return d;
+}
+
 }  // namespace lfem_test

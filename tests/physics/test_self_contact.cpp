@@ -22,33 +22,6 @@ using namespace lfem_test;
 
 namespace {
 
-// The deepest boundary node inside its own body (in units of l), and how many lie deeper than
-// 0.02 l.
-struct Inside {
-    double deepest = 0;
-    int count = 0;
-    // The deepest point of its sharp edges (deepest_own_edge_point), l: printed, not bounded. A
-    // strip's border edges folded back along each other (within 10 degrees of parallel) are left
-    // to the nodes, and reach 0.1 to 0.2 l (the README's known issues).
-    double deepest_edge = 0;
-};
-
-Inside inside_itself(lfem_world* w, lfem_body b, const Mesh& mesh, const std::vector<std::array<uint32_t, 2>>& edges) {
-    const BodyShape s = body_shape(w, b, mesh);
-    const double l = mean_boundary_edge(s);
-    std::vector<char> boundary(s.x.size() / 3, 0);
-    for (uint32_t v : s.triangles) boundary[v] = 1;
-    Inside in;
-    for (uint32_t p = 0; p < boundary.size(); ++p) {
-        if (!boundary[p]) continue;
-        const double depth = depth_inside(&s.x[3 * p], s, p) / l;
-        in.deepest = std::max(in.deepest, depth);
-        in.count += depth > 0.02;
-    }
-    in.deepest_edge = deepest_own_edge_point(s, edges) / l;
-    return in;
-}
-
 uint32_t self_contacts(lfem_world* w) {
     uint32_t count = 0, self = 0;
     lfem_world_query_contacts(w, nullptr, 0, &count);  // the count (LFEM_BUFFER_TOO_SMALL when any)
@@ -93,19 +66,6 @@ Fold watch(lfem_world* w, lfem_body b, const Mesh& mesh, int calls, const Before
     }
     out.widest = xmax - xmin;
     return out;
-}
-
-// A soft deformable body's definition (rho 1000).
-lfem_body_def soft_def(lfem_model model, double young_modulus, double poisson_ratio, double damping, double friction,
-                       bool self_contact) {
-    lfem_body_def d = lfem_body_def_default();
-    d.model = model;
-    d.young_modulus = young_modulus;
-    d.poisson_ratio = poisson_ratio;
-    d.damping = damping;
-    d.friction = friction;
-    d.self_contact = self_contact;
-    return d;
 }
 
 // A soft bar (0.6 x 0.03 x 0.03 m, 24 x 2 x 2 cells, E = 2e4 Pa, corotational) dropped across
