@@ -4,8 +4,9 @@
 // cases, 2 s each). After every 1/60 s call, measured from outside the library (tests/physics/
 // lfem_test_util.h, inside_itself): the boundary nodes inside the strip's own tets deeper than
 // 0.02 of its mean boundary edge l and the deepest, and the deepest of 7 points on each of its
-// sharp edges; printed for the worst call and the last. A minute or two a case on one core: run on
-// demand, not by ctest. It fails (exit 1) when a node is left inside at the end.
+// sharp edges; printed for the worst call and the last. A minute or two a case on one core: built
+// and run on demand (cmake --build build --target bench_strip_cases), not by ctest or the
+// default build. It fails (exit 1) when a node is left inside at the end.
 #include <cstdio>
 
 #include "physics/lfem_test_util.h"
