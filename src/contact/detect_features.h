@@ -62,7 +62,7 @@ struct FeatureScratch {
     std::vector<uint32_t> triangles;              // of one body near a shape
     std::vector<Aabb> regions;                    // where a shape's points under faces may be
     std::vector<uint32_t> match, shares;          // warm start by place (detect_features.cpp)
-    EdgeCandidates edges;                         // pairs of sharp edges that may cross
+    EdgeCandidates edges;                         // sharp edges that may cross, watched folds
     std::vector<std::vector<ContactRecord>> edge_found;  // per block of the edge pass
 };
 

@@ -394,19 +394,25 @@ void expect_a_checkpoint_continues_bitwise(World& w, lfem_body body, const char*
     std::remove(path.c_str());
 }
 
+// A scene's 20 calls, held by edge contacts after them, then 10 more: on one thread through a
+// checkpoint (expect_a_checkpoint_continues_bitwise), else straight on; the body's positions.
+std::vector<double> held_by_edges_then_on(World& w, uint32_t threads, lfem_body body, const char* file) {
+    for (int i = 0; i < 20; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
+    uint32_t edges = 0;
+    for (const lfem_contact& k : contacts_of(w)) edges += k.kind == LFEM_CONTACT_EDGE_EDGE;
+    EXPECT_GT(edges, 0u) << "the scene must be held by edge contacts";
+    if (threads == 1) {
+        expect_a_checkpoint_continues_bitwise(w, body, file);
+    } else {
+        for (int i = 0; i < 10; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
+    }
+    return positions(w, body);
+}
+
 TEST(Features, EdgeContactsAreBitwiseTheSameOnAnyThreadsAndAfterACheckpoint) {
     expect_bitwise_on_threads([](World& w, uint32_t threads) {
         const CrossedBars bars = crossed_bars(w, 2.0);
-        for (int i = 0; i < 20; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
-        uint32_t edges = 0;
-        for (const lfem_contact& k : contacts_of(w)) edges += k.kind == LFEM_CONTACT_EDGE_EDGE;
-        EXPECT_GT(edges, 0u) << "the bars must be held by edge contacts";
-        if (threads == 1) {
-            expect_a_checkpoint_continues_bitwise(w, bars.bar, "lfem_edge_contacts.ckpt");
-        } else {
-            for (int i = 0; i < 10; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
-        }
-        return positions(w, bars.bar);
+        return held_by_edges_then_on(w, threads, bars.bar, "lfem_edge_contacts.ckpt");
     });
 }
 
@@ -883,15 +889,6 @@ TEST(Features, KnifeEdgeContactsAreBitwiseTheSameOnAnyThreadsAndAfterACheckpoint
     expect_bitwise_on_threads([](World& w, uint32_t threads) {
         LogOnKnives s;
         log_on_knives(w, 1, s);
-        for (int i = 0; i < 20; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
-        uint32_t edges = 0;
-        for (const lfem_contact& k : contacts_of(w)) edges += k.kind == LFEM_CONTACT_EDGE_EDGE;
-        EXPECT_GT(edges, 0u) << "the log must be held by edge contacts";
-        if (threads == 1) {
-            expect_a_checkpoint_continues_bitwise(w, s.log, "lfem_knife_contacts.ckpt");
-        } else {
-            for (int i = 0; i < 10; ++i) EXPECT_EQ(lfem_world_step(w, 1.0 / 60.0), LFEM_OK);
-        }
-        return positions(w, s.log);
+        return held_by_edges_then_on(w, threads, s.log, "lfem_knife_contacts.ckpt");
     });
 }
