@@ -8,8 +8,9 @@
 //    nodes (face_shape.h);
 //  - edge_edge: the point of body_a's boundary edge nodes_a[0..1] (weights weights_a) against
 //    the point of body_b's edge triangle[0..1] (weights 1 - t2, t2; t1 = 0): crossed edges
-//    (edge_edge.h); or against edge `end` (of twelve) of body_b's box shape `shape`, its point
-//    point_start and point_end as a shape's.
+//    (edge_edge.h); or against an edge of body_b's box or hull shape `shape` (a box's by
+//    `end`, of twelve; a hull's by its points triangle[0..1]), its point point_start and
+//    point_end as a shape's.
 // The last two are features: their `node` is kFeatureNode, so they sort after every node of
 // body_a and never meet a node's lookups (warm_start.h).
 #pragma once
@@ -47,7 +48,7 @@ struct ContactRecord {
     ContactKind kind = ContactKind::node_face;
     uint8_t end = 0;                     // face_shape: which of the shape's points under the face
                                          //   (face_shape.h, points_under); edge_edge against a
-                                         //   box: which of its edges
+                                         //   box: which of its edges (0 against a hull)
     bool sliding = false;
     bool gentle = false;                 // the offset is an overlap of bodies as they were
                                          //   added: let out at 1e-3 of an edge a step
